@@ -1,0 +1,19 @@
+# Every dependency is a Debian 12 package (scripts/bootstrap.sh installs them).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+
+# Debian ships GeographicLib's Find module only, outside CMake's default module path.
+list(APPEND CMAKE_MODULE_PATH /usr/share/cmake/geographiclib)
+find_package(GeographicLib REQUIRED)
+if(NOT TARGET reckoner::GeographicLib)
+  add_library(reckoner::GeographicLib INTERFACE IMPORTED)
+  set_target_properties(reckoner::GeographicLib PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${GeographicLib_INCLUDE_DIRS}"
+    INTERFACE_SYSTEM_INCLUDE_DIRECTORIES "${GeographicLib_INCLUDE_DIRS}"
+    INTERFACE_LINK_LIBRARIES "${GeographicLib_LIBRARIES}")
+endif()
+
+find_package(Qt6 6.4 REQUIRED COMPONENTS Core Test)
+
+if(RECKONER_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,13 @@
+# One interface target carries the project's warning and sanitizer flags; every target of ours links it.
+add_library(reckoner_warnings INTERFACE)
+target_compile_options(reckoner_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
+  -Woverloaded-virtual -Wconversion -Wno-sign-conversion -Wimplicit-fallthrough)
+if(RECKONER_WERROR)
+  target_compile_options(reckoner_warnings INTERFACE -Werror)
+endif()
+if(RECKONER_SANITIZE)
+  target_compile_options(reckoner_warnings INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                                     -fno-sanitize-recover=undefined)
+  target_link_options(reckoner_warnings INTERFACE -fsanitize=address,undefined)
+endif()

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Install what is missing (Debian 12 packages), build, and run the main job or the test suite.
+#
+#   scripts/bootstrap.sh run    # install, build, run the main job on the embedded default scenario
+#   scripts/bootstrap.sh test   # install, build, run the whole test suite (ctest, Qt on offscreen)
+#   scripts/bootstrap.sh deps   # only install the Debian packages
+#   scripts/bootstrap.sh build  # install and build
+#
+# Environment: RECKONER_PRESET (default: ci = Release with warnings as errors), RECKONER_JOBS.
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$here"
+action=${1:-run}
+preset=${RECKONER_PRESET:-ci}
+jobs=${RECKONER_JOBS:-$(nproc 2>/dev/null || echo 2)}
+
+packages=(
+  build-essential cmake ninja-build ccache pkg-config git
+  libeigen3-dev libgeographiclib-dev
+  qt6-base-dev qt6-charts-dev libqt6opengl6-dev libxkbcommon-dev qt6-qpa-plugins
+  libgdal-dev libbenchmark-dev
+)
+
+install_deps() {
+  local missing=() p
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "bootstrap: installing ${missing[*]}"
+  local sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "bootstrap: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+    sudo=(sudo)
+  fi
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+build() {
+  cmake --preset "$preset" >/dev/null
+  cmake --build --preset "$preset" -j "$jobs"
+}
+
+case "$action" in
+  deps) install_deps ;;
+  build) install_deps; build ;;
+  run)
+    install_deps; build
+    out="$here/out/default"
+    "build/$preset/app/reckoner-cli" run builtin:default --out "$out"
+    ;;
+  test)
+    install_deps; build
+    QT_QPA_PLATFORM=offscreen ctest --preset "$preset" -j "$jobs"
+    ;;
+  *) echo "usage: scripts/bootstrap.sh run|test|deps|build" >&2; exit 2 ;;
+esac

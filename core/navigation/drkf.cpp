@@ -1,0 +1,253 @@
+#include "navigation/drkf.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <variant>
+
+#include "common/angles.h"
+#include "estimation/chi_square.h"
+#include "estimation/models/drkf_ground_velocity.h"
+#include "estimation/models/drkf_gyro.h"
+#include "estimation/models/drkf_position_fix.h"
+#include "estimation/models/drkf_speedlog.h"
+
+namespace reckoner::nav {
+namespace {
+using namespace est::drkf;
+// The grid convergence changes by ~0.005 deg per 500 m; recompute it only after moving that far.
+constexpr double kGridRefreshM = 500.0;
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+
+/// The smallest delta >= 0 such that the block's NIS against S + delta I is at most its dimension:
+/// how much variance must be added to the states a fix observes one-to-one (position, velocity) for
+/// the fix to be consistent. Used only when the gate re-opens after a persistent rejection.
+template <class Model>
+double consistencyInflation(const Covariance& P, const Model& model, const State& x,
+                            const est::Vec<Model::kDim>& z, const est::Mat<Model::kDim>& R) {
+  constexpr int M = Model::kDim;
+  const est::Vec<M> y = model.residual(z, model.h(x));
+  const est::MatRC<M, kStateDim> H = model.jacobian(x);
+  const est::Mat<M> S = H * P * H.transpose() + R;
+  auto nis = [&](double delta) {
+    const est::Mat<M> Sd = S + delta * est::Mat<M>::Identity();
+    return y.dot(Sd.ldlt().solve(y));
+  };
+  if (!y.allFinite() || !(nis(0.0) > M)) return 0.0;
+  double lo = 0.0, hi = y.squaredNorm() / M;  // nis(hi) <= |y|^2 / hi = M
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (nis(mid) > M ? lo : hi) = mid;
+  }
+  return hi;
+}
+}  // namespace
+
+const char* blockName(DrkfBlock b) {
+  switch (b) {
+    case kGpsPosition:
+      return "gps_position";
+    case kGpsVelocity:
+      return "gps_velocity";
+    case kLoranPosition:
+      return "loran_c";
+    case kSpeedlog:
+      return "speedlog";
+    case kGyro:
+      return "gyro";
+    case kDrkfBlockCount:
+      break;
+  }
+  return "unknown";
+}
+
+const est::BlockReport* DrkfUpdateReport::block(DrkfBlock b) const {
+  for (int i = 0; i < blockCount; ++i)
+    if (blocks[static_cast<std::size_t>(i)].tag == b) return &blocks[static_cast<std::size_t>(i)];
+  return nullptr;
+}
+
+Covariance initialCovariance(const ProcessParams& p, double positionSdM, double velocitySdMps) {
+  State sd;
+  sd[kPosX] = sd[kPosY] = positionSdM;
+  sd[kVelX] = sd[kVelY] = velocitySdMps;
+  sd[kCurX] = sd[kCurY] = p.current.sigma;
+  sd[kAccX] = sd[kAccY] = p.acceleration.sigma;
+  sd[kLoranX] = sd[kLoranY] = p.loranError.sigma;
+  sd[kLogBias] = p.speedlogError.sigma;
+  return sd.cwiseAbs2().asDiagonal();
+}
+
+Drkf::Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const Belief& initial, TimeUs t0)
+    : config_(config), frame_(frame), process_(config.process), belief_(initial), timeUs_(t0) {
+  if (!initial.x.allFinite() || !initial.P.allFinite() ||
+      !est::ldltPositiveDefinite(Eigen::LDLT<Covariance>(initial.P))) {
+    throw std::invalid_argument("DRKF: initial state must be finite with a positive definite covariance");
+  }
+  if (!(config.gateProbability >= 0.0 && config.gateProbability < 1.0))
+    throw std::invalid_argument("DRKF: gate probability must lie in [0, 1)");
+  if (config.gateProbability > 0.0) {
+    gates_[1] = est::chiSquareQuantile(config.gateProbability, 1.0);
+    gates_[2] = est::chiSquareQuantile(config.gateProbability, 2.0);
+  }
+  rejectedSinceUs_.fill(-1);
+}
+
+const Drkf::Transition& Drkf::discretisation(TimeUs dtUs) {
+  for (const auto& c : cache_)
+    if (c.dtUs == dtUs) return c.d;
+  CacheEntry& slot = cache_[cacheNext_];
+  cacheNext_ = (cacheNext_ + 1) % cache_.size();
+  slot.dtUs = dtUs;
+  const auto d = process_.discretise(toSeconds(dtUs));
+  // exp(F dt) is exactly zero outside the per-axis blocks; drop round-off so the sparsity is kept.
+  est::Mat<kStateDim> Phi = d.Phi;
+  Phi = (Phi.array().abs() < 1e-300).select(0.0, Phi);
+  slot.d = {est::SparseTransition<kStateDim>(Phi), d.Q};
+  return slot.d;
+}
+
+const geo::GridInfo& Drkf::gridAt(double xM, double yM) {
+  if (!(std::abs(xM - gridPoint_.xM) <= kGridRefreshM && std::abs(yM - gridPoint_.yM) <= kGridRefreshM)) {
+    gridPoint_ = {xM, yM};
+    grid_ = frame_.gridInfo(gridPoint_);
+  }
+  return grid_;
+}
+
+bool Drkf::predictTo(TimeUs t) {
+  if (t < timeUs_) return false;
+  if (t == timeUs_) return true;
+  const auto& d = discretisation(t - timeUs_);
+  if (!est::predictLinear(belief_, d.Phi, d.Q)) {
+    ++counters_.predictFailures;
+    return false;
+  }
+  timeUs_ = t;
+  return true;
+}
+
+double Drkf::gateFor(DrkfBlock b, int dim, TimeUs t) const {
+  const double gate = gates_[static_cast<std::size_t>(dim)];
+  if (gate <= 0.0) return 0.0;
+  const bool linearFix = b == kGpsPosition || b == kGpsVelocity || b == kLoranPosition;
+  const TimeUs since = rejectedSinceUs_[b];
+  if (linearFix && since >= 0 && toSeconds(t - since) >= config_.gateReopenS) return 0.0;
+  return gate;
+}
+
+double Drkf::linearisableSpeed(bool overGround) const {
+  const Covariance& P = belief_.P;
+  double a = P(kVelX, kVelX), b = P(kVelX, kVelY), c = P(kVelY, kVelY);
+  if (overGround) {  // covariance of (x2 + x3, x6 + x7)
+    a += P(kCurX, kCurX) + 2.0 * P(kCurX, kVelX);
+    c += P(kCurY, kCurY) + 2.0 * P(kCurY, kVelY);
+    b += P(kCurX, kCurY) + P(kCurX, kVelY) + P(kVelX, kCurY);
+  }
+  const double lambdaMax = 0.5 * (a + c) + std::hypot(0.5 * (a - c), b);
+  return std::max(config_.minSpeedMps, config_.minSpeedSigmas * std::sqrt(std::max(0.0, lambdaMax)));
+}
+
+DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> samples) {
+  DrkfUpdateReport report;
+  report.timeUs = t;
+  if (!predictTo(t)) {
+    report.joint.status =
+        t < timeUs_ ? est::UpdateStatus::RejectedStale : est::UpdateStatus::RejectedNumerical;
+    counters_.staleSamples += t < timeUs_ ? static_cast<long>(samples.size()) : 0;
+    return report;
+  }
+  const State& x = belief_.x;
+  const geo::GridInfo& g = gridAt(x[kPosX], x[kPosY]);
+  const double cg = std::cos(g.convergenceRad), sg = std::sin(g.convergenceRad);
+  est::MeasurementStack<kStateDim, 8, kMaxBlocksPerEpoch> stack;
+
+  auto addBlock = [&](DrkfBlock b, const auto& model, const auto& z, const auto& R) {
+    constexpr int M = std::decay_t<decltype(model)>::kDim;
+    const double gate = gateFor(b, M, t);
+    const bool forced = gate <= 0.0 && gates_[M] > 0.0;
+    if (forced) {
+      // Re-anchor: make the prior as uncertain as the fix says it is before applying it ungated.
+      const double delta = consistencyInflation(belief_.P, model, x, z, R);
+      const auto [i, j] = b == kGpsVelocity ? std::pair{kVelX, kVelY} : std::pair{kPosX, kPosY};
+      belief_.P(i, i) += delta;
+      belief_.P(j, j) += delta;
+    }
+    if (!stack.add(b, model, x, z, R, gate, forced)) ++counters_.staleSamples;
+  };
+
+  for (const auto& sample : samples) {
+    if (sensors::timeOf(sample) != t) {
+      ++counters_.staleSamples;
+      continue;
+    }
+    std::visit(
+        Overloaded{
+            [&](const sensors::GpsSample& s) {
+              addBlock(kGpsPosition, PositionFixModel(PositionFixModel::Source::Gps),
+                       est::Vec<2>(s.position.xM, s.position.yM), est::Mat<2>::Identity() * s.positionVarM2);
+              if (s.hasVelocity) {
+                // True east/north to grid: rotate by -convergence, scale by the point scale.
+                const est::Vec<2> v(g.scale * (s.velEastMps * cg - s.velNorthMps * sg),
+                                    g.scale * (s.velEastMps * sg + s.velNorthMps * cg));
+                addBlock(kGpsVelocity, GroundVelocityModel(), v,
+                         est::Mat<2>::Identity() * (g.scale * g.scale * s.velocityVarM2PerS2));
+              }
+            },
+            [&](const sensors::LoranSample& s) {
+              addBlock(kLoranPosition, PositionFixModel(PositionFixModel::Source::LoranC),
+                       est::Vec<2>(s.position.xM, s.position.yM), est::Mat<2>::Identity() * s.positionVarM2);
+            },
+            [&](const sensors::SpeedlogSample& s) {
+              const auto mode = s.mode == sensors::SpeedlogMode::GroundLock ? SpeedlogModel::Mode::GroundLock
+                                                                            : SpeedlogModel::Mode::BottomLock;
+              const double minSpeed = linearisableSpeed(mode == SpeedlogModel::Mode::GroundLock);
+              addBlock(kSpeedlog, SpeedlogModel(mode, minSpeed), est::Vec<1>(g.scale * s.speedMps),
+                       est::Mat<1>(g.scale * g.scale * s.varM2PerS2));
+            },
+            [&](const sensors::GyroSample& s) {
+              addBlock(kGyro, GyroHeadingModel(linearisableSpeed(false)),
+                       est::Vec<1>(wrapTwoPi(s.headingRad - g.convergenceRad)), est::Mat<1>(s.varRad2));
+            },
+        },
+        sample);
+  }
+
+  report.joint = stack.apply(belief_);
+  report.dim = report.joint.applied() ? report.joint.dim : 0;
+  report.blockCount = stack.blockCount();
+  for (int i = 0; i < stack.blockCount(); ++i) {
+    const est::BlockReport& b = stack.block(i);
+    report.blocks[static_cast<std::size_t>(i)] = b;
+    ++counters_.byStatus[static_cast<std::size_t>(b.tag)][static_cast<std::size_t>(b.status)];
+    TimeUs& since = rejectedSinceUs_[static_cast<std::size_t>(b.tag)];
+    if (b.status == est::UpdateStatus::RejectedGate) {
+      if (since < 0) since = t;
+    } else if (est::isApplied(b.status)) {
+      since = -1;
+    }
+  }
+  return report;
+}
+
+est::Vec<4> groundStateOf(const Belief& b) {
+  const State& x = b.x;
+  return {x[kPosX], x[kPosY], groundVx(x), groundVy(x)};
+}
+
+est::Mat<4> groundCovarianceOf(const Belief& b) {
+  est::MatRC<4, kStateDim> J = est::MatRC<4, kStateDim>::Zero();
+  J(0, kPosX) = 1.0;
+  J(1, kPosY) = 1.0;
+  J(2, kCurX) = J(2, kVelX) = 1.0;
+  J(3, kCurY) = J(3, kVelY) = 1.0;
+  est::Mat<4> C = J * b.P * J.transpose();
+  est::symmetrise(C);
+  return C;
+}
+
+}  // namespace reckoner::nav

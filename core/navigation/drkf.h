@@ -1,0 +1,114 @@
+#pragma once
+// The 11-state dead-reckoning Kalman filter of seed 000 section 2.0. It predicts to each measurement
+// epoch's own timestamp, stacks whatever measurements that epoch has (8 rows with everything on, 2 in
+// dead reckoning), gates each sensor on its own NIS and applies the rest in one Joseph-form update.
+// Measurements referenced to true north are converted to the grid frame here (docs/drkf.md).
+#include <array>
+#include <span>
+
+#include "estimation/measurement_stack.h"
+#include "estimation/models/drkf_process.h"
+#include "estimation/sparse_transition.h"
+#include "geo/local_frame.h"
+#include "sensors/own_ship_samples.h"
+
+namespace reckoner::nav {
+
+namespace drkf = est::drkf;
+
+struct DrkfConfig {
+  drkf::ProcessParams process;
+  double gateProbability = 0.9999;  ///< per-sensor chi-square gate probability; 0 disables gating
+  /// A position or GPS velocity fix rejected continuously this long is applied ungated once (re-anchors a
+  /// filter that has diverged). Never for gyro and speedlog: their models may simply not hold (a ship
+  /// stopped in a current has a heading but no velocity through the water).
+  double gateReopenS = 10.0;
+  double minSpeedMps = 0.5;  ///< gyro and speedlog below this speed are not linearisable
+  /// ... nor below this many standard deviations of the speed (largest axis of the velocity covariance):
+  /// atan2 and |v| are only near-linear when the velocity is known to be clearly non-zero.
+  double minSpeedSigmas = 3.0;
+};
+
+/// The DRKF's measurement blocks (each with its own gate).
+enum DrkfBlock : int { kGpsPosition = 0, kGpsVelocity, kLoranPosition, kSpeedlog, kGyro, kDrkfBlockCount };
+/// Most blocks one epoch can carry (more samples at one timestamp are counted and skipped).
+inline constexpr int kMaxBlocksPerEpoch = 8;
+const char* blockName(DrkfBlock b);
+
+struct DrkfUpdateReport {
+  TimeUs timeUs = 0;
+  int dim = 0;  ///< rows applied
+  /// The joint update of the blocks that passed their gates (innovation in grid units, radians for
+  /// the heading; BlockReport::row locates a block in it).
+  est::UpdateReport<8> joint;
+  std::array<est::BlockReport, kMaxBlocksPerEpoch> blocks{};
+  int blockCount = 0;
+
+  /// The report of a block, or nullptr when this epoch had none.
+  [[nodiscard]] const est::BlockReport* block(DrkfBlock b) const;
+};
+
+/// Totals per block since construction.
+struct DrkfCounters {
+  std::array<std::array<long, 8>, kDrkfBlockCount> byStatus{};  ///< [block][UpdateStatus]
+  long predictFailures = 0;
+  long staleSamples = 0;
+};
+
+/// Initial uncertainty: position and velocity from the caller, every Gauss-Markov state at its
+/// stationary standard deviation.
+drkf::Covariance initialCovariance(const drkf::ProcessParams& p, double positionSdM, double velocitySdMps);
+
+/// Position and velocity over ground [x, y, vx, vy] of a DRKF belief, and their covariance (what a
+/// TTKF consumes and what the display shows).
+est::Vec<4> groundStateOf(const drkf::Belief& b);
+est::Mat<4> groundCovarianceOf(const drkf::Belief& b);
+
+class Drkf {
+ public:
+  /// Throws std::invalid_argument for an invalid configuration or a non-finite/non-PD initial belief.
+  Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const drkf::Belief& initial, TimeUs t0);
+
+  /// Predicts to t; returns false (state unchanged) if t is earlier than the filter time or the
+  /// prediction is not finite.
+  bool predictTo(TimeUs t);
+
+  /// Predicts to t and applies every sample (all stamped t; others are counted stale and skipped).
+  DrkfUpdateReport update(TimeUs t, std::span<const sensors::OwnShipSample> samples);
+
+  [[nodiscard]] const drkf::Belief& belief() const { return belief_; }
+  [[nodiscard]] TimeUs timeUs() const { return timeUs_; }
+  [[nodiscard]] const DrkfCounters& counters() const { return counters_; }
+  [[nodiscard]] const geo::LocalFrame& frame() const { return frame_; }
+
+ private:
+  struct Transition {
+    est::SparseTransition<drkf::kStateDim> Phi;
+    drkf::Covariance Q;
+  };
+  const Transition& discretisation(TimeUs dtUs);
+  const geo::GridInfo& gridAt(double xM, double yM);
+  double gateFor(DrkfBlock b, int dim, TimeUs t) const;
+  /// Smallest speed at which the heading / speed magnitude of the velocity block (i0, i1) summed with
+  /// (j0, j1) when given (ground velocity) is treated as linearisable.
+  [[nodiscard]] double linearisableSpeed(bool overGround) const;
+
+  DrkfConfig config_;
+  geo::LocalFrame frame_;
+  drkf::ProcessModel process_;
+  drkf::Belief belief_;
+  TimeUs timeUs_;
+  std::array<double, 3> gates_{};  // chi-square gate for 1, 2 rows (index = dim)
+  std::array<TimeUs, kDrkfBlockCount> rejectedSinceUs_{};
+  struct CacheEntry {
+    TimeUs dtUs = -1;
+    Transition d;
+  };
+  std::array<CacheEntry, 4> cache_{};
+  std::size_t cacheNext_ = 0;
+  geo::GridPoint gridPoint_{std::numeric_limits<double>::quiet_NaN(), 0.0};
+  geo::GridInfo grid_;
+  DrkfCounters counters_;
+};
+
+}  // namespace reckoner::nav

@@ -1,0 +1,79 @@
+#include "sim/scenario.h"
+
+#include <cmath>
+#include <string_view>
+
+namespace reckoner::sim {
+namespace {
+bool positive(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
+bool nonNegative(double v) {
+  return std::isfinite(v) && v >= 0.0;
+}
+}  // namespace
+
+SensorStates sensorStatesAt(const Scenario& s, TimeUs t) {
+  using sensors::SensorId;
+  SensorStates st;
+  st.on[static_cast<std::size_t>(SensorId::Gps)] = s.gps.fitted && s.gps.power.at(t);
+  st.on[static_cast<std::size_t>(SensorId::LoranC)] = s.loran.fitted && s.loran.power.at(t);
+  st.on[static_cast<std::size_t>(SensorId::Speedlog)] = s.speedlog.fitted && s.speedlog.power.at(t);
+  st.on[static_cast<std::size_t>(SensorId::Gyro)] = s.gyro.fitted && s.gyro.power.at(t);
+  st.speedlogMode = s.speedlog.mode.at(t);
+  return st;
+}
+
+std::string sensorLabel(const SensorStates& s) {
+  using sensors::SensorId;
+  std::string label;
+  auto add = [&label](std::string_view part) {
+    if (!label.empty()) label += '+';
+    label += part;
+  };
+  if (s.isOn(SensorId::Gps)) add("gps");
+  if (s.isOn(SensorId::LoranC)) add("loran_c");
+  if (s.isOn(SensorId::Speedlog))
+    add(s.speedlogMode == sensors::SpeedlogMode::GroundLock ? "speedlog_gl" : "speedlog_bl");
+  if (s.isOn(SensorId::Gyro)) add("gyro");
+  return label.empty() ? "none" : label;
+}
+
+std::string checkScenario(const Scenario& s) {
+  if (!(s.durationUs > 0)) return "duration_s: must be positive";
+  if (!(s.stepUs > 0)) return "step_s: must be positive";
+  if (!std::isfinite(s.origin.latDeg) || s.origin.latDeg < -80.0 || s.origin.latDeg > 84.0)
+    return "origin.lat_deg: must lie in [-80, 84] (UTM band)";
+  if (!std::isfinite(s.origin.lonDeg) || s.origin.lonDeg < -180.0 || s.origin.lonDeg > 180.0)
+    return "origin.lon_deg: must lie in [-180, 180]";
+  if (!s.current.valid()) return "current: sigma must be >= 0 and beta > 0";
+  if (!nonNegative(s.ownShip.maxAccelerationMps2)) return "own_ship.max_acceleration_mps2: must be >= 0";
+  if (s.ownShip.randomAcceleration && !s.ownShip.randomAcceleration->valid())
+    return "own_ship.random_acceleration: sigma must be >= 0 and beta > 0";
+  for (std::size_t i = 1; i < s.ownShip.schedule.size(); ++i)
+    if (s.ownShip.schedule[i].timeUs <= s.ownShip.schedule[i - 1].timeUs)
+      return "own_ship.schedule: times must increase";
+  if (s.gps.fitted &&
+      (!positive(s.gps.rateHz) || !positive(s.gps.positionVarM2) || !positive(s.gps.velocityVarM2PerS2)))
+    return "sensors.gps: rate and variances must be positive";
+  if (s.loran.fitted &&
+      (!positive(s.loran.rateHz) || !s.loran.error.valid() || !positive(s.loran.whiteVarM2)))
+    return "sensors.loran_c: rate and white variance must be positive, Markov sigma >= 0 and beta > 0";
+  if (s.speedlog.fitted &&
+      (!positive(s.speedlog.rateHz) || !s.speedlog.error.valid() || !positive(s.speedlog.whiteVarM2PerS2)))
+    return "sensors.speedlog: rate and white variance must be positive, Markov sigma >= 0 and beta > 0";
+  if (s.gyro.fitted && (!positive(s.gyro.rateHz) || !positive(s.gyro.sdRad)))
+    return "sensors.gyro: rate and sd must be positive";
+  const FilterSpec& f = s.filter;
+  if (!f.acceleration.valid()) return "filter.acceleration: sigma must be >= 0 and beta > 0";
+  if (f.current && !f.current->valid()) return "filter.current: sigma must be >= 0 and beta > 0";
+  if (!positive(f.initialPositionSdM)) return "filter.initial_position_sd_m: must be positive";
+  if (!positive(f.initialVelocitySdMps)) return "filter.initial_velocity_sd_mps: must be positive";
+  if (!(f.gateProbability >= 0.0 && f.gateProbability < 1.0))
+    return "filter.gate_probability: must be in [0, 1)";
+  if (!nonNegative(f.gateReopenS)) return "filter.gate_reopen_s: must be >= 0";
+  if (!nonNegative(f.minSpeedMps)) return "filter.min_speed_mps: must be >= 0";
+  return {};
+}
+
+}  // namespace reckoner::sim

@@ -1,0 +1,80 @@
+#pragma once
+// A complete simulation description (resources/scenarios/*.json, format in docs/scenarios.md).
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/time.h"
+#include "estimation/gauss_markov.h"
+#include "geo/local_frame.h"
+#include "sensors/own_ship_sensor_specs.h"
+
+namespace reckoner::sim {
+
+/// A change of the own-ship kinematics at a time (seed 000 Table II).
+struct KinematicEvent {
+  TimeUs timeUs = 0;
+  std::optional<std::array<double, 2>> setVelocityMps;  ///< commanded velocity through water, grid (vx, vy)
+  std::optional<double> turnRateRadPerS;                ///< rotation of the velocity, clockwise positive
+};
+
+struct OwnShipSpec {
+  geo::GridPoint initialPosition;              ///< grid metres
+  std::array<double, 2> initialVelocityMps{};  ///< through water, grid (vx, vy)
+  std::optional<double> initialHeadingRad;     ///< grid; default: bearing of the first non-zero velocity
+  std::vector<KinematicEvent> schedule;        ///< increasing time
+  /// > 0: a commanded velocity is reached at this acceleration; 0: instantly (as Table II prints it).
+  double maxAccelerationMps2 = 0.0;
+  /// Optional Gauss-Markov acceleration added to the scheduled motion (truth drawn from the filter's
+  /// own model for consistency tests).
+  std::optional<est::GaussMarkov> randomAcceleration;
+};
+
+struct FilterSpec {
+  est::GaussMarkov acceleration{0.5, 1.0};  ///< Table I footnote: sigma_a = 0.5 m/s^2, beta_a = 1 /s
+  std::optional<est::GaussMarkov> current;  ///< default: the scenario's current model
+  double initialPositionSdM = 30.0;
+  double initialVelocitySdMps = 0.5;
+  double gateProbability = 0.9999;  ///< per-sensor chi-square gate; 0 disables gating
+  double gateReopenS = 10.0;        ///< a sensor rejected this long is applied ungated once
+  double minSpeedMps = 0.5;         ///< below: gyro and speedlog are not linearisable
+};
+
+struct Scenario {
+  std::string name;
+  std::string description;
+  geo::GeoPoint origin{49.29, -123.11};
+  TimeUs durationUs = 0;
+  TimeUs stepUs = kMicrosPerSecond;  ///< filter output cycle
+  std::uint64_t seed = 1;
+  OwnShipSpec ownShip;
+  est::GaussMarkov current{0.0, 1.0};  ///< ocean current, sigma m/s, beta 1/s
+  sensors::GpsSpec gps;
+  sensors::LoranSpec loran;
+  sensors::SpeedlogSpec speedlog;
+  sensors::GyroSpec gyro;
+  FilterSpec filter;
+};
+
+/// Which own-ship sensors are fitted and powered, and the speedlog mode.
+struct SensorStates {
+  std::array<bool, sensors::kOwnShipSensorCount> on{};  ///< indexed by SensorId
+  sensors::SpeedlogMode speedlogMode = sensors::SpeedlogMode::GroundLock;
+
+  [[nodiscard]] bool isOn(sensors::SensorId id) const { return on[static_cast<std::size_t>(id)]; }
+  friend bool operator==(const SensorStates&, const SensorStates&) = default;
+};
+
+/// The sensor states the scenario's schedules give at time t.
+SensorStates sensorStatesAt(const Scenario& s, TimeUs t);
+
+/// Compact label of a sensor set, e.g. "gps+loran_c+speedlog_gl+gyro", or "none".
+std::string sensorLabel(const SensorStates& s);
+
+/// Checks the invariants the engine relies on; returns an empty string when valid, else the first
+/// problem (field names as in the JSON format).
+std::string checkScenario(const Scenario& s);
+
+}  // namespace reckoner::sim

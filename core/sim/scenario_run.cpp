@@ -1,0 +1,91 @@
+#include "sim/scenario_run.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <stdexcept>
+#include <thread>
+
+namespace reckoner::sim {
+
+double OwnShipRow::positionErrorM() const {
+  return std::hypot(estXM - trueXM, estYM - trueYM);
+}
+double OwnShipRow::velocityErrorMps() const {
+  return std::hypot(estVxMps - trueVxMps, estVyMps - trueVyMps);
+}
+double OwnShipRow::sdPositionM() const {
+  return std::hypot(sdXM, sdYM);
+}
+bool OwnShipRow::positionWithin(double k) const {
+  return std::abs(estXM - trueXM) <= k * sdXM && std::abs(estYM - trueYM) <= k * sdYM;
+}
+
+OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo) {
+  OwnShipRow r;
+  r.timeUs = f.timeUs;
+  r.trueXM = f.truth.position.xM;
+  r.trueYM = f.truth.position.yM;
+  r.trueVxMps = f.truth.groundVxMps();
+  r.trueVyMps = f.truth.groundVyMps();
+  const est::Vec<4> g = nav::groundStateOf(f.estimate);
+  const est::Mat<4> C = nav::groundCovarianceOf(f.estimate);
+  r.estXM = g[0];
+  r.estYM = g[1];
+  r.estVxMps = g[2];
+  r.estVyMps = g[3];
+  r.sdXM = std::sqrt(C(0, 0));
+  r.sdYM = std::sqrt(C(1, 1));
+  r.sdVxMps = std::sqrt(C(2, 2));
+  r.sdVyMps = std::sqrt(C(3, 3));
+  const geo::GeoPoint ll = geo.toGeodetic({g[0], g[1]});
+  r.estLatDeg = ll.latDeg;
+  r.estLonDeg = ll.lonDeg;
+  r.nees = est::nees<est::drkf::kStateDim>(f.trueState - f.estimate.x, f.estimate.P);
+  r.sensors = f.sensors;
+  for (const auto& u : f.updates) r.rowsApplied += u.dim;
+  return r;
+}
+
+RunResult runScenario(const Scenario& scenario, std::uint64_t seed) {
+  const auto start = std::chrono::steady_clock::now();
+  SimulationEngine engine(scenario, seed);
+  RunResult result;
+  result.seed = seed;
+  result.rows.reserve(static_cast<std::size_t>(scenario.durationUs / scenario.stepUs + 1));
+  while (!engine.finished()) result.rows.push_back(makeRow(engine.step(), engine.frame()));
+  result.counters = engine.drkf().counters();
+  result.wallTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+std::vector<RunResult> runMonteCarlo(const Scenario& scenario, int runs, int threads,
+                                     std::uint64_t baseSeed) {
+  if (runs <= 0) throw std::invalid_argument("Monte Carlo: runs must be positive");
+  if (threads <= 0) throw std::invalid_argument("Monte Carlo: threads must be positive");
+  if (const std::string problem = checkScenario(scenario); !problem.empty())
+    throw std::invalid_argument("scenario '" + scenario.name + "': " + problem);
+  std::vector<RunResult> results(static_cast<std::size_t>(runs));
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(runs));
+  std::atomic<int> next{0};
+  auto worker = [&] {
+    for (int i = next++; i < runs; i = next++) {
+      try {
+        results[static_cast<std::size_t>(i)] =
+            runScenario(scenario, baseSeed + static_cast<std::uint64_t>(i));
+      } catch (...) {
+        errors[static_cast<std::size_t>(i)] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < std::min(threads, runs); ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  return results;
+}
+
+}  // namespace reckoner::sim

@@ -1,0 +1,240 @@
+// reckoner-cli: headless runs of the Reckoner engine.
+//   reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]
+//   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]
+//   reckoner-cli validate SCENARIO...
+//   reckoner-cli scenarios
+// SCENARIO is a file path or builtin:NAME (see `reckoner-cli scenarios`).
+// Exit codes: 0 success, 2 bad input or usage (one line on stderr), 1 any other failure.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "io/input_error.h"
+#include "io/own_ship_output.h"
+#include "io/scenario_json.h"
+#include "io/text_format.h"
+#include "metrics/own_ship_stats.h"
+#include "resources/embedded.h"
+#include "sim/scenario_run.h"
+
+namespace {
+
+using namespace reckoner;
+
+constexpr const char* kUsage =
+    "usage:\n"
+    "  reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]\n"
+    "  reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]\n"
+    "  reckoner-cli validate SCENARIO...\n"
+    "  reckoner-cli scenarios\n"
+    "SCENARIO is a JSON file (docs/scenarios.md) or builtin:NAME.\n";
+
+/// Bad input or usage: one line on stderr, exit code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Args {
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> options;  // --name value
+  bool quiet = false;
+};
+
+Args parseArgs(int argc, char** argv, int first, const std::vector<std::string>& valued) {
+  Args a;
+  for (int i = first; i < argc; ++i) {
+    const std::string s = argv[i];
+    if (s == "--quiet") {
+      a.quiet = true;
+    } else if (s.rfind("--", 0) == 0) {
+      const std::string name = s.substr(2);
+      if (std::find(valued.begin(), valued.end(), name) == valued.end())
+        throw UsageError("unknown option " + s);
+      if (i + 1 >= argc) throw UsageError("option " + s + " needs a value");
+      if (a.options.count(name)) throw UsageError("option " + s + " given twice");
+      a.options[name] = argv[++i];
+    } else {
+      a.positional.push_back(s);
+    }
+  }
+  return a;
+}
+
+std::uint64_t parseCount(const std::string& option, const std::string& text, std::uint64_t min,
+                         std::uint64_t max) {
+  std::size_t used = 0;
+  unsigned long long v = 0;
+  try {
+    if (text.empty() || text[0] == '-') throw std::invalid_argument("negative");
+    v = std::stoull(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || used == 0 || v < min || v > max)
+    throw UsageError("--" + option + ": expected an integer in [" + std::to_string(min) + ", " +
+                     std::to_string(max) + "], got '" + text + "'");
+  return v;
+}
+
+sim::Scenario loadScenario(const std::string& spec) {
+  if (spec.rfind("builtin:", 0) == 0) {
+    const std::string name = spec.substr(8);
+    const auto* f = resources::findScenario(name);
+    if (!f) throw UsageError("unknown built-in scenario '" + name + "' (see `reckoner-cli scenarios`)");
+    return io::parseScenario(f->text, spec);
+  }
+  return io::loadScenarioFile(spec);
+}
+
+std::string prepareOutDir(const Args& a) {
+  const auto it = a.options.find("out");
+  if (it == a.options.end()) throw UsageError("--out DIR is required");
+  std::error_code ec;
+  std::filesystem::create_directories(it->second, ec);
+  if (ec || !std::filesystem::is_directory(it->second))
+    throw UsageError("--out " + it->second + ": cannot create directory" + (ec ? ": " + ec.message() : ""));
+  return it->second;
+}
+
+void printPhaseTable(const std::vector<metrics::PhaseStats>& phases) {
+  std::printf("  %-2s %-13s %-30s %10s %11s %9s %6s %10s\n", "#", "time (s)", "sensors", "pos RMSE",
+              "vel RMSE", "mean NEES", "<=3sd", "sd at end");
+  for (const auto& p : phases) {
+    char span[32];
+    std::snprintf(span, sizeof span, "%.0f-%.0f", toSeconds(p.phase.startUs), toSeconds(p.phase.endUs));
+    std::printf("  %-2d %-13s %-30s %8.1f m %7.3f m/s %9.2f %5.0f%% %8.1f m\n", p.phase.index + 1, span,
+                p.phase.label.c_str(), p.rmsePositionM, p.rmseVelocityMps, p.meanNees,
+                100.0 * p.fractionWithin3Sd, p.sdPositionEndM);
+  }
+}
+
+int cmdRun(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"seed", "out"});
+  if (a.positional.size() != 1) throw UsageError("run needs exactly one SCENARIO");
+  const sim::Scenario s = loadScenario(a.positional[0]);
+  const std::uint64_t seed =
+      a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+  const std::string out = prepareOutDir(a);
+
+  const sim::RunResult run = sim::runScenario(s, seed);
+  const auto phases = metrics::summarisePhases(metrics::derivePhases(s), run.rows);
+  io::writeOwnShipCsv(out + "/ownship.csv", run.rows);
+  io::writeTextFile(out + "/summary.json", io::runSummaryJson(s, run, phases));
+  if (a.quiet) return 0;
+
+  const geo::LocalFrame frame(s.origin.latDeg, s.origin.lonDeg);
+  std::printf("Reckoner dead-reckoning run: %s (seed %llu)\n", s.name.c_str(),
+              static_cast<unsigned long long>(seed));
+  if (!s.description.empty()) std::printf("  %s\n", s.description.c_str());
+  std::printf("  origin %s %s (UTM zone %d), %.0f s, %zu filter cycles in %.3f s wall time\n\n",
+              io::formatLatitude(s.origin.latDeg).c_str(), io::formatLongitude(s.origin.lonDeg).c_str(),
+              frame.utmZone(), toSeconds(s.durationUs), run.rows.size(), run.wallTimeS);
+  printPhaseTable(phases);
+  if (!run.rows.empty()) {
+    const auto& last = run.rows.back();
+    std::printf("\n  final estimate %s %s, position sd %.1f m, true error %.1f m\n",
+                io::formatLatitude(last.estLatDeg).c_str(), io::formatLongitude(last.estLonDeg).c_str(),
+                last.sdPositionM(), last.positionErrorM());
+  }
+  std::printf("  wrote %s/ownship.csv and %s/summary.json\n", out.c_str(), out.c_str());
+  return 0;
+}
+
+int cmdMonteCarlo(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"runs", "threads", "seed", "out"});
+  if (a.positional.size() != 1) throw UsageError("montecarlo needs exactly one SCENARIO");
+  if (!a.options.count("runs")) throw UsageError("--runs N is required");
+  const int runs = static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000));
+  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = a.options.count("threads")
+                          ? static_cast<int>(parseCount("threads", a.options.at("threads"), 1, 1024))
+                          : hw;
+  const sim::Scenario s = loadScenario(a.positional[0]);
+  const std::uint64_t seed =
+      a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+  const std::string out = prepareOutDir(a);
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto results = sim::runMonteCarlo(s, runs, threads, seed);
+  const auto m = metrics::summariseMonteCarlo(s, results);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  io::writeTextFile(out + "/summary.json", io::monteCarloSummaryJson(s, m, seed, threads, wall));
+  io::writeMonteCarloCsv(out + "/montecarlo.csv", m);
+  if (a.quiet) return 0;
+
+  std::printf("Reckoner Monte Carlo: %s, %d runs (seeds %llu-%llu) on %d threads in %.2f s\n", s.name.c_str(),
+              runs, static_cast<unsigned long long>(seed),
+              static_cast<unsigned long long>(seed + static_cast<std::uint64_t>(runs) - 1), threads, wall);
+  std::printf("  average NEES (11 states) %.0f%% bounds: [%.2f, %.2f]\n\n", 100.0 * m.confidence,
+              m.bounds.lower, m.bounds.upper);
+  std::printf("  %-2s %-13s %-30s %9s %9s %8s %10s %11s %6s\n", "#", "time (s)", "sensors", "mean NEES",
+              "max", "inside", "pos RMSE", "vel RMSE", "<=3sd");
+  for (const auto& p : m.phases) {
+    char span[32];
+    std::snprintf(span, sizeof span, "%.0f-%.0f", toSeconds(p.stats.phase.startUs),
+                  toSeconds(p.stats.phase.endUs));
+    std::printf("  %-2d %-13s %-30s %9.2f %9.2f %8s %8.1f m %7.3f m/s %5.1f%%\n", p.stats.phase.index + 1,
+                span, p.stats.phase.label.c_str(), p.stats.meanNees, p.maxMeanNees, p.inside ? "yes" : "NO",
+                p.stats.rmsePositionM, p.stats.rmseVelocityMps, 100.0 * p.stats.fractionWithin3Sd);
+  }
+  std::printf("\n  %s; wrote %s/summary.json and %s/montecarlo.csv\n",
+              m.allPhasesInside ? "every phase inside its bounds" : "SOME PHASES OUTSIDE their bounds",
+              out.c_str(), out.c_str());
+  return 0;
+}
+
+int cmdValidate(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {});
+  if (a.positional.empty()) throw UsageError("validate needs at least one SCENARIO");
+  for (const auto& p : a.positional) {
+    const sim::Scenario s = loadScenario(p);
+    std::printf("%s: ok (%s, %.0f s)\n", p.c_str(), s.name.c_str(), toSeconds(s.durationUs));
+  }
+  return 0;
+}
+
+int cmdScenarios() {
+  for (const auto& f : resources::scenarios()) {
+    const sim::Scenario s = io::parseScenario(f.text, "builtin:" + std::string(f.name));
+    std::printf("builtin:%-24s %s\n", std::string(f.name).c_str(), s.name.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc < 2) throw UsageError("no command given");
+    const std::string cmd = argv[1];
+    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    if (cmd == "run") return cmdRun(argc, argv);
+    if (cmd == "montecarlo") return cmdMonteCarlo(argc, argv);
+    if (cmd == "validate") return cmdValidate(argc, argv);
+    if (cmd == "scenarios") return cmdScenarios();
+    throw UsageError("unknown command '" + cmd + "'");
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());
+    if (std::string(e.what()).find("usage") == std::string::npos && argc < 2) std::fputs(kUsage, stderr);
+    return 2;
+  } catch (const io::InputError& e) {
+    std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "reckoner-cli: failed: %s\n", e.what());
+    return 1;
+  }
+}

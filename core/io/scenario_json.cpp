@@ -1,0 +1,354 @@
+#include "io/scenario_json.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <optional>
+#include <sstream>
+
+#include "common/angles.h"
+#include "io/json.h"
+
+namespace reckoner::io {
+namespace {
+
+using sensors::SpeedlogMode;
+
+std::string formatNumber(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+/// Reads one JSON object's fields, tracking which were used so that unknown ones are reported.
+class Fields {
+ public:
+  Fields(const std::string& file, const JsonValue& v, std::string path)
+      : file_(file), v_(v), path_(std::move(path)) {
+    if (!v.isObject()) fail(v, path_, std::string("must be an object, got ") + typeName(v.type));
+    used_.assign(v.object.size(), false);
+  }
+
+  [[noreturn]] void fail(const JsonValue& at, const std::string& path, const std::string& msg) const {
+    throw InputError(file_, at.line, path, msg);
+  }
+  [[nodiscard]] std::string pathOf(std::string_view key) const {
+    return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+  }
+  [[nodiscard]] const std::string& file() const { return file_; }
+
+  const JsonValue* get(std::string_view key) {
+    for (std::size_t i = 0; i < v_.object.size(); ++i) {
+      if (v_.object[i].first == key) {
+        used_[i] = true;
+        return &v_.object[i].second;
+      }
+    }
+    return nullptr;
+  }
+  const JsonValue& require(std::string_view key) {
+    const JsonValue* v = get(key);
+    if (!v) fail(v_, pathOf(key), "required field is missing");
+    return *v;
+  }
+
+  enum class Check { Any, Positive, NonNegative };
+
+  double number(std::string_view key, Check check = Check::Any) {
+    return checkedNumber(require(key), pathOf(key), check);
+  }
+  double numberOr(std::string_view key, double fallback, Check check = Check::Any) {
+    const JsonValue* v = get(key);
+    return v ? checkedNumber(*v, pathOf(key), check) : fallback;
+  }
+  double checkedNumber(const JsonValue& v, const std::string& path, Check check) const {
+    if (!v.isNumber()) fail(v, path, std::string("must be a number, got ") + typeName(v.type));
+    if (check == Check::Positive && !(v.number > 0.0))
+      fail(v, path, "must be positive, got " + formatNumber(v.number));
+    if (check == Check::NonNegative && !(v.number >= 0.0))
+      fail(v, path, "must not be negative, got " + formatNumber(v.number));
+    return v.number;
+  }
+  std::string stringOr(std::string_view key, std::string fallback) {
+    const JsonValue* v = get(key);
+    if (!v) return fallback;
+    if (!v->isString()) fail(*v, pathOf(key), std::string("must be a string, got ") + typeName(v->type));
+    return v->string;
+  }
+  bool boolean(const JsonValue& v, const std::string& path) const {
+    if (!v.isBool()) fail(v, path, std::string("must be true or false, got ") + typeName(v.type));
+    return v.boolean;
+  }
+  std::array<double, 2> pair(std::string_view key, std::array<double, 2> fallback) {
+    const JsonValue* v = get(key);
+    if (!v) return fallback;
+    if (!v->isArray() || v->array.size() != 2)
+      fail(*v, pathOf(key), "must be an array of two numbers [x, y]");
+    return {checkedNumber(v->array[0], pathOf(key) + "[0]", Check::Any),
+            checkedNumber(v->array[1], pathOf(key) + "[1]", Check::Any)};
+  }
+
+  /// Reports the first field nobody asked for.
+  void finish() const {
+    for (std::size_t i = 0; i < v_.object.size(); ++i)
+      if (!used_[i]) fail(v_.object[i].second, pathOf(v_.object[i].first), "unknown field");
+  }
+
+  [[nodiscard]] const JsonValue& json() const { return v_; }
+
+ private:
+  const std::string& file_;
+  const JsonValue& v_;
+  std::string path_;
+  std::vector<bool> used_;
+};
+
+TimeUs timeField(Fields& f, std::string_view key, TimeUs durationUs) {
+  const JsonValue& v = f.require(key);
+  const double s = f.checkedNumber(v, f.pathOf(key), Fields::Check::NonNegative);
+  if (durationUs > 0 && fromSeconds(s) > durationUs)
+    f.fail(v, f.pathOf(key), "time " + formatNumber(s) + " s lies beyond duration_s");
+  return fromSeconds(s);
+}
+
+/// Gauss-Markov block given by its variance (Table I's units) or sigma, plus beta.
+est::GaussMarkov gaussMarkov(Fields& f, std::string_view varianceKey, std::string_view sigmaKey) {
+  est::GaussMarkov gm;
+  const JsonValue* var = f.get(varianceKey);
+  const JsonValue* sig = f.get(sigmaKey);
+  if (var && sig)
+    f.fail(*sig, f.pathOf(sigmaKey),
+           "give either " + std::string(varianceKey) + " or " + std::string(sigmaKey) + ", not both");
+  if (!var && !sig) f.fail(f.json(), f.pathOf(varianceKey), "required field is missing");
+  gm.sigma = var ? std::sqrt(f.checkedNumber(*var, f.pathOf(varianceKey), Fields::Check::NonNegative))
+                 : f.checkedNumber(*sig, f.pathOf(sigmaKey), Fields::Check::NonNegative);
+  gm.betaPerS = f.number("beta_per_s", Fields::Check::Positive);
+  return gm;
+}
+
+/// A sensor's "schedule": [{"t_s": .., "on": bool, ("mode": ..)}]; onMode handles "mode" if given.
+void readPowerSchedule(Fields& sensor, StepSchedule<bool>& power, TimeUs durationUs,
+                       const std::function<void(Fields&, TimeUs)>& onMode = {}) {
+  const JsonValue* sched = sensor.get("schedule");
+  if (!sched) return;
+  const std::string path = sensor.pathOf("schedule");
+  if (!sched->isArray()) sensor.fail(*sched, path, "must be an array of {\"t_s\": ..., \"on\": ...} entries");
+  TimeUs last = -1;
+  bool lastOn = power.initial();
+  for (std::size_t i = 0; i < sched->array.size(); ++i) {
+    Fields e(sensor.file(), sched->array[i], path + "[" + std::to_string(i) + "]");
+    const TimeUs t = timeField(e, "t_s", durationUs);
+    if (t <= last) e.fail(*e.get("t_s"), e.pathOf("t_s"), "schedule times must increase");
+    last = t;
+    const JsonValue* on = e.get("on");
+    const JsonValue* mode = onMode ? e.get("mode") : nullptr;
+    if (!on && !mode)
+      e.fail(sched->array[i], e.pathOf("on"),
+             onMode ? "entry needs \"on\" or \"mode\"" : "required field is missing");
+    if (on) lastOn = e.boolean(*on, e.pathOf("on"));
+    power.addChange(t, lastOn);
+    if (mode) onMode(e, t);
+    e.finish();
+  }
+}
+
+SpeedlogMode speedlogMode(const Fields& f, const JsonValue& v, const std::string& path) {
+  if (v.isString() && v.string == "ground_lock") return SpeedlogMode::GroundLock;
+  if (v.isString() && v.string == "bottom_lock") return SpeedlogMode::BottomLock;
+  f.fail(v, path, "must be \"ground_lock\" (speed over ground) or \"bottom_lock\" (speed through water)");
+}
+
+void readSensors(Fields& top, sim::Scenario& s) {
+  const JsonValue& sensorsJson = top.require("sensors");
+  Fields sensorsF(top.file(), sensorsJson, "sensors");
+  s.gps.fitted = s.loran.fitted = s.speedlog.fitted = s.gyro.fitted = false;
+  const TimeUs dur = s.durationUs;
+
+  if (const JsonValue* v = sensorsF.get("gps")) {
+    Fields f(top.file(), *v, "sensors.gps");
+    s.gps.fitted = true;
+    s.gps.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
+    s.gps.positionVarM2 = f.number("position_variance_m2", Fields::Check::Positive);
+    s.gps.velocityVarM2PerS2 = f.number("velocity_variance_m2_s2", Fields::Check::Positive);
+    readPowerSchedule(f, s.gps.power, dur);
+    f.finish();
+  }
+  if (const JsonValue* v = sensorsF.get("loran_c")) {
+    Fields f(top.file(), *v, "sensors.loran_c");
+    s.loran.fitted = true;
+    s.loran.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
+    const double var = f.number("markov_variance_m2", Fields::Check::NonNegative);
+    s.loran.error = {std::sqrt(var), f.number("markov_beta_per_s", Fields::Check::Positive)};
+    s.loran.whiteVarM2 = f.number("white_variance_m2", Fields::Check::Positive);
+    readPowerSchedule(f, s.loran.power, dur);
+    f.finish();
+  }
+  if (const JsonValue* v = sensorsF.get("speedlog")) {
+    Fields f(top.file(), *v, "sensors.speedlog");
+    s.speedlog.fitted = true;
+    s.speedlog.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
+    const double var = f.number("markov_variance_m2_s2", Fields::Check::NonNegative);
+    s.speedlog.error = {std::sqrt(var), f.number("markov_beta_per_s", Fields::Check::Positive)};
+    s.speedlog.whiteVarM2PerS2 = f.number("white_variance_m2_s2", Fields::Check::Positive);
+    SpeedlogMode initial = SpeedlogMode::GroundLock;
+    if (const JsonValue* m = f.get("mode")) initial = speedlogMode(f, *m, f.pathOf("mode"));
+    s.speedlog.mode = StepSchedule<SpeedlogMode>(initial);
+    readPowerSchedule(f, s.speedlog.power, dur, [&](Fields& e, TimeUs t) {
+      s.speedlog.mode.addChange(t, speedlogMode(e, *e.get("mode"), e.pathOf("mode")));
+    });
+    f.finish();
+  }
+  if (const JsonValue* v = sensorsF.get("gyro")) {
+    Fields f(top.file(), *v, "sensors.gyro");
+    s.gyro.fitted = true;
+    s.gyro.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
+    s.gyro.sdRad = degToRad(f.number("sd_deg", Fields::Check::Positive));
+    readPowerSchedule(f, s.gyro.power, dur);
+    f.finish();
+  }
+  for (const auto& [key, value] : sensorsJson.object) {
+    if (key != "gps" && key != "loran_c" && key != "speedlog" && key != "gyro")
+      sensorsF.fail(value, "sensors." + key,
+                    "unknown sensor '" + key + "' (known: gps, loran_c, speedlog, gyro)");
+  }
+}
+
+void readOwnShip(Fields& top, sim::Scenario& s) {
+  Fields f(top.file(), top.require("own_ship"), "own_ship");
+  auto& o = s.ownShip;
+  const auto p = f.pair("position_m", {0.0, 0.0});
+  o.initialPosition = {p[0], p[1]};
+  o.initialVelocityMps = f.pair("velocity_mps", {0.0, 0.0});
+  if (const JsonValue* h = f.get("heading_deg"))
+    o.initialHeadingRad = degToRad(f.checkedNumber(*h, f.pathOf("heading_deg"), Fields::Check::Any));
+  o.maxAccelerationMps2 = f.numberOr("max_acceleration_mps2", 0.0, Fields::Check::NonNegative);
+  if (const JsonValue* ra = f.get("random_acceleration")) {
+    Fields g(top.file(), *ra, f.pathOf("random_acceleration"));
+    o.randomAcceleration = est::GaussMarkov{g.number("sigma_mps2", Fields::Check::NonNegative),
+                                            g.number("beta_per_s", Fields::Check::Positive)};
+    g.finish();
+  }
+  if (const JsonValue* sched = f.get("schedule")) {
+    const std::string path = f.pathOf("schedule");
+    if (!sched->isArray()) f.fail(*sched, path, "must be an array of events");
+    TimeUs last = -1;
+    for (std::size_t i = 0; i < sched->array.size(); ++i) {
+      Fields e(top.file(), sched->array[i], path + "[" + std::to_string(i) + "]");
+      sim::KinematicEvent ev;
+      ev.timeUs = timeField(e, "t_s", s.durationUs);
+      if (ev.timeUs <= last) e.fail(*e.get("t_s"), e.pathOf("t_s"), "event times must increase");
+      last = ev.timeUs;
+      if (e.get("velocity_mps")) ev.setVelocityMps = e.pair("velocity_mps", {});
+      if (const JsonValue* r = e.get("turn_rate_dps"))
+        ev.turnRateRadPerS = degToRad(e.checkedNumber(*r, e.pathOf("turn_rate_dps"), Fields::Check::Any));
+      if (!ev.setVelocityMps && !ev.turnRateRadPerS)
+        e.fail(sched->array[i], e.pathOf("velocity_mps"),
+               "event needs \"velocity_mps\" or \"turn_rate_dps\"");
+      e.finish();
+      o.schedule.push_back(ev);
+    }
+  }
+  f.finish();
+}
+
+void readFilter(Fields& top, sim::Scenario& s) {
+  const JsonValue* v = top.get("filter");
+  if (!v) return;
+  Fields f(top.file(), *v, "filter");
+  auto& fs = s.filter;
+  if (const JsonValue* a = f.get("acceleration")) {
+    Fields g(top.file(), *a, "filter.acceleration");
+    fs.acceleration = {g.number("sigma_mps2", Fields::Check::NonNegative),
+                       g.number("beta_per_s", Fields::Check::Positive)};
+    g.finish();
+  }
+  if (const JsonValue* c = f.get("current")) {
+    Fields g(top.file(), *c, "filter.current");
+    fs.current = gaussMarkov(g, "variance_m2_s2", "sigma_mps");
+    g.finish();
+  }
+  fs.initialPositionSdM = f.numberOr("initial_position_sd_m", fs.initialPositionSdM, Fields::Check::Positive);
+  fs.initialVelocitySdMps =
+      f.numberOr("initial_velocity_sd_mps", fs.initialVelocitySdMps, Fields::Check::Positive);
+  if (const JsonValue* g = f.get("gate_probability")) {
+    fs.gateProbability = f.checkedNumber(*g, f.pathOf("gate_probability"), Fields::Check::NonNegative);
+    if (!(fs.gateProbability < 1.0))
+      f.fail(*g, f.pathOf("gate_probability"), "must be in [0, 1) (0 disables gating)");
+  }
+  fs.gateReopenS = f.numberOr("gate_reopen_s", fs.gateReopenS, Fields::Check::NonNegative);
+  fs.minSpeedMps = f.numberOr("min_speed_mps", fs.minSpeedMps, Fields::Check::NonNegative);
+  f.finish();
+}
+
+}  // namespace
+
+sim::Scenario parseScenario(std::string_view text, const std::string& sourceName) {
+  JsonValue root;
+  try {
+    root = parseJson(text);
+  } catch (const JsonParseError& e) {
+    throw InputError(sourceName, e.line(), "", std::string("malformed JSON: ") + e.what());
+  }
+  Fields top(sourceName, root, "");
+  sim::Scenario s;
+  const JsonValue& format = top.require("format");
+  if (!format.isString() || format.string != kScenarioFormat)
+    top.fail(format, "format", "must be \"" + std::string(kScenarioFormat) + "\"");
+  s.name = top.stringOr("name", sourceName);
+  s.description = top.stringOr("description", "");
+  {
+    Fields o(sourceName, top.require("origin"), "origin");
+    s.origin.latDeg = o.number("lat_deg");
+    s.origin.lonDeg = o.number("lon_deg");
+    if (s.origin.latDeg < -80.0 || s.origin.latDeg > 84.0)
+      o.fail(*o.get("lat_deg"), "origin.lat_deg",
+             "must lie in [-80, 84] (the UTM band), got " + formatNumber(s.origin.latDeg));
+    if (s.origin.lonDeg < -180.0 || s.origin.lonDeg > 180.0)
+      o.fail(*o.get("lon_deg"), "origin.lon_deg",
+             "must lie in [-180, 180], got " + formatNumber(s.origin.lonDeg));
+    o.finish();
+  }
+  const double duration = top.number("duration_s", Fields::Check::Positive);
+  if (duration > 30.0 * 86400.0) top.fail(*top.get("duration_s"), "duration_s", "must not exceed 30 days");
+  s.durationUs = fromSeconds(duration);
+  const double step = top.numberOr("step_s", 1.0, Fields::Check::Positive);
+  if (fromSeconds(step) <= 0) top.fail(*top.get("step_s"), "step_s", "must be at least 1 microsecond");
+  s.stepUs = fromSeconds(step);
+  if (const JsonValue* seed = top.get("seed")) {
+    if (!seed->isNumber() || seed->number < 0 || seed->number > 9007199254740992.0 ||
+        std::floor(seed->number) != seed->number)
+      top.fail(*seed, "seed", "must be a non-negative integer");
+    s.seed = static_cast<std::uint64_t>(seed->number);
+  }
+  {
+    Fields c(sourceName, top.require("current"), "current");
+    s.current = gaussMarkov(c, "variance_m2_s2", "sigma_mps");
+    c.finish();
+  }
+  readOwnShip(top, s);
+  readSensors(top, s);
+  readFilter(top, s);
+  top.finish();
+  if (const std::string problem = sim::checkScenario(s); !problem.empty()) {
+    const auto colon = problem.find(": ");
+    throw InputError(sourceName, 0, problem.substr(0, colon), problem.substr(colon + 2));
+  }
+  return s;
+}
+
+std::string readTextFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "", std::string("cannot open: ") + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw InputError(path, 0, "", "read error");
+  return ss.str();
+}
+
+sim::Scenario loadScenarioFile(const std::string& path) {
+  return parseScenario(readTextFile(path), path);
+}
+
+}  // namespace reckoner::io

@@ -1,0 +1,23 @@
+#pragma once
+// Scenario files (format: docs/scenarios.md). Every problem is reported as one io::InputError naming
+// the file, line and field; unknown fields and unknown sensors are errors, not silently ignored.
+#include <string>
+#include <string_view>
+
+#include "io/input_error.h"
+#include "sim/scenario.h"
+
+namespace reckoner::io {
+
+inline constexpr std::string_view kScenarioFormat = "reckoner-scenario/1";
+
+/// Parses scenario JSON text; sourceName is used in error messages. Throws InputError.
+sim::Scenario parseScenario(std::string_view text, const std::string& sourceName);
+
+/// Reads and parses a scenario file. Throws InputError (also for a missing or unreadable file).
+sim::Scenario loadScenarioFile(const std::string& path);
+
+/// Reads a whole text file; throws InputError naming the file when it cannot.
+std::string readTextFile(const std::string& path);
+
+}  // namespace reckoner::io

@@ -1,0 +1,28 @@
+#include "io/text_format.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace reckoner::io {
+namespace {
+std::string degMin(double v, int degWidth, char pos, char neg) {
+  if (!std::isfinite(v)) return "--";
+  const char hemi = v < 0 ? neg : pos;
+  // Round to the printed 0.001' first so that 59.9995' carries into the degrees.
+  const long thousandths = std::lround(std::abs(v) * 60000.0);
+  const long deg = thousandths / 60000;
+  const double min = static_cast<double>(thousandths % 60000) / 1000.0;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%0*ld\u00b0%06.3f'%c", degWidth, deg, min, hemi);
+  return buf;
+}
+}  // namespace
+
+std::string formatLatitude(double latDeg) {
+  return degMin(latDeg, 2, 'N', 'S');
+}
+std::string formatLongitude(double lonDeg) {
+  return degMin(lonDeg, 3, 'E', 'W');
+}
+
+}  // namespace reckoner::io

@@ -1,0 +1,11 @@
+#include "resources/embedded.h"
+
+namespace reckoner::resources {
+
+const EmbeddedFile* findScenario(std::string_view name) {
+  for (const auto& f : scenarios())
+    if (f.name == name) return &f;
+  return nullptr;
+}
+
+}  // namespace reckoner::resources

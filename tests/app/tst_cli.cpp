@@ -1,0 +1,149 @@
+// reckoner-cli driven as a user drives it: files written, exit codes, one-line errors.
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+class TestCli : public QObject {
+  Q_OBJECT
+
+  struct Result {
+    int code;
+    QString out, err;
+  };
+  static Result cli(const QStringList& args) {
+    QProcess p;
+    p.start(RECKONER_CLI, args);
+    p.waitForFinished(120000);
+    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
+            QString::fromUtf8(p.readAllStandardError())};
+  }
+  static QByteArray read(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+  }
+  static QString writeTemp(QTemporaryDir& dir, const QString& name, const QByteArray& text) {
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    f.open(QIODevice::WriteOnly);
+    f.write(text);
+    return path;
+  }
+  static QByteArray scenarioText(const QString& name) {
+    return read(QString(RECKONER_SCENARIO_DIR) + "/" + name);
+  }
+
+ private slots:
+  void runWritesCsvAndSummary() {
+    QTemporaryDir dir;
+    const Result r = cli({"run", "builtin:table1-test1", "--seed", "3", "--out", dir.path()});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.out.contains("gps+loran_c+speedlog_gl+gyro"));
+    const QList<QByteArray> lines = read(dir.filePath("ownship.csv")).split('\n');
+    QCOMPARE(lines.front(),
+             QByteArray("t_s,true_x_m,true_y_m,true_vx_mps,true_vy_mps,est_x_m,est_y_m,est_vx_mps,"
+                        "est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,est_lat_deg,est_lon_deg,nees,"
+                        "sensors,rows"));
+    QCOMPARE(lines.size(), 1500 + 2);  // header, 1500 rows, final newline
+    QCOMPARE(lines[1].split(',').size(), 18);
+    const QJsonObject s = QJsonDocument::fromJson(read(dir.filePath("summary.json"))).object();
+    QCOMPARE(s["seed"].toInt(), 3);
+    QCOMPARE(s["phases"].toArray().size(), 5);
+    QVERIFY(s["wall_time_s"].toDouble() > 0.0);
+    const QJsonObject dr = s["phases"].toArray()[2].toObject();
+    QCOMPARE(dr["kind"].toString(), QString("dead_reckoning"));
+    QVERIFY(dr["rmse_position_m"].toDouble() > 0.0 && dr["mean_nees"].toDouble() > 0.0);
+  }
+  void sameSeedSameBytes() {
+    QTemporaryDir a, b;
+    QCOMPARE(cli({"run", "builtin:default", "--seed", "9", "--out", a.path(), "--quiet"}).code, 0);
+    QCOMPARE(cli({"run", "builtin:default", "--seed", "9", "--out", b.path(), "--quiet"}).code, 0);
+    QCOMPARE(read(a.filePath("ownship.csv")), read(b.filePath("ownship.csv")));
+  }
+  void monteCarloSummary() {
+    QTemporaryDir dir;
+    const Result r = cli({"montecarlo", "builtin:matched-model", "--runs", "4", "--threads", "2", "--out",
+                          dir.filePath("mc")});
+    QCOMPARE(r.code, 0);
+    const QJsonObject s = QJsonDocument::fromJson(read(dir.filePath("mc/summary.json"))).object();
+    QCOMPARE(s["runs"].toInt(), 4);
+    const QJsonArray bounds = s["nees_bounds"].toArray();
+    QCOMPARE(bounds.size(), 2);
+    QVERIFY(bounds[0].toDouble() < 11.0 && bounds[1].toDouble() > 11.0);
+    QCOMPARE(s["per_time"].toObject()["mean_nees"].toArray().size(), 1500);
+    QCOMPARE(s["phases"].toArray().size(), 5);
+    QVERIFY(r.out.contains("speedlog_bl+gyro"));
+    QVERIFY(s.contains("all_phases_inside"));
+    QVERIFY(read(dir.filePath("mc/montecarlo.csv")).startsWith("t_s,rmse_position_m"));
+  }
+  void badInputIsOneLineAndExitCode2_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("missing file") << QStringList{"run", "/no/such.json", "--out", "/tmp/x"}
+                                  << "/no/such.json: cannot open";
+    QTest::newRow("no command") << QStringList{} << "no command given";
+    QTest::newRow("unknown command") << QStringList{"fly"} << "unknown command 'fly'";
+    QTest::newRow("missing --out") << QStringList{"run", "builtin:default"} << "--out DIR is required";
+    QTest::newRow("bad runs") << QStringList{"montecarlo", "builtin:default", "--runs",
+                                             "ten",        "--out",           "/tmp/x"}
+                              << "--runs: expected an integer";
+    QTest::newRow("zero runs") << QStringList{"montecarlo", "builtin:default", "--runs",
+                                              "0",          "--out",           "/tmp/x"}
+                               << "--runs: expected an integer";
+    QTest::newRow("unknown builtin") << QStringList{"run", "builtin:nope", "--out", "/tmp/x"}
+                                     << "unknown built-in scenario 'nope'";
+    QTest::newRow("unknown option") << QStringList{"run", "builtin:default", "--fast"}
+                                    << "unknown option --fast";
+  }
+  void badInputIsOneLineAndExitCode2() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, expected);
+    const Result r = cli(args);
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(expected), qPrintable(r.err));
+    QVERIFY2(r.err.startsWith("reckoner-cli: error: "), qPrintable(r.err));
+  }
+  void badScenarioFilesAreNamed_data() {
+    QTest::addColumn<QByteArray>("from");
+    QTest::addColumn<QByteArray>("to");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("malformed JSON") << QByteArray("\"duration_s\": 1500,")
+                                    << QByteArray("\"duration_s\": 1500") << "bad.json:10: malformed JSON";
+    QTest::newRow("unknown field") << QByteArray("\"step_s\": 1,")
+                                   << QByteArray("\"step_s\": 1, \"speed\": 2,")
+                                   << "bad.json:10: speed: unknown field";
+    QTest::newRow("negative variance")
+        << QByteArray("\"white_variance_m2\": 25") << QByteArray("\"white_variance_m2\": -25")
+        << "sensors.loran_c.white_variance_m2: must be positive, got -25";
+    QTest::newRow("unknown sensor") << QByteArray("\"gyro\": {") << QByteArray("\"compass\": {}, \"gyro\": {")
+                                    << "sensors.compass: unknown sensor 'compass'";
+  }
+  void badScenarioFilesAreNamed() {
+    QFETCH(QByteArray, from);
+    QFETCH(QByteArray, to);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    QByteArray text = scenarioText("matched-model.json");
+    QVERIFY(text.contains(from));
+    const QString path = writeTemp(dir, "bad.json", text.replace(from, to));
+    const Result r = cli({"run", path, "--out", dir.filePath("out")});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(expected), qPrintable(r.err));
+    QCOMPARE(r.err.count('\n'), 1);
+  }
+  void listsAndValidatesBuiltins() {
+    const Result list = cli({"scenarios"});
+    QCOMPARE(list.code, 0);
+    QVERIFY(list.out.contains("builtin:default") && list.out.contains("builtin:table1-test5"));
+    QCOMPARE(cli({"validate", "builtin:matched-model", QString(RECKONER_SCENARIO_DIR) + "/table1-test2.json"})
+                 .code,
+             0);
+  }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"

@@ -1,0 +1,57 @@
+#include <QTest>
+
+#include "estimation/chi_square.h"
+
+using namespace reckoner::est;
+
+class TestChiSquare : public QObject {
+  Q_OBJECT
+ private slots:
+  void quantilesMatchTables_data() {
+    QTest::addColumn<double>("p");
+    QTest::addColumn<double>("dof");
+    QTest::addColumn<double>("expected");
+    // Reference values from standard chi-square tables (Abramowitz & Stegun 26.4).
+    QTest::newRow("0.95,1") << 0.95 << 1.0 << 3.841459;
+    QTest::newRow("0.99,2") << 0.99 << 2.0 << 9.210340;
+    QTest::newRow("0.9999,1") << 0.9999 << 1.0 << 15.136705;
+    QTest::newRow("0.9999,2") << 0.9999 << 2.0 << 18.420681;
+    QTest::newRow("0.025,10") << 0.025 << 10.0 << 3.246973;
+    QTest::newRow("0.975,10") << 0.975 << 10.0 << 20.483177;
+    QTest::newRow("0.5,100") << 0.5 << 100.0 << 99.334129;
+    QTest::newRow("0.001,3") << 0.001 << 3.0 << 0.024297;
+  }
+  void quantilesMatchTables() {
+    QFETCH(double, p);
+    QFETCH(double, dof);
+    QFETCH(double, expected);
+    const double q = chiSquareQuantile(p, dof);
+    QVERIFY2(std::abs(q - expected) < 1e-5 * std::max(1.0, expected),
+             qPrintable(QString::number(q, 'g', 10)));
+    QVERIFY(std::abs(chiSquareCdf(q, dof) - p) < 1e-10);
+  }
+  void roundTripAcrossDegreesOfFreedom() {
+    for (double dof : {0.5, 1.0, 2.0, 7.0, 60.0, 550.0, 600.0, 5000.0})
+      for (double p : {1e-6, 0.025, 0.3, 0.5, 0.975, 0.999999})
+        QVERIFY(std::abs(chiSquareCdf(chiSquareQuantile(p, dof), dof) - p) < 1e-9);
+  }
+  void averageNeesBoundsOfTheIssues() {
+    // 50 runs of an 11-state filter: the bounds quoted for the DRKF; of a 12-state one, the TTKF's.
+    const auto b11 = averageNeesBounds(11, 50);
+    QVERIFY2(std::abs(b11.lower - 9.74) < 0.005 && std::abs(b11.upper - 12.34) < 0.005,
+             qPrintable(QString("%1 %2").arg(b11.lower).arg(b11.upper)));
+    const auto b12 = averageNeesBounds(12, 50);
+    QVERIFY(std::abs(b12.lower - 10.68) < 0.005 && std::abs(b12.upper - 13.40) < 0.005);
+    QVERIFY(b11.contains(11.0) && !b11.contains(12.5) && !b11.contains(9.7));
+  }
+  void invalidArguments() {
+    QVERIFY(std::isnan(chiSquareQuantile(0.0, 2.0)));
+    QVERIFY(std::isnan(chiSquareQuantile(1.0, 2.0)));
+    QVERIFY(std::isnan(chiSquareQuantile(0.5, -1.0)));
+    QVERIFY(std::isnan(regularisedGammaP(-1.0, 1.0)));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, averageNeesBounds(0, 50));
+  }
+};
+
+QTEST_APPLESS_MAIN(TestChiSquare)
+#include "tst_chi_square.moc"

@@ -1,0 +1,108 @@
+#include <QTest>
+
+#include "common/angles.h"
+#include "estimation/models/drkf_ground_velocity.h"
+#include "estimation/models/drkf_gyro.h"
+#include "estimation/models/drkf_position_fix.h"
+#include "estimation/models/drkf_process.h"
+#include "estimation/models/drkf_speedlog.h"
+#include "estimation/numeric_jacobian.h"
+
+using namespace reckoner;
+using namespace reckoner::est;
+using namespace reckoner::est::drkf;
+
+Q_DECLARE_METATYPE(reckoner::est::drkf::State)
+
+namespace {
+State makeState(double vx, double vy, double cx = 0.3, double cy = -0.2) {
+  State x;
+  x << 1200.0, cx, vx, 0.1, -800.0, cy, vy, -0.05, 12.0, -7.0, 0.08;
+  return x;
+}
+
+template <class Model>
+void checkJacobian(const Model& m, const State& x) {
+  constexpr int M = Model::kDim;
+  const auto numeric =
+      numericJacobian<M, kStateDim>([&](const State& s) { return m.h(s); }, x,
+                                    [&](const Vec<M>& a, const Vec<M>& b) { return m.residual(a, b); });
+  const auto analytic = m.jacobian(x);
+  const double scale = std::max(1.0, analytic.cwiseAbs().maxCoeff());
+  QVERIFY2(
+      (numeric - analytic).cwiseAbs().maxCoeff() < 1e-6 * scale,
+      qPrintable(QString("max |numeric - analytic| = %1").arg((numeric - analytic).cwiseAbs().maxCoeff())));
+}
+}  // namespace
+
+class TestDrkfModels : public QObject {
+  Q_OBJECT
+ private slots:
+  void jacobians_data() {
+    QTest::addColumn<State>("x");
+    QTest::newRow("ordinary") << makeState(5.0, 4.0);
+    QTest::newRow("heading just west of north") << makeState(-0.05, 6.0);
+    QTest::newRow("heading exactly north") << makeState(0.0, 6.0);
+    QTest::newRow("heading south") << makeState(0.01, -6.0);
+    QTest::newRow("slow: 0.03 m/s") << makeState(0.02, 0.0224, 0.0, 0.0);
+    QTest::newRow("current cancels water velocity") << makeState(1.0, 1.0, -0.98, -0.99);
+    QTest::newRow("large values") << makeState(-15.0, 12.0, 2.5, -1.5);
+  }
+  void jacobians() {
+    QFETCH(State, x);
+    checkJacobian(PositionFixModel(PositionFixModel::Source::Gps), x);
+    checkJacobian(PositionFixModel(PositionFixModel::Source::LoranC), x);
+    checkJacobian(GroundVelocityModel(), x);
+    checkJacobian(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0.0), x);
+    checkJacobian(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0.0), x);
+    checkJacobian(GyroHeadingModel(0.0), x);
+  }
+  void measurementFunctions() {
+    const State x = makeState(3.0, 4.0, 0.0, 1.0);
+    QCOMPARE(PositionFixModel(PositionFixModel::Source::Gps).h(x), Vec<2>(1200.0, -800.0));
+    QCOMPARE(PositionFixModel(PositionFixModel::Source::LoranC).h(x), Vec<2>(1212.0, -807.0));
+    QCOMPARE(GroundVelocityModel().h(x), Vec<2>(3.0, 5.0));
+    QVERIFY(std::abs(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0).h(x)[0] - (5.0 + 0.08)) < 1e-12);
+    QVERIFY(std::abs(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0).h(x)[0] -
+                     (std::hypot(3.0, 5.0) + 0.08)) < 1e-12);
+    // Heading of the water velocity (3, 4): atan2(3, 4) clockwise from north, not of the ground velocity.
+    QVERIFY(std::abs(GyroHeadingModel(0).h(x)[0] - std::atan2(3.0, 4.0)) < 1e-12);
+  }
+  void gyroResidualWrapsAcrossNorth() {
+    const GyroHeadingModel g(0.0);
+    const double r = g.residual(Vec<1>(degToRad(1.0)), Vec<1>(degToRad(359.0)))[0];
+    QVERIFY(std::abs(r - degToRad(2.0)) < 1e-12);
+    const double r2 = g.residual(Vec<1>(degToRad(359.0)), Vec<1>(degToRad(1.0)))[0];
+    QVERIFY(std::abs(r2 + degToRad(2.0)) < 1e-12);
+    QVERIFY(g.h(makeState(-0.05, 6.0))[0] > degToRad(359.0));  // reported in [0, 2 pi)
+  }
+  void degenerateAtLowSpeed() {
+    const State stopped = makeState(0.0, 0.0, 0.3, 0.3);  // stopped in a 0.42 m/s current
+    QVERIFY(GyroHeadingModel(0.5).degenerate(stopped));
+    QVERIFY(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0.5).degenerate(stopped));
+    QVERIFY(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0.5).degenerate(stopped));
+    QVERIFY(!SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0.4).degenerate(stopped));
+    QVERIFY(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0.4).degenerate(stopped));
+    QVERIFY(!GyroHeadingModel(0.5).degenerate(makeState(3.0, 4.0)));
+    QVERIFY(GyroHeadingModel(0.5).degenerate(makeState(std::nan(""), 4.0)));
+  }
+  void processMatricesFollowEquation4() {
+    const ProcessModel m({{0.55, 0.17}, {0.5, 1.0}, {22.4, 0.25}, {0.7, 0.5}});
+    const auto& F = m.F();
+    QCOMPARE(F(kPosX, kCurX), 1.0);
+    QCOMPARE(F(kPosX, kVelX), 1.0);
+    QCOMPARE(F(kVelY, kAccY), 1.0);
+    QCOMPARE(F(kCurY, kCurY), -0.17);
+    QCOMPARE(F(kAccX, kAccX), -1.0);
+    QCOMPARE(F(kLoranY, kLoranY), -0.25);
+    QCOMPARE(F(kLogBias, kLogBias), -0.5);
+    QCOMPARE(F.cwiseAbs().sum(), 2 * (1 + 1 + 0.17 + 1 + 1.0) + 2 * 0.25 + 0.5);
+    const auto& G = m.G();
+    QVERIFY(std::abs(G(kCurX, 0) - std::sqrt(2 * 0.55 * 0.55 * 0.17)) < 1e-15);
+    QVERIFY(std::abs(G(kLogBias, 6) - std::sqrt(2 * 0.7 * 0.7 * 0.5)) < 1e-15);
+    QCOMPARE((G.array() != 0.0).count(), 7);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestDrkfModels)
+#include "tst_drkf_models.moc"

@@ -1,0 +1,128 @@
+#include <QTest>
+
+#include "support/drkf_fixtures.h"
+
+#include "common/angles.h"
+#include "io/scenario_json.h"
+#include "resources/embedded.h"
+
+using namespace reckoner;
+
+namespace {
+const char* kValid = R"({
+  "format": "reckoner-scenario/1",
+  "name": "t",
+  "origin": {"lat_deg": 49.29, "lon_deg": -123.11},
+  "duration_s": 100,
+  "current": {"variance_m2_s2": 0.3, "beta_per_s": 0.17},
+  "own_ship": {"velocity_mps": [5, 5], "schedule": [{"t_s": 10, "turn_rate_dps": 1.5}]},
+  "sensors": {
+    "gps": {"position_variance_m2": 1600, "velocity_variance_m2_s2": 0.25,
+            "schedule": [{"t_s": 30, "on": false}, {"t_s": 60, "on": true}]},
+    "speedlog": {"markov_variance_m2_s2": 0.5, "markov_beta_per_s": 0.5, "white_variance_m2_s2": 0.01,
+                 "schedule": [{"t_s": 40, "mode": "bottom_lock"}]},
+    "gyro": {"sd_deg": 1}
+  }
+})";
+
+/// kValid with `from` replaced by `to` (which must occur).
+std::string variant(const std::string& from, const std::string& to) {
+  std::string s = kValid;
+  const auto at = s.find(from);
+  if (at == std::string::npos) qFatal("test text not found: %s", from.c_str());
+  return s.replace(at, from.size(), to);
+}
+}  // namespace
+
+class TestScenarioJson : public QObject {
+  Q_OBJECT
+ private slots:
+  void readsEveryField() {
+    const sim::Scenario s = io::parseScenario(kValid, "t.json");
+    QCOMPARE(s.name, std::string("t"));
+    QCOMPARE(s.durationUs, 100 * kMicrosPerSecond);
+    QVERIFY(std::abs(s.current.sigma - std::sqrt(0.3)) < 1e-15);
+    QCOMPARE(s.ownShip.schedule.size(), std::size_t(1));
+    QVERIFY(std::abs(*s.ownShip.schedule[0].turnRateRadPerS - degToRad(1.5)) < 1e-15);
+    QVERIFY(s.gps.fitted && s.speedlog.fitted && s.gyro.fitted && !s.loran.fitted);
+    QCOMPARE(s.gps.power.at(35 * kMicrosPerSecond), false);
+    QCOMPARE(s.gps.power.at(60 * kMicrosPerSecond), true);
+    QCOMPARE(s.speedlog.mode.at(45 * kMicrosPerSecond), sensors::SpeedlogMode::BottomLock);
+    QCOMPARE(s.speedlog.power.at(45 * kMicrosPerSecond), true);
+    QVERIFY(std::abs(s.gyro.sdRad - degToRad(1.0)) < 1e-15);
+    QCOMPARE(s.filter.gateProbability, 0.9999);  // default
+  }
+  void everyBuiltinScenarioLoads() {
+    QVERIFY(resources::scenarios().size() >= 7);
+    QVERIFY(resources::findScenario(resources::kDefaultScenario) != nullptr);
+    for (const auto& f : resources::scenarios()) {
+      const sim::Scenario s = io::parseScenario(f.text, std::string(f.name));
+      QVERIFY2(sim::checkScenario(s).empty(), f.name.data());
+    }
+  }
+  void badInputNamesFileLineAndField_data() {
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QString>("expected");  // substring of the single error line
+    QTest::newRow("malformed JSON") << QString::fromStdString(
+                                           variant("\"duration_s\": 100,", "\"duration_s\": 100,,"))
+                                    << "t.json:5: malformed JSON: line 5";
+    QTest::newRow("unknown field") << QString::fromStdString(
+                                          variant("\"sd_deg\": 1", "\"sd_deg\": 1, \"bias_deg\": 2"))
+                                   << "t.json:13: sensors.gyro.bias_deg: unknown field";
+    QTest::newRow("negative variance")
+        << QString::fromStdString(variant("\"position_variance_m2\": 1600", "\"position_variance_m2\": -5"))
+        << "t.json:9: sensors.gps.position_variance_m2: must be positive, got -5";
+    QTest::newRow("unknown sensor") << QString::fromStdString(
+                                           variant("\"gyro\": {", "\"radar2\": {\"x\": 1},\n    \"gyro\": {"))
+                                    << "t.json:13: sensors.radar2: unknown sensor 'radar2'";
+    QTest::newRow("missing field") << QString::fromStdString(variant("\"duration_s\": 100,", ""))
+                                   << "t.json:1: duration_s: required field is missing";
+    QTest::newRow("wrong type") << QString::fromStdString(
+                                       variant("\"duration_s\": 100", "\"duration_s\": \"100\""))
+                                << "t.json:5: duration_s: must be a number, got a string";
+    QTest::newRow("schedule out of order")
+        << QString::fromStdString(variant("{\"t_s\": 60, \"on\": true}", "{\"t_s\": 20, \"on\": true}"))
+        << "t.json:10: sensors.gps.schedule[1].t_s: schedule times must increase";
+    QTest::newRow("time beyond duration")
+        << QString::fromStdString(variant("{\"t_s\": 40, \"mode\"", "{\"t_s\": 400, \"mode\""))
+        << "sensors.speedlog.schedule[0].t_s: time 400 s lies beyond duration_s";
+    QTest::newRow("bad mode") << QString::fromStdString(variant("\"bottom_lock\"", "\"bottom\""))
+                              << "sensors.speedlog.schedule[0].mode: must be \"ground_lock\"";
+    QTest::newRow("bad origin") << QString::fromStdString(variant("\"lat_deg\": 49.29", "\"lat_deg\": 89.0"))
+                                << "t.json:4: origin.lat_deg: must lie in [-80, 84]";
+    QTest::newRow("wrong format") << QString::fromStdString(
+                                         variant("reckoner-scenario/1", "reckoner-scenario/2"))
+                                  << "t.json:2: format: must be \"reckoner-scenario/1\"";
+    QTest::newRow("negative beta") << QString::fromStdString(
+                                          variant("\"beta_per_s\": 0.17", "\"beta_per_s\": -0.17"))
+                                   << "t.json:6: current.beta_per_s: must be positive";
+    QTest::newRow("not an object") << "[1, 2]"
+                                   << "t.json:1: must be an object, got an array";
+    QTest::newRow("empty event") << QString::fromStdString(
+                                        variant("{\"t_s\": 10, \"turn_rate_dps\": 1.5}", "{\"t_s\": 10}"))
+                                 << "own_ship.schedule[0].velocity_mps: event needs";
+  }
+  void badInputNamesFileLineAndField() {
+    QFETCH(QString, text);
+    QFETCH(QString, expected);
+    try {
+      io::parseScenario(text.toStdString(), "t.json");
+      QFAIL("accepted a bad scenario");
+    } catch (const io::InputError& e) {
+      const QString msg = QString::fromStdString(e.what());
+      QVERIFY2(msg.contains(expected), qPrintable(msg));
+      QVERIFY(!msg.contains('\n'));
+    }
+  }
+  void missingFileIsNamed() {
+    try {
+      io::loadScenarioFile("/nonexistent/dir/s.json");
+      QFAIL("opened a missing file");
+    } catch (const io::InputError& e) {
+      QCOMPARE(QString(e.what()), QString("/nonexistent/dir/s.json: cannot open: No such file or directory"));
+    }
+  }
+};
+
+QTEST_APPLESS_MAIN(TestScenarioJson)
+#include "tst_scenario_json.moc"

@@ -1,0 +1,157 @@
+#include <QTest>
+
+#include "common/angles.h"
+#include "navigation/drkf.h"
+#include "support/drkf_fixtures.h"
+
+using namespace reckoner;
+using namespace reckoner::nav;
+using namespace reckoner::est::drkf;
+using sensors::GpsSample;
+using sensors::GyroSample;
+using sensors::OwnShipSample;
+using sensors::SpeedlogSample;
+
+namespace {
+DrkfConfig config() {
+  DrkfConfig c;
+  c.process = test::tableOneProcess();
+  return c;
+}
+
+/// A filter at the origin steaming with water velocity (vx, vy), in a frame whose origin lies on the
+/// central meridian (no convergence) unless lonDeg says otherwise.
+Drkf makeFilter(double vx, double vy, double lonDeg = -123.0) {
+  Belief b;
+  b.x.setZero();
+  b.x[kVelX] = vx;
+  b.x[kVelY] = vy;
+  b.P = initialCovariance(config().process, 30.0, 0.5);
+  return Drkf(config(), geo::LocalFrame(49.0, lonDeg), b, 0);
+}
+
+const est::BlockReport* blockOf(const DrkfUpdateReport& r, DrkfBlock b) {
+  return r.block(b);
+}
+}  // namespace
+
+class TestDrkf : public QObject {
+  Q_OBJECT
+ private slots:
+  void gyroAcrossNorthPullsTheShortWay() {
+    // GIVEN a ship heading 359 deg WHEN the gyro says 1 deg THEN the innovation is +2 deg and the
+    // estimated heading moves towards north, not the long way round through south.
+    Drkf f = makeFilter(-6.0 * std::sin(degToRad(1.0)), 6.0 * std::cos(degToRad(1.0)));
+    const std::vector<OwnShipSample> s{
+        GyroSample{kMicrosPerSecond, degToRad(1.0), degToRad(1.0) * degToRad(1.0)}};
+    const auto r = f.update(kMicrosPerSecond, s);
+    const auto* g = blockOf(r, kGyro);
+    QVERIFY(g && g->status == est::UpdateStatus::Accepted);
+    // (1e-6 rad: after the 1 s prediction the ship is 0.1 m off the central meridian, convergence 2e-8)
+    QVERIFY2(std::abs(r.joint.innovation[g->row] - degToRad(2.0)) < 1e-6,
+             qPrintable(QString("innovation %1 deg").arg(radToDeg(r.joint.innovation[g->row]), 0, 'g', 12)));
+    QVERIFY(r.joint.nis < 1.0);  // +2 deg against a prior heading sd of ~5 deg; -358 deg would be gated out
+    const double heading = bearingOf(f.belief().x[kVelX], f.belief().x[kVelY]);
+    QVERIFY2(heading > degToRad(359.0) || heading < degToRad(1.0),
+             qPrintable(QString::number(radToDeg(heading))));
+  }
+  void convergenceIsRemovedFromTrueNorthMeasurements() {
+    // GIVEN an origin 0.55 deg east of the central meridian (grid convergence ~0.4 deg) and a ship
+    // going grid north WHEN the gyro reports the TRUE heading (grid + convergence) THEN the
+    // innovation is zero.
+    Drkf f = makeFilter(0.0, 6.0, -122.45);
+    const double gamma = f.frame().gridInfo({0.0, 0.0}).convergenceRad;
+    QVERIFY(gamma > degToRad(0.3));
+    const std::vector<OwnShipSample> s{GyroSample{kMicrosPerSecond, gamma, 1e-6}};
+    const auto r = f.update(kMicrosPerSecond, s);
+    QVERIFY(std::abs(r.joint.nis) < 1e-3);
+  }
+  void stationaryShipSkipsHeadingAndSpeed() {
+    Drkf f = makeFilter(0.0, 0.0);
+    const std::vector<OwnShipSample> s{
+        GyroSample{kMicrosPerSecond, 1.0, 1e-4},
+        SpeedlogSample{kMicrosPerSecond, 0.1, sensors::SpeedlogMode::BottomLock, 0.01}};
+    const auto r = f.update(kMicrosPerSecond, s);
+    QCOMPARE(blockOf(r, kGyro)->status, est::UpdateStatus::RejectedDegenerate);
+    QCOMPARE(blockOf(r, kSpeedlog)->status, est::UpdateStatus::RejectedDegenerate);
+    QCOMPARE(r.dim, 0);
+  }
+  void outlierGatedThenReopened() {
+    // GIVEN a filter that has lost its position (every GPS fix 2 km off) WHEN the fixes keep coming
+    // THEN they are gated out for gate_reopen_s (10 s), then one is applied ungated after inflating the
+    // position uncertainty until it is consistent: the filter jumps to GPS and accepts the next fix.
+    Drkf f = makeFilter(0.0, 5.0);
+    int rejected = 0;
+    for (int k = 1; k <= 13; ++k) {
+      const TimeUs t = k * kMicrosPerSecond;
+      const std::vector<OwnShipSample> s{GpsSample{t, {2000.0, 5.0 * k}, 100.0, false, 0, 0, 0}};
+      const auto r = f.update(t, s);
+      const auto status = blockOf(r, kGpsPosition)->status;
+      if (k <= 10) QCOMPARE(status, est::UpdateStatus::RejectedGate);
+      if (k == 11) {
+        QCOMPARE(status, est::UpdateStatus::AcceptedForced);
+        QVERIFY2(std::abs(f.belief().x[kPosX] - 2000.0) < 60.0,
+                 qPrintable(QString::number(f.belief().x[kPosX])));
+        QVERIFY(std::sqrt(f.belief().P(kPosX, kPosX)) > 9.0);  // no tighter than the fix itself
+      }
+      if (k >= 12) QCOMPARE(status, est::UpdateStatus::Accepted);
+      rejected += status == est::UpdateStatus::RejectedGate;
+    }
+    QCOMPARE(rejected, 10);
+    QCOMPARE(f.counters().byStatus[kGpsPosition][static_cast<int>(est::UpdateStatus::AcceptedForced)], 1L);
+  }
+  void gyroIsNeverForced() {
+    Drkf f = makeFilter(0.0, 6.0);
+    for (int k = 1; k <= 30; ++k) {
+      const TimeUs t = k * kMicrosPerSecond;
+      const std::vector<OwnShipSample> s{GyroSample{t, degToRad(120.0), 1e-4}};
+      const auto r = f.update(t, s);
+      QVERIFY(blockOf(r, kGyro)->status != est::UpdateStatus::AcceptedForced);
+    }
+  }
+  void staleAndNonFiniteSamples() {
+    Drkf f = makeFilter(0.0, 5.0);
+    QVERIFY(f.predictTo(10 * kMicrosPerSecond));
+    QVERIFY(!f.predictTo(5 * kMicrosPerSecond));
+    const std::vector<OwnShipSample> old{GpsSample{5 * kMicrosPerSecond, {0, 0}, 100.0, false, 0, 0, 0}};
+    const auto r = f.update(5 * kMicrosPerSecond, old);
+    QCOMPARE(r.joint.status, est::UpdateStatus::RejectedStale);
+    QCOMPARE(f.timeUs(), 10 * kMicrosPerSecond);
+    // A sample stamped differently from the epoch is skipped and counted.
+    const std::vector<OwnShipSample> mixed{GpsSample{12 * kMicrosPerSecond, {0, 50}, 100.0, false, 0, 0, 0},
+                                           GpsSample{11 * kMicrosPerSecond, {0, 55}, 100.0, false, 0, 0, 0}};
+    f.update(11 * kMicrosPerSecond, mixed);
+    QCOMPARE(f.counters().staleSamples, 2L);
+    const std::vector<OwnShipSample> nan{
+        GpsSample{13 * kMicrosPerSecond, {std::nan(""), 0}, 100.0, false, 0, 0, 0}};
+    const auto before = f.belief();
+    const auto rn = f.update(13 * kMicrosPerSecond, nan);
+    QCOMPARE(blockOf(rn, kGpsPosition)->status, est::UpdateStatus::RejectedNonFinite);
+    QVERIFY(std::isfinite(f.belief().P.sum()));
+    QVERIFY((f.belief().x - before.x).norm() > 0.0);  // predicted on, but nothing applied
+    QCOMPARE(rn.dim, 0);
+  }
+  void badConfigurationThrows() {
+    Belief b;
+    b.P = Covariance::Identity();
+    b.P(3, 3) = -1.0;
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Drkf(config(), geo::LocalFrame(49.0, -123.0), b, 0));
+    DrkfConfig c = config();
+    c.gateProbability = 1.0;
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Drkf(c, geo::LocalFrame(49.0, -123.0), Belief{}, 0));
+  }
+  void groundOutputs() {
+    Belief b;
+    b.x.setZero();
+    b.x[kCurX] = 0.5;
+    b.x[kVelX] = 3.0;
+    b.P = Covariance::Identity();
+    b.P(kCurX, kVelX) = b.P(kVelX, kCurX) = 0.25;
+    const auto g = groundStateOf(b);
+    QCOMPARE(g[2], 3.5);
+    QCOMPARE(groundCovarianceOf(b)(2, 2), 2.5);  // 1 + 1 + 2 * 0.25
+  }
+};
+
+QTEST_APPLESS_MAIN(TestDrkf)
+#include "tst_drkf.moc"

@@ -1,0 +1,108 @@
+#include <QTest>
+
+#include "common/angles.h"
+#include "sim/own_ship_truth.h"
+
+using namespace reckoner;
+using namespace reckoner::sim;
+
+namespace {
+const est::GaussMarkov kNoCurrent{0.0, 1.0};
+}
+
+class TestOwnShipTruth : public QObject {
+  Q_OBJECT
+ private slots:
+  void tableTwoTurnKeepsSpeedAndTurnsClockwise() {
+    // GIVEN Table II test 4 (7, 7) m/s turning 4.01 deg/s from 80 s WHEN time passes THEN the speed is
+    // kept and the heading increases by the rate.
+    OwnShipSpec spec;
+    spec.initialVelocityMps = {7.0, 7.0};
+    spec.schedule.push_back({80 * kMicrosPerSecond, std::nullopt, degToRad(4.01)});
+    OwnShipTruthModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    m.advanceTo(80 * kMicrosPerSecond);
+    QVERIFY(std::abs(m.state().position.xM - 560.0) < 1e-6);  // straight at 7 m/s for 80 s
+    QVERIFY(std::abs(m.state().headingRad - degToRad(45.0)) < 1e-12);
+    m.advanceTo(90 * kMicrosPerSecond);
+    const auto& s = m.state();
+    QVERIFY(std::abs(std::hypot(s.waterVxMps, s.waterVyMps) - std::hypot(7.0, 7.0)) < 1e-9);
+    QVERIFY(std::abs(angleDiff(s.headingRad, degToRad(45.0 + 40.1))) < 1e-9);
+    // Centripetal acceleration |v| w, perpendicular to the velocity.
+    QVERIFY(std::abs(std::hypot(s.accelXMps2, s.accelYMps2) - std::hypot(7.0, 7.0) * degToRad(4.01)) < 1e-9);
+    QVERIFY(std::abs(s.accelXMps2 * s.waterVxMps + s.accelYMps2 * s.waterVyMps) < 1e-9);
+    // A full circle returns to the start of the turn (trapezoidal integration: centimetres).
+    const double period = 360.0 / 4.01;
+    m.advanceTo(fromSeconds(80.0 + period));
+    QVERIFY2(std::hypot(m.state().position.xM - 560.0, m.state().position.yM - 560.0) < 0.05,
+             qPrintable(QString("%1 %2").arg(m.state().position.xM).arg(m.state().position.yM)));
+  }
+  void footnoteRotationExactly() {
+    // Table II footnote: Vx' = cos(w d) Vx + sin(w d) Vy, Vy' = cos(w d) Vy - sin(w d) Vx.
+    OwnShipSpec spec;
+    spec.initialVelocityMps = {3.0, -2.0};
+    spec.schedule.push_back({0, std::nullopt, 0.05});
+    OwnShipTruthModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    m.advanceTo(kMicrosPerSecond);
+    const double c = std::cos(0.05), s = std::sin(0.05);
+    QVERIFY(std::abs(m.state().waterVxMps - (c * 3.0 + s * -2.0)) < 1e-12);
+    QVERIFY(std::abs(m.state().waterVyMps - (c * -2.0 - s * 3.0)) < 1e-12);
+  }
+  void velocityRampAtMaximumAcceleration() {
+    OwnShipSpec spec;
+    spec.initialHeadingRad = degToRad(45.0);
+    spec.maxAccelerationMps2 = 0.5;
+    spec.schedule.push_back({104 * kMicrosPerSecond, std::array<double, 2>{5.0, 5.0}, std::nullopt});
+    OwnShipTruthModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    m.advanceTo(104 * kMicrosPerSecond);
+    QCOMPARE(m.state().waterVxMps, 0.0);
+    QVERIFY(std::abs(m.state().headingRad - degToRad(45.0)) < 1e-12);  // held while stopped
+    m.advanceTo(110 * kMicrosPerSecond);
+    QVERIFY(std::abs(std::hypot(m.state().waterVxMps, m.state().waterVyMps) - 3.0) < 1e-9);
+    QVERIFY(std::abs(std::hypot(m.state().accelXMps2, m.state().accelYMps2) - 0.5) < 1e-9);
+    m.advanceTo(120 * kMicrosPerSecond);
+    QVERIFY(std::abs(m.state().waterVxMps - 5.0) < 1e-12);
+    QCOMPARE(m.state().accelXMps2, 0.0);
+  }
+  void instantaneousWhenNoLimit() {
+    OwnShipSpec spec;
+    spec.schedule.push_back({10 * kMicrosPerSecond, std::array<double, 2>{1.0, 2.0}, std::nullopt});
+    OwnShipTruthModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    m.advanceTo(10 * kMicrosPerSecond);
+    QCOMPARE(m.state().waterVxMps, 1.0);
+    QCOMPARE(m.state().waterVyMps, 2.0);
+  }
+  void currentIsStationaryGaussMarkov() {
+    // GIVEN a current with sigma 0.5 m/s WHEN sampled over many seeds at two times THEN its variance
+    // is sigma^2 both times and its correlation exp(-beta dt).
+    const est::GaussMarkov current{0.5, 0.1};
+    constexpr int n = 4000;
+    double v0 = 0, v1 = 0, c01 = 0;
+    for (int seed = 0; seed < n; ++seed) {
+      OwnShipTruthModel m(OwnShipSpec{}, current, Rng(static_cast<std::uint64_t>(seed), kStreamTruth));
+      const double a = m.state().currentXMps;
+      m.advanceTo(5 * kMicrosPerSecond);
+      const double b = m.state().currentXMps;
+      v0 += a * a;
+      v1 += b * b;
+      c01 += a * b;
+      // Position integrates the current: the ship has no water velocity.
+      QCOMPARE(m.state().waterVxMps, 0.0);
+    }
+    QVERIFY(std::abs(v0 / n - 0.25) < 0.02);
+    QVERIFY(std::abs(v1 / n - 0.25) < 0.02);
+    QVERIFY(std::abs(c01 / v0 - std::exp(-0.5)) < 0.04);
+  }
+  void sameSeedSameTruth() {
+    OwnShipSpec spec;
+    spec.initialVelocityMps = {4.0, 1.0};
+    spec.randomAcceleration = est::GaussMarkov{0.1, 0.2};
+    OwnShipTruthModel a(spec, {0.3, 0.2}, Rng(7, kStreamTruth)), b(spec, {0.3, 0.2}, Rng(7, kStreamTruth));
+    a.advanceTo(fromSeconds(123.4));
+    for (int k = 1; k <= 1234; ++k) b.advanceTo(k * 100'000);
+    QCOMPARE(a.state().position.xM, b.state().position.xM);
+    QCOMPARE(a.state().accelYMps2, b.state().accelYMps2);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestOwnShipTruth)
+#include "tst_own_ship_truth.moc"

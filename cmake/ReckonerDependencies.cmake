@@ -12,7 +12,11 @@ if(NOT TARGET reckoner::GeographicLib)
     INTERFACE_LINK_LIBRARIES "${GeographicLib_LIBRARIES}")
 endif()
 
-find_package(Qt6 6.4 REQUIRED COMPONENTS Core Test)
+# Widgets, Charts and GDAL are for ui/ and charts/; finding them already makes every configure prove
+# that the bootstrap installs them (Debian's Qt6 Charts also needs libqt6opengl6-dev and
+# libxkbcommon-dev, a known trap).
+find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets Charts Test)
+find_package(GDAL 3.6 REQUIRED)
 
 if(RECKONER_BUILD_BENCH)
   find_package(benchmark REQUIRED)

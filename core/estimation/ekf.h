@@ -76,11 +76,27 @@ struct LinearisedMeasurement {
   BMatCols<N, MaxM> PHt;
   BMat<MaxM> S;
 
-  /// Fills PHt and S from H, R and the prior covariance P.
+  /// Fills PHt and S from H, R and the prior covariance P. Measurement Jacobians are sparse (1 to 4
+  /// non-zeros in a row of 11 for the DRKF), so both products visit only H's non-zeros.
   void computeInnovationCovariance(const Mat<N>& P) {
-    PHt = P.lazyProduct(H.transpose());
-    S = H.lazyProduct(PHt) + R;
-    symmetrise(S);
+    const auto m = H.rows();
+    PHt.resize(N, m);
+    S.resize(m, m);
+    for (Eigen::Index r = 0; r < m; ++r) {
+      PHt.col(r).setZero();
+      for (int j = 0; j < N; ++j)
+        if (H(r, j) != 0.0) PHt.col(r) += H(r, j) * P.col(j);
+    }
+    for (Eigen::Index r = 0; r < m; ++r) {
+      for (Eigen::Index c = 0; c <= r; ++c) {
+        double v = R(r, c);
+        for (int j = 0; j < N; ++j)
+          if (H(r, j) != 0.0) v += H(r, j) * PHt(j, c);
+        S(r, c) = v;
+        S(c, r) = v;
+      }
+    }
+    symmetrise(S);  // R may be slightly asymmetric; S is used symmetric
   }
 };
 
@@ -116,8 +132,10 @@ UpdateReport<MaxM> updateJoseph(Gaussian<N>& g, const LinearisedMeasurement<N, M
   }
   const BMatCols<N, MaxM> K = ldlt.solve(m.PHt.transpose()).transpose();
   const Vec<N> x = g.x + K * m.y;
-  Mat<N> A = -K.lazyProduct(m.H);
-  A.diagonal().array() += 1.0;
+  Mat<N> A = Mat<N>::Identity();  // I - K H, visiting H's non-zeros
+  for (Eigen::Index r = 0; r < m.H.rows(); ++r)
+    for (int j = 0; j < N; ++j)
+      if (m.H(r, j) != 0.0) A.col(j) -= m.H(r, j) * K.col(r);
   const Mat<N> AP = g.P - K.lazyProduct(m.PHt.transpose());  // (I - K H) P, reusing P H^T
   const BMatCols<N, MaxM> KR = K.lazyProduct(m.R);
   Mat<N> P = symmetricProduct<N>(AP, A) + symmetricProduct<N>(KR, K);

@@ -5,6 +5,7 @@
 // Joseph update, so one bad sensor does not reject the others.
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 #include "estimation/ekf.h"
 
@@ -124,10 +125,25 @@ class MeasurementStack {
   [[nodiscard]] const BlockReport& block(int i) const { return blocks_[i]; }
 
  private:
+  /// y^T S^-1 y by LDLT; fixed-size factorisations for the usual one- and two-row blocks.
   template <class Y, class S>
   static double blockNis(const Y& y, const S& Sb) {
-    const BVec<MaxM> yb = y;
-    const Eigen::LDLT<BMat<MaxM>> ldlt(Sb);
+    switch (y.rows()) {
+      case 1:
+        return fixedNis<1>(y, Sb);
+      case 2:
+        return fixedNis<2>(y, Sb);
+      default:
+        return fixedNis<Eigen::Dynamic>(y, Sb);
+    }
+  }
+  template <int D, class Y, class S>
+  static double fixedNis(const Y& y, const S& Sb) {
+    using V = std::conditional_t<D == Eigen::Dynamic, BVec<MaxM>, Vec<D>>;
+    using M = std::conditional_t<D == Eigen::Dynamic, BMat<MaxM>, Mat<D>>;
+    const V yb = y;
+    const M Sm = Sb;
+    const Eigen::LDLT<M> ldlt(Sm);
     if (!ldltPositiveDefinite(ldlt)) return std::numeric_limits<double>::quiet_NaN();
     return yb.dot(ldlt.solve(yb));
   }

@@ -68,13 +68,12 @@ class SparseTransition {
   int count_ = 0;
 };
 
-/// Prediction with a sparse transition: x <- Phi x, P <- Phi P Phi^T + Q (symmetric by construction).
+/// Prediction with a sparse transition: x <- Phi x, P <- Phi P Phi^T + Q (Q symmetric).
 /// Returns false and leaves g unchanged if the result is not finite.
 template <int N>
 bool predictLinear(Gaussian<N>& g, const SparseTransition<N>& Phi, const Mat<N>& Q) {
   const Vec<N> x = Phi.apply(g.x);
-  Mat<N> P = Phi.congruence(g.P) + Q;
-  symmetrise(P);
+  const Mat<N> P = Phi.congruence(g.P) + Q;  // congruence() is exactly symmetric; Q is symmetric
   if (!x.allFinite() || !P.allFinite()) return false;
   g.x = x;
   g.P = P;

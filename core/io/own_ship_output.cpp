@@ -99,6 +99,7 @@ std::string runSummaryJson(const sim::Scenario& s, const sim::RunResult& run,
   w.endObject();
   w.key("predict_failures").value(static_cast<std::int64_t>(run.counters.predictFailures));
   w.key("stale_samples").value(static_cast<std::int64_t>(run.counters.staleSamples));
+  w.key("overflow_samples").value(static_cast<std::int64_t>(run.counters.overflowSamples));
   w.endObject();
   return w.str();
 }

@@ -333,6 +333,7 @@ sim::Scenario parseScenario(std::string_view text, const std::string& sourceName
   top.finish();
   if (const std::string problem = sim::checkScenario(s); !problem.empty()) {
     const auto colon = problem.find(": ");
+    if (colon == std::string::npos) throw InputError(sourceName, 0, "", problem);
     throw InputError(sourceName, 0, problem.substr(0, colon), problem.substr(colon + 2));
   }
   return s;

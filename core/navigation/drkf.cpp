@@ -177,7 +177,7 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
       belief_.P(i, i) += delta;
       belief_.P(j, j) += delta;
     }
-    if (!stack.add(b, model, x, z, R, gate, forced)) ++counters_.staleSamples;
+    if (!stack.add(b, model, x, z, R, gate, forced)) ++counters_.overflowSamples;
   };
 
   for (const auto& sample : samples) {

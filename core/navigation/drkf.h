@@ -52,7 +52,8 @@ struct DrkfUpdateReport {
 struct DrkfCounters {
   std::array<std::array<long, 8>, kDrkfBlockCount> byStatus{};  ///< [block][UpdateStatus]
   long predictFailures = 0;
-  long staleSamples = 0;
+  long staleSamples = 0;     ///< stamped other than their epoch, or older than the filter
+  long overflowSamples = 0;  ///< beyond an epoch's capacity (kMaxBlocksPerEpoch blocks, 8 rows)
 };
 
 /// Initial uncertainty: position and velocity from the caller, every Gauss-Markov state at its

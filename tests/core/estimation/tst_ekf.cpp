@@ -107,6 +107,27 @@ class TestEkf : public QObject {
     QVERIFY(!predictLinear<2>(g, Phi, Mat<2>::Zero()));
     QVERIFY(g.x == before.x && g.P == before.P);
   }
+  void nonlinearPredictUsesTheModelsJacobian() {
+    // A 2-state model x0' = x0 + dt sin(x1), x1' = x1: f for the mean, its Jacobian for the covariance.
+    struct Pendulumish {
+      Vec<2> f(const Vec<2>& x, double dt) const { return {x[0] + dt * std::sin(x[1]), x[1]}; }
+      Mat<2> transition(const Vec<2>& x, double dt) const {
+        Mat<2> F;
+        F << 1.0, dt * std::cos(x[1]), 0.0, 1.0;
+        return F;
+      }
+      Mat<2> noise(double dt) const { return Mat<2>::Identity() * 0.01 * dt; }
+    };
+    Gaussian<2> g;
+    g.x << 1.0, 0.5;
+    g.P << 0.2, 0.05, 0.05, 0.1;
+    const Pendulumish m;
+    const Mat<2> F = m.transition(g.x, 2.0);
+    const Mat<2> expectedP = F * g.P * F.transpose() + m.noise(2.0);
+    QVERIFY(predict(g, m, 2.0));
+    QVERIFY(std::abs(g.x[0] - (1.0 + 2.0 * std::sin(0.5))) < 1e-15);
+    QVERIFY((g.P - expectedP).norm() < 1e-15);
+  }
   void sparseTransitionMatchesDense() {
     Rng rng(9, 9);
     Mat<6> Phi = Mat<6>::Zero();

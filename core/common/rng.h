@@ -73,6 +73,8 @@ enum RngStream : std::uint64_t {
   kStreamSpeedlog = 4,
   kStreamGyro = 5,
   kStreamFilterInit = 6,
+  kStreamRadar = 7,
+  kStreamTargetBase = 1000,  ///< target i uses kStreamTargetBase + i
 };
 
 }  // namespace reckoner

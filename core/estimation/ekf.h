@@ -51,6 +51,15 @@ bool ldltPositiveDefinite(const Ldlt& ldlt) {
   return maxD > 0.0 && d.minCoeff() > maxD * 1e-14;
 }
 
+/// Every LDLT pivot strictly positive: the test for a covariance given at a boundary (an initial
+/// belief), whose diagonal may span many orders of magnitude (a Gauss-Markov state with sigma 0).
+template <class Derived>
+bool isPositiveDefinite(const Eigen::MatrixBase<Derived>& P) {
+  if (!P.allFinite() || P.rows() == 0) return false;
+  const Eigen::LDLT<typename Derived::PlainObject> ldlt(P);
+  return ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 0.0;
+}
+
 /// A B^T for a product known to be symmetric (e.g. A P A^T with AP = A P): computes the lower triangle
 /// (N(N+1)/2 dot products) and mirrors it.
 template <int N, class DA, class DB>

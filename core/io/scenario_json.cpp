@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/angles.h"
+#include "common/units.h"
 #include "io/json.h"
 
 namespace reckoner::io {
@@ -208,16 +209,32 @@ void readSensors(Fields& top, sim::Scenario& s) {
     readPowerSchedule(f, s.gyro.power, dur);
     f.finish();
   }
+  if (const JsonValue* v = sensorsF.get("radar")) {
+    Fields f(top.file(), *v, "sensors.radar");
+    auto& r = s.radar;
+    r.fitted = true;
+    r.sweepPeriodS = f.numberOr("sweep_period_s", r.sweepPeriodS, Fields::Check::Positive);
+    r.rangeSdM = f.number("range_sd_m", Fields::Check::Positive);
+    r.bearingSdRad = degToRad(f.number("bearing_sd_deg", Fields::Check::Positive));
+    r.maxRangeM = nmToMetres(f.numberOr("max_range_nm", metresToNm(r.maxRangeM), Fields::Check::Positive));
+    if (const JsonValue* pd = f.get("detection_probability")) {
+      r.detectionProbability =
+          f.checkedNumber(*pd, f.pathOf("detection_probability"), Fields::Check::NonNegative);
+      if (r.detectionProbability > 1.0) f.fail(*pd, f.pathOf("detection_probability"), "must lie in [0, 1]");
+    }
+    readPowerSchedule(f, r.power, dur);
+    f.finish();
+  }
   for (const auto& [key, value] : sensorsJson.object) {
-    if (key != "gps" && key != "loran_c" && key != "speedlog" && key != "gyro")
+    if (key != "gps" && key != "loran_c" && key != "speedlog" && key != "gyro" && key != "radar")
       sensorsF.fail(value, "sensors." + key,
-                    "unknown sensor '" + key + "' (known: gps, loran_c, speedlog, gyro)");
+                    "unknown sensor '" + key + "' (known: gps, loran_c, speedlog, gyro, radar)");
   }
 }
 
-void readOwnShip(Fields& top, sim::Scenario& s) {
-  Fields f(top.file(), top.require("own_ship"), "own_ship");
-  auto& o = s.ownShip;
+/// Motion of a vessel: position, velocity, heading, acceleration limit, random acceleration, schedule.
+/// Reads the motion fields of f (the caller finishes f).
+void readMotion(Fields& f, sim::VesselMotionSpec& o, TimeUs durationUs) {
   const auto p = f.pair("position_m", {0.0, 0.0});
   o.initialPosition = {p[0], p[1]};
   o.initialVelocityMps = f.pair("velocity_mps", {0.0, 0.0});
@@ -225,9 +242,8 @@ void readOwnShip(Fields& top, sim::Scenario& s) {
     o.initialHeadingRad = degToRad(f.checkedNumber(*h, f.pathOf("heading_deg"), Fields::Check::Any));
   o.maxAccelerationMps2 = f.numberOr("max_acceleration_mps2", 0.0, Fields::Check::NonNegative);
   if (const JsonValue* ra = f.get("random_acceleration")) {
-    Fields g(top.file(), *ra, f.pathOf("random_acceleration"));
-    o.randomAcceleration = est::GaussMarkov{g.number("sigma_mps2", Fields::Check::NonNegative),
-                                            g.number("beta_per_s", Fields::Check::Positive)};
+    Fields g(f.file(), *ra, f.pathOf("random_acceleration"));
+    o.randomAcceleration = gaussMarkov(g, "variance_m2_s4", "sigma_mps2");
     g.finish();
   }
   if (const JsonValue* sched = f.get("schedule")) {
@@ -235,9 +251,9 @@ void readOwnShip(Fields& top, sim::Scenario& s) {
     if (!sched->isArray()) f.fail(*sched, path, "must be an array of events");
     TimeUs last = -1;
     for (std::size_t i = 0; i < sched->array.size(); ++i) {
-      Fields e(top.file(), sched->array[i], path + "[" + std::to_string(i) + "]");
+      Fields e(f.file(), sched->array[i], path + "[" + std::to_string(i) + "]");
       sim::KinematicEvent ev;
-      ev.timeUs = timeField(e, "t_s", s.durationUs);
+      ev.timeUs = timeField(e, "t_s", durationUs);
       if (ev.timeUs <= last) e.fail(*e.get("t_s"), e.pathOf("t_s"), "event times must increase");
       last = ev.timeUs;
       if (e.get("velocity_mps")) ev.setVelocityMps = e.pair("velocity_mps", {});
@@ -249,6 +265,71 @@ void readOwnShip(Fields& top, sim::Scenario& s) {
       e.finish();
       o.schedule.push_back(ev);
     }
+  }
+}
+
+void readOwnShip(Fields& top, sim::Scenario& s) {
+  Fields f(top.file(), top.require("own_ship"), "own_ship");
+  readMotion(f, s.ownShip, s.durationUs);
+  f.finish();
+}
+
+void readTargets(Fields& top, sim::Scenario& s) {
+  const JsonValue* v = top.get("targets");
+  if (!v) return;
+  if (!v->isArray()) top.fail(*v, "targets", "must be an array of targets");
+  for (std::size_t i = 0; i < v->array.size(); ++i) {
+    const std::string path = "targets[" + std::to_string(i) + "]";
+    Fields f(top.file(), v->array[i], path);
+    sim::TargetSpec t;
+    const JsonValue& id = f.require("id");
+    if (!id.isNumber() || id.number < 0 || id.number > 1e9 || std::floor(id.number) != id.number)
+      f.fail(id, f.pathOf("id"), "must be a non-negative integer");
+    t.id = static_cast<int>(id.number);
+    for (const auto& other : s.targets)
+      if (other.id == t.id)
+        f.fail(id, f.pathOf("id"), "id " + std::to_string(t.id) + " is used by another target");
+    t.name = f.stringOr("name", "target " + std::to_string(t.id));
+    readMotion(f, t.motion, s.durationUs);
+    f.finish();
+    s.targets.push_back(std::move(t));
+  }
+}
+
+void readTracker(Fields& top, sim::Scenario& s) {
+  const JsonValue* v = top.get("tracker");
+  if (!v) return;
+  Fields f(top.file(), *v, "tracker");
+  auto& tr = s.tracker;
+  if (const JsonValue* a = f.get("own_acceleration")) {
+    Fields g(top.file(), *a, "tracker.own_acceleration");
+    tr.ownAcceleration = gaussMarkov(g, "variance_m2_s4", "sigma_mps2");
+    g.finish();
+  }
+  if (const JsonValue* a = f.get("target_acceleration")) {
+    Fields g(top.file(), *a, "tracker.target_acceleration");
+    tr.targetAcceleration = gaussMarkov(g, "variance_m2_s4", "sigma_mps2");
+    g.finish();
+  }
+  if (const JsonValue* feed = f.get("own_ship_feed")) {
+    if (feed->isString() && feed->string == "marginal")
+      tr.feed = track::OwnShipFeed::Marginal;
+    else if (feed->isString() && feed->string == "measurement")
+      tr.feed = track::OwnShipFeed::Measurement;
+    else
+      f.fail(*feed, "tracker.own_ship_feed",
+             "must be \"marginal\" (consistent) or \"measurement\" (seed 000)");
+  }
+  if (const JsonValue* g = f.get("gate_probability")) {
+    tr.gateProbability = f.checkedNumber(*g, f.pathOf("gate_probability"), Fields::Check::NonNegative);
+    if (!(tr.gateProbability < 1.0))
+      f.fail(*g, f.pathOf("gate_probability"), "must be in [0, 1) (0 disables gating)");
+  }
+  tr.initialSpeedSdMps = f.numberOr("initial_speed_sd_mps", tr.initialSpeedSdMps, Fields::Check::Positive);
+  if (const JsonValue* c = f.get("capacity")) {
+    if (!c->isNumber() || c->number < 1 || c->number > 1e6 || std::floor(c->number) != c->number)
+      f.fail(*c, "tracker.capacity", "must be an integer in [1, 1000000]");
+    tr.capacity = static_cast<std::size_t>(c->number);
   }
   f.finish();
 }
@@ -329,7 +410,9 @@ sim::Scenario parseScenario(std::string_view text, const std::string& sourceName
   }
   readOwnShip(top, s);
   readSensors(top, s);
+  readTargets(top, s);
   readFilter(top, s);
+  readTracker(top, s);
   top.finish();
   if (const std::string problem = sim::checkScenario(s); !problem.empty()) {
     const auto colon = problem.find(": ");

@@ -75,17 +75,18 @@ Covariance initialCovariance(const ProcessParams& p, double positionSdM, double 
   State sd;
   sd[kPosX] = sd[kPosY] = positionSdM;
   sd[kVelX] = sd[kVelY] = velocitySdMps;
-  sd[kCurX] = sd[kCurY] = p.current.sigma;
-  sd[kAccX] = sd[kAccY] = p.acceleration.sigma;
-  sd[kLoranX] = sd[kLoranY] = p.loranError.sigma;
-  sd[kLogBias] = p.speedlogError.sigma;
+  // A Gauss-Markov state with sigma 0 is known to be 0; a tiny floor keeps P positive definite.
+  constexpr double kFloor = 1e-6;
+  sd[kCurX] = sd[kCurY] = std::max(p.current.sigma, kFloor);
+  sd[kAccX] = sd[kAccY] = std::max(p.acceleration.sigma, kFloor);
+  sd[kLoranX] = sd[kLoranY] = std::max(p.loranError.sigma, kFloor);
+  sd[kLogBias] = std::max(p.speedlogError.sigma, kFloor);
   return sd.cwiseAbs2().asDiagonal();
 }
 
 Drkf::Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const Belief& initial, TimeUs t0)
     : config_(config), frame_(frame), process_(config.process), belief_(initial), timeUs_(t0) {
-  if (!initial.x.allFinite() || !initial.P.allFinite() ||
-      !est::ldltPositiveDefinite(Eigen::LDLT<Covariance>(initial.P))) {
+  if (!initial.x.allFinite() || !est::isPositiveDefinite(initial.P)) {
     throw std::invalid_argument("DRKF: initial state must be finite with a positive definite covariance");
   }
   if (!(config.gateProbability >= 0.0 && config.gateProbability < 1.0))

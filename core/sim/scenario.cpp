@@ -64,6 +64,30 @@ std::string checkScenario(const Scenario& s) {
     return "sensors.speedlog: rate and white variance must be positive, Markov sigma >= 0 and beta > 0";
   if (s.gyro.fitted && (!positive(s.gyro.rateHz) || !positive(s.gyro.sdRad)))
     return "sensors.gyro: rate and sd must be positive";
+  const sensors::RadarSpec& r = s.radar;
+  if (r.fitted &&
+      (!positive(r.sweepPeriodS) || !positive(r.rangeSdM) || !positive(r.bearingSdRad) ||
+       !positive(r.maxRangeM) || !(r.detectionProbability >= 0.0 && r.detectionProbability <= 1.0)))
+    return "sensors.radar: period, sds and maximum range must be positive, detection probability in [0, 1]";
+  for (std::size_t i = 0; i < s.targets.size(); ++i) {
+    const auto& t = s.targets[i];
+    if (t.id < 0) return "targets: ids must be >= 0";
+    for (std::size_t j = 0; j < i; ++j)
+      if (s.targets[j].id == t.id) return "targets: id " + std::to_string(t.id) + " used twice";
+    if (!nonNegative(t.motion.maxAccelerationMps2)) return "targets: max_acceleration_mps2 must be >= 0";
+    if (t.motion.randomAcceleration && !t.motion.randomAcceleration->valid())
+      return "targets: random_acceleration sigma must be >= 0 and beta > 0";
+    for (std::size_t k = 1; k < t.motion.schedule.size(); ++k)
+      if (t.motion.schedule[k].timeUs <= t.motion.schedule[k - 1].timeUs)
+        return "targets: schedule times must increase";
+  }
+  const TrackerSpec& tr = s.tracker;
+  if (!tr.ownAcceleration.valid() || !tr.targetAcceleration.valid())
+    return "tracker: accelerations need sigma >= 0 and beta > 0";
+  if (!(tr.gateProbability >= 0.0 && tr.gateProbability < 1.0))
+    return "tracker.gate_probability: must be in [0, 1)";
+  if (!positive(tr.initialSpeedSdMps)) return "tracker.initial_speed_sd_mps: must be positive";
+  if (tr.capacity == 0) return "tracker.capacity: must be positive";
   const FilterSpec& f = s.filter;
   if (!f.acceleration.valid()) return "filter.acceleration: sigma must be >= 0 and beta > 0";
   if (f.current && !f.current->valid()) return "filter.current: sigma must be >= 0 and beta > 0";

@@ -10,6 +10,8 @@
 #include "estimation/gauss_markov.h"
 #include "geo/local_frame.h"
 #include "sensors/own_ship_sensor_specs.h"
+#include "sensors/radar.h"
+#include "tracking/ttkf.h"
 
 namespace reckoner::sim {
 
@@ -20,7 +22,7 @@ struct KinematicEvent {
   std::optional<double> turnRateRadPerS;                ///< rotation of the velocity, clockwise positive
 };
 
-struct OwnShipSpec {
+struct VesselMotionSpec {
   geo::GridPoint initialPosition;              ///< grid metres
   std::array<double, 2> initialVelocityMps{};  ///< through water, grid (vx, vy)
   std::optional<double> initialHeadingRad;     ///< grid; default: bearing of the first non-zero velocity
@@ -30,6 +32,23 @@ struct OwnShipSpec {
   /// Optional Gauss-Markov acceleration added to the scheduled motion (truth drawn from the filter's
   /// own model for consistency tests).
   std::optional<est::GaussMarkov> randomAcceleration;
+};
+
+/// A radar target: its motion is over ground (no current).
+struct TargetSpec {
+  int id = 0;  ///< unique, >= 0
+  std::string name;
+  VesselMotionSpec motion;
+};
+
+/// The target trackers (TTKFs) and their bank.
+struct TrackerSpec {
+  est::GaussMarkov ownAcceleration{0.5, 1.0};     ///< Table III "Ves" sigma (m/s^2), beta
+  est::GaussMarkov targetAcceleration{0.5, 1.0};  ///< Table III "Tgt" sigma (m/s^2), beta
+  track::OwnShipFeed feed = track::OwnShipFeed::Marginal;
+  double gateProbability = 0.9999;
+  double initialSpeedSdMps = 10.0;
+  std::size_t capacity = 1000;
 };
 
 struct FilterSpec {
@@ -49,13 +68,16 @@ struct Scenario {
   TimeUs durationUs = 0;
   TimeUs stepUs = kMicrosPerSecond;  ///< filter output cycle
   std::uint64_t seed = 1;
-  OwnShipSpec ownShip;
+  VesselMotionSpec ownShip;
   est::GaussMarkov current{0.0, 1.0};  ///< ocean current, sigma m/s, beta 1/s
   sensors::GpsSpec gps;
   sensors::LoranSpec loran;
   sensors::SpeedlogSpec speedlog;
   sensors::GyroSpec gyro;
+  sensors::RadarSpec radar;
+  std::vector<TargetSpec> targets;
   FilterSpec filter;
+  TrackerSpec tracker;
 };
 
 /// Which own-ship sensors are fitted and powered, and the speedlog mode.

@@ -48,13 +48,47 @@ OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo) {
   return r;
 }
 
+void appendTrackRows(const SimFrame& f, const Scenario& scenario, std::vector<TrackRow>& out) {
+  namespace tk = est::ttkf;
+  for (const auto& t : f.tracks) {
+    std::size_t i = 0;
+    while (i < scenario.targets.size() && scenario.targets[i].id != t.targetId) ++i;
+    if (i == scenario.targets.size()) continue;
+    const VesselTruth& truth = f.targets[i];
+    TrackRow r;
+    r.timeUs = f.timeUs;
+    r.trackId = t.trackId;
+    r.targetId = t.targetId;
+    r.trueXM = truth.position.xM;
+    r.trueYM = truth.position.yM;
+    r.trueVxMps = truth.groundVxMps();
+    r.trueVyMps = truth.groundVyMps();
+    const auto& x = t.estimate.x;
+    const auto& P = t.estimate.P;
+    r.estXM = x[tk::kTgtX];
+    r.estYM = x[tk::kTgtY];
+    r.estVxMps = x[tk::kTgtVx];
+    r.estVyMps = x[tk::kTgtVy];
+    r.sdXM = std::sqrt(P(tk::kTgtX, tk::kTgtX));
+    r.sdYM = std::sqrt(P(tk::kTgtY, tk::kTgtY));
+    r.sdVxMps = std::sqrt(P(tk::kTgtVx, tk::kTgtVx));
+    r.sdVyMps = std::sqrt(P(tk::kTgtVy, tk::kTgtVy));
+    r.nees = est::nees<tk::kStateDim>(trueTrackState(f.truth, truth) - x, P);
+    out.push_back(r);
+  }
+}
+
 RunResult runScenario(const Scenario& scenario, std::uint64_t seed) {
   const auto start = std::chrono::steady_clock::now();
   SimulationEngine engine(scenario, seed);
   RunResult result;
   result.seed = seed;
   result.rows.reserve(static_cast<std::size_t>(scenario.durationUs / scenario.stepUs + 1));
-  while (!engine.finished()) result.rows.push_back(makeRow(engine.step(), engine.frame()));
+  while (!engine.finished()) {
+    const SimFrame f = engine.step();
+    result.rows.push_back(makeRow(f, engine.frame()));
+    appendTrackRows(f, scenario, result.trackRows);
+  }
   result.counters = engine.drkf().counters();
   result.wallTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -30,9 +30,24 @@ struct OwnShipRow {
 
 OwnShipRow makeRow(const SimFrame& frame, const geo::LocalFrame& geo);
 
+/// One track at one output cycle: its target's truth and the TTKF estimate (target part).
+struct TrackRow {
+  TimeUs timeUs = 0;
+  int trackId = 0;
+  int targetId = -1;
+  double trueXM = 0, trueYM = 0, trueVxMps = 0, trueVyMps = 0;
+  double estXM = 0, estYM = 0, estVxMps = 0, estVyMps = 0;
+  double sdXM = 0, sdYM = 0, sdVxMps = 0, sdVyMps = 0;
+  double nees = 0;  ///< all 12 TTKF states (own ship and target)
+};
+
+/// Rows of every track whose target is in the frame.
+void appendTrackRows(const SimFrame& frame, const Scenario& scenario, std::vector<TrackRow>& out);
+
 struct RunResult {
   std::uint64_t seed = 0;
   std::vector<OwnShipRow> rows;
+  std::vector<TrackRow> trackRows;
   nav::DrkfCounters counters;
   double wallTimeS = 0.0;
 };

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace reckoner::sim {
 namespace {
 using namespace est::drkf;
 using sensors::SensorId;
+constexpr TimeUs kNever = std::numeric_limits<TimeUs>::max();
 
 TimeUs periodOf(double rateHz) {
   return std::max<TimeUs>(1, fromSeconds(1.0 / rateHz));
@@ -17,6 +19,15 @@ const Scenario& checked(const Scenario& s) {
   if (const std::string problem = checkScenario(s); !problem.empty())
     throw std::invalid_argument("scenario '" + s.name + "': " + problem);
   return s;
+}
+
+track::TtkfConfig ttkfConfigFor(const Scenario& s) {
+  track::TtkfConfig c;
+  c.process = {s.tracker.ownAcceleration, s.tracker.targetAcceleration};
+  c.gateProbability = s.tracker.gateProbability;
+  c.feed = s.tracker.feed;
+  c.initialSpeedSdMps = s.tracker.initialSpeedSdMps;
+  return c;
 }
 }  // namespace
 
@@ -32,6 +43,24 @@ nav::DrkfConfig drkfConfigFor(const Scenario& s) {
   return c;
 }
 
+est::ttkf::State trueTrackState(const VesselTruth& own, const VesselTruth& target) {
+  namespace tk = est::ttkf;
+  tk::State x;
+  x[tk::kOwnX] = own.position.xM;
+  x[tk::kOwnY] = own.position.yM;
+  x[tk::kOwnVx] = own.groundVxMps();
+  x[tk::kOwnVy] = own.groundVyMps();
+  x[tk::kOwnAx] = own.accelXMps2;
+  x[tk::kOwnAy] = own.accelYMps2;
+  x[tk::kTgtX] = target.position.xM;
+  x[tk::kTgtY] = target.position.yM;
+  x[tk::kTgtVx] = target.groundVxMps();
+  x[tk::kTgtVy] = target.groundVyMps();
+  x[tk::kTgtAx] = target.accelXMps2;
+  x[tk::kTgtAy] = target.accelYMps2;
+  return x;
+}
+
 SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
     : scenario_(checked(scenario)),
       frame_(scenario.origin.latDeg, scenario.origin.lonDeg),
@@ -39,7 +68,8 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
       gps_(scenario.gps, Rng(seed, kStreamGps)),
       loran_(scenario.loran, Rng(seed, kStreamLoran), 0),
       speedlog_(scenario.speedlog, Rng(seed, kStreamSpeedlog), 0),
-      gyro_(scenario.gyro, Rng(seed, kStreamGyro)) {
+      gyro_(scenario.gyro, Rng(seed, kStreamGyro)),
+      radar_(scenario.radar, Rng(seed, kStreamRadar)) {
   const std::array<std::pair<bool, double>, sensors::kOwnShipSensorCount> rates{
       {{scenario.gps.fitted, scenario.gps.rateHz},
        {scenario.loran.fitted, scenario.loran.rateHz},
@@ -58,6 +88,13 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
   initial.x = trueState();
   for (int i = 0; i < kStateDim; ++i) initial.x[i] += initRng.normal(0.0, std::sqrt(initial.P(i, i)));
   drkf_.emplace(config, frame_, initial, 0);
+
+  const est::GaussMarkov noCurrent{0.0, 1.0};
+  targets_.reserve(scenario.targets.size());
+  for (std::size_t i = 0; i < scenario.targets.size(); ++i)
+    targets_.emplace_back(scenario.targets[i].motion, noCurrent, Rng(seed, kStreamTargetBase + i));
+  bank_.emplace(ttkfConfigFor(scenario), scenario.tracker.capacity);
+  nextSweepUs_ = scenario.radar.fitted ? 0 : kNever;
 }
 
 const geo::GridInfo& SimulationEngine::truthGrid() {
@@ -69,7 +106,7 @@ const geo::GridInfo& SimulationEngine::truthGrid() {
 }
 
 State SimulationEngine::trueState() const {
-  const OwnShipTruth& t = truth_.state();
+  const VesselTruth& t = truth_.state();
   State x;
   x[kPosX] = t.position.xM;
   x[kCurX] = t.currentXMps;
@@ -85,28 +122,26 @@ State SimulationEngine::trueState() const {
   return x;
 }
 
-SimFrame SimulationEngine::step() {
-  SimFrame frame;
-  if (finished()) return frame;
-  const TimeUs end = std::min(timeUs_ + scenario_.stepUs, scenario_.durationUs);
+void SimulationEngine::advanceTargetsTo(TimeUs t) {
+  for (auto& m : targets_) m.advanceTo(t);
+}
 
-  // Sensor samples due in (timeUs_, end], in time order (ties in SensorId order).
-  while (true) {
-    std::size_t next = clocks_.size();
-    for (std::size_t i = 0; i < clocks_.size(); ++i) {
-      if (clocks_[i].fitted && clocks_[i].nextUs <= end &&
-          (next == clocks_.size() || clocks_[i].nextUs < clocks_[next].nextUs))
-        next = i;
-    }
-    if (next == clocks_.size()) break;
-    const TimeUs t = clocks_[next].nextUs;
-    clocks_[next].nextUs += clocks_[next].periodUs;
-    truth_.advanceTo(t);
-    const OwnShipTruth& tr = truth_.state();
-    const auto id = static_cast<SensorId>(next);
-    loran_.advanceTo(t);
-    speedlog_.advanceTo(t);
-    if (!sensorStatesAt(scenario_, t).isOn(id)) continue;
+track::OwnShipInput SimulationEngine::ownShipInput() const {
+  return {drkf_->timeUs(), nav::groundStateOf(drkf_->belief()), nav::groundCovarianceOf(drkf_->belief())};
+}
+
+void SimulationEngine::ownShipEpoch(TimeUs t, SimFrame& frame) {
+  truth_.advanceTo(t);
+  loran_.advanceTo(t);
+  speedlog_.advanceTo(t);
+  const VesselTruth& tr = truth_.state();
+  const SensorStates on = sensorStatesAt(scenario_, t);
+  const std::size_t first = frame.measurements.size();
+  for (std::size_t i = 0; i < clocks_.size(); ++i) {
+    if (!clocks_[i].fitted || clocks_[i].nextUs != t) continue;
+    clocks_[i].nextUs += clocks_[i].periodUs;
+    const auto id = static_cast<SensorId>(i);
+    if (!on.isOn(id)) continue;
     switch (id) {
       case SensorId::Gps:
         frame.measurements.emplace_back(
@@ -125,19 +160,75 @@ SimFrame SimulationEngine::step() {
         break;
     }
   }
-
-  // The filter: one update per measurement epoch, then prediction to the cycle's end.
   const auto& m = frame.measurements;
-  for (std::size_t i = 0; i < m.size();) {
-    std::size_t j = i;
-    while (j < m.size() && sensors::timeOf(m[j]) == sensors::timeOf(m[i])) ++j;
-    frame.updates.push_back(drkf_->update(sensors::timeOf(m[i]), std::span(m).subspan(i, j - i)));
-    i = j;
+  frame.updates.push_back(drkf_->update(t, std::span(m).subspan(first, m.size() - first)));
+  bank_->feedOwnShip(ownShipInput());  // one DRKF feeds every TTKF (seed 000 figure 3)
+}
+
+void SimulationEngine::startSweep(TimeUs t) {
+  truth_.advanceTo(t);
+  advanceTargetsTo(t);
+  const VesselTruth& own = truth_.state();
+  const double gamma = truthGrid().convergenceRad;
+  std::vector<PendingPlot> sweep;
+  for (std::size_t i = 0; i < targets_.size(); ++i) {
+    const auto& p = targets_[i].state().position;
+    const double trueBearing = bearingOf(p.xM - own.position.xM, p.yM - own.position.yM) + gamma;
+    sweep.push_back({radar_.beamTime(t, trueBearing), i});
+  }
+  std::stable_sort(sweep.begin(), sweep.end(),
+                   [](const auto& a, const auto& b) { return a.timeUs < b.timeUs; });
+  pending_.insert(pending_.end(), sweep.begin(), sweep.end());
+  nextSweepUs_ = t + fromSeconds(scenario_.radar.sweepPeriodS);
+}
+
+void SimulationEngine::radarPlot(const PendingPlot& pp, SimFrame& frame) {
+  truth_.advanceTo(pp.timeUs);
+  advanceTargetsTo(pp.timeUs);
+  if (!scenario_.radar.power.at(pp.timeUs)) return;
+  const VesselTruth& own = truth_.state();
+  const VesselTruth& tgt = targets_[pp.target].state();
+  const auto plot = radar_.measure(pp.timeUs, tgt.position.xM - own.position.xM,
+                                   tgt.position.yM - own.position.yM, truthGrid());
+  if (!plot) return;
+  const int targetId = scenario_.targets[pp.target].id;
+  frame.plots.push_back(*plot);
+  frame.plotSources.push_back(targetId);
+  // The tracker converts with the convergence at the estimated own-ship position.
+  const track::OwnShipInput ownEst = ownShipInput();
+  const geo::GridInfo grid = frame_.gridInfo({ownEst.x[0], ownEst.x[1]});
+  bank_->processAssociated(targetId, track::toGrid(*plot, grid), ownEst);
+}
+
+SimFrame SimulationEngine::step() {
+  SimFrame frame;
+  if (finished()) return frame;
+  const TimeUs end = std::min(timeUs_ + scenario_.stepUs, scenario_.durationUs);
+
+  // Events in time order; at equal times own-ship epochs first, then sweep starts, then plots.
+  while (true) {
+    TimeUs tOwn = kNever;
+    for (const auto& c : clocks_)
+      if (c.fitted) tOwn = std::min(tOwn, c.nextUs);
+    const TimeUs tPlot = pending_.empty() ? kNever : pending_.front().timeUs;
+    const TimeUs t = std::min({tOwn, nextSweepUs_, tPlot});
+    if (t > end) break;
+    if (t == tOwn) {
+      ownShipEpoch(t, frame);
+    } else if (t == nextSweepUs_) {
+      startSweep(t);
+    } else {
+      const PendingPlot p = pending_.front();
+      pending_.pop_front();
+      radarPlot(p, frame);
+    }
   }
   truth_.advanceTo(end);
+  advanceTargetsTo(end);
   loran_.advanceTo(end);
   speedlog_.advanceTo(end);
   drkf_->predictTo(end);
+  bank_->predictAllTo(end);
   timeUs_ = end;
 
   frame.timeUs = end;
@@ -145,6 +236,9 @@ SimFrame SimulationEngine::step() {
   frame.trueState = trueState();
   frame.estimate = drkf_->belief();
   frame.sensors = sensorStatesAt(scenario_, end);
+  for (const auto& m : targets_) frame.targets.push_back(m.state());
+  for (const auto& t : bank_->tracks())
+    frame.tracks.push_back({t.trackId, t.targetId, t.filter.belief(), t.radarUpdates});
   return frame;
 }
 

@@ -2,25 +2,44 @@
 // SimulationEngine::step() advances truth, sensors and the DRKF by one output cycle and returns a value
 // snapshot (SimFrame). Plain C++: the GUI's worker thread and the headless runs drive it the same way.
 #include <array>
+#include <deque>
 #include <optional>
 #include <vector>
 
 #include "navigation/drkf.h"
 #include "sensors/own_ship_simulators.h"
-#include "sim/own_ship_truth.h"
+#include "sensors/radar.h"
 #include "sim/scenario.h"
+#include "sim/vessel_motion.h"
+#include "tracking/ttkf_bank.h"
 
 namespace reckoner::sim {
 
+/// A track at the frame time.
+struct TrackSnapshot {
+  int trackId = 0;
+  int targetId = -1;  ///< the true target it follows (perfect association)
+  est::ttkf::Belief estimate;
+  int radarUpdates = 0;
+};
+
 struct SimFrame {
   TimeUs timeUs = 0;
-  OwnShipTruth truth;
+  VesselTruth truth;
   est::drkf::State trueState;  ///< truth in the DRKF's coordinates (incl. sensor error states)
   est::drkf::Belief estimate;
   std::vector<sensors::OwnShipSample> measurements;  ///< taken during this cycle
   std::vector<nav::DrkfUpdateReport> updates;        ///< one per measurement epoch of this cycle
   SensorStates sensors;
+  std::vector<VesselTruth> targets;       ///< in scenario order
+  std::vector<sensors::RadarPlot> plots;  ///< radar plots of this cycle
+  std::vector<int> plotSources;           ///< target id of each plot (-1: clutter); not given to trackers
+  std::vector<TrackSnapshot> tracks;      ///< predicted to timeUs
 };
+
+/// Truth of own ship and a target in the TTKF's coordinates (own acceleration: through the water,
+/// exact when there is no current).
+est::ttkf::State trueTrackState(const VesselTruth& own, const VesselTruth& target);
 
 class SimulationEngine {
  public:
@@ -34,6 +53,7 @@ class SimulationEngine {
   [[nodiscard]] const Scenario& scenario() const { return scenario_; }
   [[nodiscard]] const geo::LocalFrame& frame() const { return frame_; }
   [[nodiscard]] const nav::Drkf& drkf() const { return *drkf_; }
+  [[nodiscard]] const track::TtkfBank& trackers() const { return *bank_; }
 
  private:
   struct Clock {
@@ -41,18 +61,32 @@ class SimulationEngine {
     TimeUs periodUs = 0;
     TimeUs nextUs = 0;
   };
+  struct PendingPlot {
+    TimeUs timeUs;
+    std::size_t target;
+  };
   [[nodiscard]] est::drkf::State trueState() const;
   const geo::GridInfo& truthGrid();
+  void ownShipEpoch(TimeUs t, SimFrame& frame);
+  void startSweep(TimeUs t);
+  void radarPlot(const PendingPlot& p, SimFrame& frame);
+  void advanceTargetsTo(TimeUs t);
+  [[nodiscard]] track::OwnShipInput ownShipInput() const;
 
   Scenario scenario_;
   geo::LocalFrame frame_;
-  OwnShipTruthModel truth_;
+  VesselMotionModel truth_;
   sensors::GpsSimulator gps_;
   sensors::LoranSimulator loran_;
   sensors::SpeedlogSimulator speedlog_;
   sensors::GyroSimulator gyro_;
   std::array<Clock, sensors::kOwnShipSensorCount> clocks_{};
   std::optional<nav::Drkf> drkf_;
+  std::vector<VesselMotionModel> targets_;
+  sensors::RadarSimulator radar_;
+  std::optional<track::TtkfBank> bank_;
+  TimeUs nextSweepUs_ = 0;
+  std::deque<PendingPlot> pending_;
   TimeUs timeUs_ = 0;
   TimeUs gridTimeUs_ = -1;
   geo::GridInfo grid_;

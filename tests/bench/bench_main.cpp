@@ -9,6 +9,7 @@
 #include "navigation/drkf.h"
 #include "resources/embedded.h"
 #include "sim/scenario_run.h"
+#include "tracking/ttkf_bank.h"
 
 namespace {
 
@@ -111,6 +112,59 @@ void BM_GridConvergence(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_GridConvergence);
+
+track::TtkfConfig ttkfConfig() {
+  track::TtkfConfig c;
+  c.process = {{0.05, 0.1}, {0.1, 0.1}};
+  return c;
+}
+
+track::OwnShipInput ownAt(double tS) {
+  track::OwnShipInput o;
+  o.timeUs = fromSeconds(tS);
+  o.x << 0.0, 5.0 * tS, 0.0, 5.0;
+  o.P = est::Vec<4>(25.0, 25.0, 0.04, 0.04).asDiagonal();
+  return o;
+}
+
+/// A target 4 km east steaming north at 3 m/s, seen from own ship steaming north at 5 m/s.
+track::GridPlot plotAt(double tS) {
+  const double dx = 4000.0, dy = (3.0 - 5.0) * tS + 1000.0;
+  return {fromSeconds(tS), std::hypot(dx, dy), bearingOf(dx, dy), 100.0, degToRad(1.0) * degToRad(1.0)};
+}
+
+/// One TTKF cycle as the paper runs it: predict to the plot time (2 s sweep) and apply range and
+/// azimuth. Restarted (untimed) every 4096 cycles.
+void BM_TtkfCycle(benchmark::State& state) {
+  const auto ctx = std::make_shared<const track::TtkfContext>(ttkfConfig());
+  auto fresh = [&] { return track::Ttkf::initiate(ctx, ownAt(0.0), plotAt(0.0)); };
+  track::Ttkf f = fresh();
+  int k = 0;
+  for (auto _ : state) {
+    if (++k == 4096) {
+      state.PauseTiming();
+      f = fresh();
+      k = 1;
+      state.ResumeTiming();
+    }
+    auto r = f.updateRadar(plotAt(2.0 * k + 0.37));  // beam times are not whole seconds
+    benchmark::DoNotOptimize(r);
+  }
+}
+BENCHMARK(BM_TtkfCycle);
+
+/// Feeding the DRKF output to one TTKF (marginal replacement, with the prediction to that time).
+void BM_TtkfOwnShipFeed(benchmark::State& state) {
+  const auto ctx = std::make_shared<const track::TtkfContext>(ttkfConfig());
+  track::Ttkf f = track::Ttkf::initiate(ctx, ownAt(0.0), plotAt(0.0));
+  double t = 0.0;
+  for (auto _ : state) {
+    t += 1.0;
+    auto r = f.feedOwnShip(ownAt(t));
+    benchmark::DoNotOptimize(r);
+  }
+}
+BENCHMARK(BM_TtkfOwnShipFeed);
 
 /// One simulated hour at 1 Hz: truth, four sensors, DRKF and output rows (with geodetic conversion).
 void BM_OneHourRun(benchmark::State& state) {

@@ -5,6 +5,7 @@
 #include "common/angles.h"
 #include "io/scenario_json.h"
 #include "resources/embedded.h"
+#include "support/drkf_fixtures.h"
 
 using namespace reckoner;
 
@@ -112,6 +113,59 @@ class TestScenarioJson : public QObject {
       const QString msg = QString::fromStdString(e.what());
       QVERIFY2(msg.contains(expected), qPrintable(msg));
       QVERIFY(!msg.contains('\n'));
+    }
+  }
+  void readsTargetsRadarAndTracker() {
+    const std::string text = variant("\"gyro\": {\"sd_deg\": 1}", R"("gyro": {"sd_deg": 1},
+    "radar": {"range_sd_m": 20, "bearing_sd_deg": 0.5, "max_range_nm": 12, "detection_probability": 0.9}
+  },
+  "targets": [{"id": 7, "name": "ferry", "position_m": [100, 200], "velocity_mps": [1, 2],
+               "random_acceleration": {"variance_m2_s4": 0.01, "beta_per_s": 0.1},
+               "schedule": [{"t_s": 40, "velocity_mps": [5, 5]}]}],
+  "tracker": {"own_acceleration": {"sigma_mps2": 0.1, "beta_per_s": 0.2},
+              "target_acceleration": {"variance_m2_s4": 0.005, "beta_per_s": 0.1},
+              "own_ship_feed": "measurement", "capacity": 50)");
+    const sim::Scenario s = io::parseScenario(text, "t.json");
+    QVERIFY(s.radar.fitted);
+    QCOMPARE(s.radar.rangeSdM, 20.0);
+    QVERIFY(std::abs(s.radar.maxRangeM - 12 * 1852.0) < 1e-9);
+    QCOMPARE(s.radar.detectionProbability, 0.9);
+    QCOMPARE(s.targets.size(), std::size_t(1));
+    QCOMPARE(s.targets[0].id, 7);
+    QCOMPARE(s.targets[0].name, std::string("ferry"));
+    QVERIFY(std::abs(s.targets[0].motion.randomAcceleration->sigma - 0.1) < 1e-12);
+    QCOMPARE(s.targets[0].motion.schedule.size(), std::size_t(1));
+    QVERIFY(std::abs(s.tracker.targetAcceleration.sigma - std::sqrt(0.005)) < 1e-12);
+    QCOMPARE(s.tracker.feed, track::OwnShipFeed::Measurement);
+    QCOMPARE(s.tracker.capacity, std::size_t(50));
+  }
+  void badTargetsAndTracker_data() {
+    QTest::addColumn<QString>("insert");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("duplicate id") << R"("targets": [{"id": 1}, {"id": 1}],)"
+                                  << "targets[1].id: id 1 is used by another target";
+    QTest::newRow("negative id") << R"("targets": [{"id": -3}],)"
+                                 << "targets[0].id: must be a non-negative integer";
+    QTest::newRow("unknown target field") << R"("targets": [{"id": 1, "colour": "red"}],)"
+                                          << "targets[0].colour: unknown field";
+    QTest::newRow("bad feed") << R"("tracker": {"own_ship_feed": "both"},)"
+                              << "tracker.own_ship_feed: must be";
+    QTest::newRow("zero capacity") << R"("tracker": {"capacity": 0},)"
+                                   << "tracker.capacity: must be an integer";
+    QTest::newRow("both variance and sigma")
+        << R"("tracker": {"target_acceleration": {"variance_m2_s4": 1, "sigma_mps2": 1, "beta_per_s": 1}},)"
+        << "tracker.target_acceleration.sigma_mps2: give either";
+  }
+  void badTargetsAndTracker() {
+    QFETCH(QString, insert);
+    QFETCH(QString, expected);
+    const std::string text =
+        variant("\"duration_s\": 100,", "\"duration_s\": 100,\n  " + insert.toStdString());
+    try {
+      io::parseScenario(text, "t.json");
+      QFAIL("accepted a bad scenario");
+    } catch (const io::InputError& e) {
+      QVERIFY2(QString(e.what()).contains(expected), e.what());
     }
   }
   void missingFileIsNamed() {

@@ -1,7 +1,7 @@
 #include <QTest>
 
 #include "common/angles.h"
-#include "sim/own_ship_truth.h"
+#include "sim/vessel_motion.h"
 
 using namespace reckoner;
 using namespace reckoner::sim;
@@ -10,16 +10,16 @@ namespace {
 const est::GaussMarkov kNoCurrent{0.0, 1.0};
 }
 
-class TestOwnShipTruth : public QObject {
+class TestVesselTruth : public QObject {
   Q_OBJECT
  private slots:
   void tableTwoTurnKeepsSpeedAndTurnsClockwise() {
     // GIVEN Table II test 4 (7, 7) m/s turning 4.01 deg/s from 80 s WHEN time passes THEN the speed is
     // kept and the heading increases by the rate.
-    OwnShipSpec spec;
+    VesselMotionSpec spec;
     spec.initialVelocityMps = {7.0, 7.0};
     spec.schedule.push_back({80 * kMicrosPerSecond, std::nullopt, degToRad(4.01)});
-    OwnShipTruthModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(80 * kMicrosPerSecond);
     QVERIFY(std::abs(m.state().position.xM - 560.0) < 1e-6);  // straight at 7 m/s for 80 s
     QVERIFY(std::abs(m.state().headingRad - degToRad(45.0)) < 1e-12);
@@ -38,21 +38,21 @@ class TestOwnShipTruth : public QObject {
   }
   void footnoteRotationExactly() {
     // Table II footnote: Vx' = cos(w d) Vx + sin(w d) Vy, Vy' = cos(w d) Vy - sin(w d) Vx.
-    OwnShipSpec spec;
+    VesselMotionSpec spec;
     spec.initialVelocityMps = {3.0, -2.0};
     spec.schedule.push_back({0, std::nullopt, 0.05});
-    OwnShipTruthModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(kMicrosPerSecond);
     const double c = std::cos(0.05), s = std::sin(0.05);
     QVERIFY(std::abs(m.state().waterVxMps - (c * 3.0 + s * -2.0)) < 1e-12);
     QVERIFY(std::abs(m.state().waterVyMps - (c * -2.0 - s * 3.0)) < 1e-12);
   }
   void velocityRampAtMaximumAcceleration() {
-    OwnShipSpec spec;
+    VesselMotionSpec spec;
     spec.initialHeadingRad = degToRad(45.0);
     spec.maxAccelerationMps2 = 0.5;
     spec.schedule.push_back({104 * kMicrosPerSecond, std::array<double, 2>{5.0, 5.0}, std::nullopt});
-    OwnShipTruthModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(104 * kMicrosPerSecond);
     QCOMPARE(m.state().waterVxMps, 0.0);
     QVERIFY(std::abs(m.state().headingRad - degToRad(45.0)) < 1e-12);  // held while stopped
@@ -64,9 +64,9 @@ class TestOwnShipTruth : public QObject {
     QCOMPARE(m.state().accelXMps2, 0.0);
   }
   void instantaneousWhenNoLimit() {
-    OwnShipSpec spec;
+    VesselMotionSpec spec;
     spec.schedule.push_back({10 * kMicrosPerSecond, std::array<double, 2>{1.0, 2.0}, std::nullopt});
-    OwnShipTruthModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(10 * kMicrosPerSecond);
     QCOMPARE(m.state().waterVxMps, 1.0);
     QCOMPARE(m.state().waterVyMps, 2.0);
@@ -78,7 +78,7 @@ class TestOwnShipTruth : public QObject {
     constexpr int n = 4000;
     double v0 = 0, v1 = 0, c01 = 0;
     for (int seed = 0; seed < n; ++seed) {
-      OwnShipTruthModel m(OwnShipSpec{}, current, Rng(static_cast<std::uint64_t>(seed), kStreamTruth));
+      VesselMotionModel m(VesselMotionSpec{}, current, Rng(static_cast<std::uint64_t>(seed), kStreamTruth));
       const double a = m.state().currentXMps;
       m.advanceTo(5 * kMicrosPerSecond);
       const double b = m.state().currentXMps;
@@ -93,10 +93,10 @@ class TestOwnShipTruth : public QObject {
     QVERIFY(std::abs(c01 / v0 - std::exp(-0.5)) < 0.04);
   }
   void sameSeedSameTruth() {
-    OwnShipSpec spec;
+    VesselMotionSpec spec;
     spec.initialVelocityMps = {4.0, 1.0};
     spec.randomAcceleration = est::GaussMarkov{0.1, 0.2};
-    OwnShipTruthModel a(spec, {0.3, 0.2}, Rng(7, kStreamTruth)), b(spec, {0.3, 0.2}, Rng(7, kStreamTruth));
+    VesselMotionModel a(spec, {0.3, 0.2}, Rng(7, kStreamTruth)), b(spec, {0.3, 0.2}, Rng(7, kStreamTruth));
     a.advanceTo(fromSeconds(123.4));
     for (int k = 1; k <= 1234; ++k) b.advanceTo(k * 100'000);
     QCOMPARE(a.state().position.xM, b.state().position.xM);
@@ -104,5 +104,5 @@ class TestOwnShipTruth : public QObject {
   }
 };
 
-QTEST_APPLESS_MAIN(TestOwnShipTruth)
-#include "tst_own_ship_truth.moc"
+QTEST_APPLESS_MAIN(TestVesselTruth)
+#include "tst_vessel_motion.moc"

@@ -1,0 +1,167 @@
+#include "sim/vessel_motion.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "common/angles.h"
+#include "estimation/discretize.h"
+#include "estimation/singer.h"
+
+namespace reckoner::sim {
+namespace {
+constexpr double kHeadingMinSpeedMps = 0.05;  // below this the ship keeps its last heading
+
+double initialHeading(const VesselMotionSpec& spec) {
+  if (spec.initialHeadingRad) return wrapTwoPi(*spec.initialHeadingRad);
+  const auto& v0 = spec.initialVelocityMps;
+  if (std::hypot(v0[0], v0[1]) > 0.0) return bearingOf(v0[0], v0[1]);
+  for (const auto& e : spec.schedule) {
+    if (e.setVelocityMps && std::hypot((*e.setVelocityMps)[0], (*e.setVelocityMps)[1]) > 0.0)
+      return bearingOf((*e.setVelocityMps)[0], (*e.setVelocityMps)[1]);
+  }
+  return 0.0;
+}
+}  // namespace
+
+VesselMotionModel::VesselMotionModel(const VesselMotionSpec& spec, const est::GaussMarkov& current, Rng rng)
+    : spec_(spec),
+      current_(current),
+      randomAccel_(spec.randomAcceleration.value_or(est::GaussMarkov{0.0, 1.0})),
+      rng_(rng) {
+  if (!current_.valid() || !randomAccel_.valid())
+    throw std::invalid_argument("vessel motion: Gauss-Markov sigma must be >= 0 and beta > 0");
+  committed_.commanded = spec.initialVelocityMps;
+  committed_.scheduledVel = spec.initialVelocityMps;
+  for (auto& r : committed_.random) {
+    r.setZero();
+    r[1] = rng_.normal(0.0, current_.sigma);      // current from its stationary distribution
+    r[3] = rng_.normal(0.0, randomAccel_.sigma);  // so is the random acceleration
+  }
+  committed_.headingRad = initialHeading(spec);
+  applyDueEvents(committed_);
+  refreshOutputs(committed_);
+}
+
+est::Mat<4> VesselMotionModel::transition(TimeUs dtUs) const {
+  // Per-axis block [p, c, v, a] of exp(F dt): the current and the Singer velocity/acceleration chain.
+  const double dt = toSeconds(dtUs);
+  const est::Mat<3> s = est::singerTransition(randomAccel_, dt);  // [p, v, a]
+  est::Mat<4> Phi = est::Mat<4>::Identity();
+  Phi(0, 1) = -std::expm1(-current_.betaPerS * dt) / current_.betaPerS;
+  Phi(1, 1) = current_.phi(dt);
+  Phi(0, 2) = s(0, 1);
+  Phi(0, 3) = s(0, 2);
+  Phi(2, 3) = s(1, 2);
+  Phi(3, 3) = s(2, 2);
+  return Phi;
+}
+
+const VesselMotionModel::AxisDiscretisation& VesselMotionModel::discretisation(TimeUs dtUs) {
+  for (const auto& c : cache_)
+    if (c.dtUs == dtUs) return c;
+  // Per-axis block of the DRKF model (seed 000 eq. 4c): [position, current, velocity, acceleration].
+  est::Mat<4> F = est::Mat<4>::Zero();
+  F(0, 1) = F(0, 2) = 1.0;
+  F(1, 1) = -current_.betaPerS;
+  F(2, 3) = 1.0;
+  F(3, 3) = -randomAccel_.betaPerS;
+  est::MatRC<4, 2> G = est::MatRC<4, 2>::Zero();
+  G(1, 0) = current_.alpha();
+  G(3, 1) = randomAccel_.alpha();
+  const auto d = est::discretiseVanLoan<4, 2>(F, G, toSeconds(dtUs));
+  const Eigen::SelfAdjointEigenSolver<est::Mat<4>> eig(d.Q);
+  AxisDiscretisation& slot = cache_[cacheNext_];
+  cacheNext_ = (cacheNext_ + 1) % cache_.size();
+  slot.dtUs = dtUs;
+  slot.Phi = d.Phi;
+  slot.sqrtQ = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+  return slot;
+}
+
+void VesselMotionModel::applyDueEvents(Motion& m) const {
+  const auto& events = spec_.schedule;
+  while (m.nextEvent < events.size() && events[m.nextEvent].timeUs <= m.timeUs) {
+    const KinematicEvent& e = events[m.nextEvent++];
+    if (e.setVelocityMps) m.commanded = *e.setVelocityMps;
+    if (e.turnRateRadPerS) m.turnRateRadPerS = *e.turnRateRadPerS;
+    if (spec_.maxAccelerationMps2 <= 0.0) m.scheduledVel = m.commanded;
+  }
+}
+
+void VesselMotionModel::substep(Motion& m, TimeUs dtUs, bool noisy) {
+  const double dt = toSeconds(dtUs);
+  const std::array<double, 2> before = m.scheduledVel;
+  if (m.turnRateRadPerS != 0.0) {
+    // Table II footnote: Vx' = cos(w dt) Vx + sin(w dt) Vy, Vy' = cos(w dt) Vy - sin(w dt) Vx.
+    const double c = std::cos(m.turnRateRadPerS * dt), s = std::sin(m.turnRateRadPerS * dt);
+    for (auto* v : {&m.commanded, &m.scheduledVel})
+      *v = {c * (*v)[0] + s * (*v)[1], c * (*v)[1] - s * (*v)[0]};
+  }
+  m.rampAccel = {0.0, 0.0};
+  if (spec_.maxAccelerationMps2 > 0.0) {
+    const double dx = m.commanded[0] - m.scheduledVel[0], dy = m.commanded[1] - m.scheduledVel[1];
+    const double gap = std::hypot(dx, dy);
+    const double reach = spec_.maxAccelerationMps2 * dt;
+    if (gap <= reach) {
+      m.scheduledVel = m.commanded;
+    } else {
+      m.rampAccel = {spec_.maxAccelerationMps2 * dx / gap, spec_.maxAccelerationMps2 * dy / gap};
+      m.scheduledVel = {m.scheduledVel[0] + m.rampAccel[0] * dt, m.scheduledVel[1] + m.rampAccel[1] * dt};
+    }
+  } else {
+    m.scheduledVel = m.commanded;
+  }
+  for (int i = 0; i < 2; ++i) m.scheduledDisplacement[i] += 0.5 * (before[i] + m.scheduledVel[i]) * dt;
+
+  if (noisy) {
+    const AxisDiscretisation& d = discretisation(dtUs);
+    for (auto& r : m.random) {
+      const est::Vec<4> w(rng_.normal(), rng_.normal(), rng_.normal(), rng_.normal());
+      r = (d.Phi * r + d.sqrtQ * w).eval();
+    }
+  } else {
+    const est::Mat<4> Phi = transition(dtUs);
+    for (auto& r : m.random) r = (Phi * r).eval();
+  }
+  m.timeUs += dtUs;
+  const double vx = m.scheduledVel[0] + m.random[0][2], vy = m.scheduledVel[1] + m.random[1][2];
+  if (std::hypot(vx, vy) > kHeadingMinSpeedMps) m.headingRad = bearingOf(vx, vy);
+}
+
+void VesselMotionModel::advanceTo(TimeUs t) {
+  const auto& events = spec_.schedule;
+  // Commit the random path on the grid and at scheduled events, never at the times asked for.
+  while (true) {
+    applyDueEvents(committed_);
+    TimeUs next = (committed_.timeUs / kGridUs + 1) * kGridUs;
+    if (committed_.nextEvent < events.size()) next = std::min(next, events[committed_.nextEvent].timeUs);
+    if (next > t) break;
+    substep(committed_, next - committed_.timeUs, true);
+  }
+  applyDueEvents(committed_);
+  if (t <= committed_.timeUs) {
+    refreshOutputs(committed_);
+    return;
+  }
+  Motion view = committed_;
+  substep(view, t - view.timeUs, false);
+  refreshOutputs(view);
+}
+
+void VesselMotionModel::refreshOutputs(const Motion& m) {
+  truth_.timeUs = m.timeUs;
+  truth_.position = {spec_.initialPosition.xM + m.scheduledDisplacement[0] + m.random[0][0],
+                     spec_.initialPosition.yM + m.scheduledDisplacement[1] + m.random[1][0]};
+  truth_.currentXMps = m.random[0][1];
+  truth_.currentYMps = m.random[1][1];
+  truth_.waterVxMps = m.scheduledVel[0] + m.random[0][2];
+  truth_.waterVyMps = m.scheduledVel[1] + m.random[1][2];
+  // Scheduled acceleration: the turn (d/dt of the Table II rotation) plus any speed ramp.
+  truth_.accelXMps2 = m.turnRateRadPerS * m.scheduledVel[1] + m.rampAccel[0] + m.random[0][3];
+  truth_.accelYMps2 = -m.turnRateRadPerS * m.scheduledVel[0] + m.rampAccel[1] + m.random[1][3];
+  truth_.headingRad = m.headingRad;
+}
+
+}  // namespace reckoner::sim

@@ -1,0 +1,87 @@
+// GIVEN / WHEN / THEN behaviour of the TTKF bank on the deterministic simulator (perfect association).
+#include <QTest>
+
+#include <map>
+
+#include "estimation/chi_square.h"
+#include "support/drkf_fixtures.h"
+
+using namespace reckoner;
+
+namespace {
+constexpr int kRuns = 50;
+
+/// Per target: time average (after 60 s) of the 50-run mean NEES, and the share of steps inside.
+std::map<int, std::pair<double, double>> ttkfNees(const std::vector<sim::RunResult>& runs,
+                                                  const est::ChiSquareBounds& b) {
+  std::map<int, std::map<TimeUs, std::pair<double, int>>> acc;
+  for (const auto& r : runs)
+    for (const auto& t : r.trackRows) {
+      auto& a = acc[t.targetId][t.timeUs];
+      a.first += t.nees;
+      ++a.second;
+    }
+  std::map<int, std::pair<double, double>> out;
+  for (const auto& [id, series] : acc) {
+    double sum = 0;
+    int n = 0, inside = 0;
+    for (const auto& [t, p] : series) {
+      if (t <= 60 * kMicrosPerSecond || p.second != static_cast<int>(runs.size())) continue;
+      const double m = p.first / p.second;
+      sum += m;
+      ++n;
+      inside += b.contains(m);
+    }
+    out[id] = {sum / n, static_cast<double>(inside) / n};
+  }
+  return out;
+}
+}  // namespace
+
+class TestTrackingScenarios : public QObject {
+  Q_OBJECT
+ private slots:
+  void ttkfIsConsistentWithTheMarginalFeed() {
+    // GIVEN five targets and own ship drawn from the TTKF's own model, perfect association and a GPS
+    // outage WHEN 50 runs are averaged THEN every target's TTKF mean NEES after 60 s lies inside the
+    // 12-state bounds 10.68 to 13.40.
+    const auto& mc = test::monteCarlo("ttkf-matched", kRuns);
+    const auto bounds = est::averageNeesBounds(12, kRuns);
+    const auto nees = ttkfNees(mc.runs, bounds);
+    QCOMPARE(nees.size(), std::size_t(5));
+    for (const auto& [id, v] : nees) {
+      qInfo("target %d: TTKF mean NEES %.2f, %.0f%% of steps inside [%.2f, %.2f]", id, v.first,
+            100 * v.second, bounds.lower, bounds.upper);
+      QVERIFY(bounds.contains(v.first));
+      QVERIFY(v.second > 0.85);
+    }
+  }
+  void seed000sFeedIsOptimistic() {
+    // GIVEN the same scenario WHEN the DRKF output is fed as a measurement every second (seed 000)
+    // THEN the same information is counted again and again: the NEES is far above the bounds.
+    sim::Scenario s = test::builtinScenario("ttkf-matched");
+    s.tracker.feed = track::OwnShipFeed::Measurement;
+    const auto runs = sim::runMonteCarlo(s, kRuns, 2, s.seed);
+    const auto bounds = est::averageNeesBounds(12, kRuns);
+    for (const auto& [id, v] : ttkfNees(runs, bounds)) {
+      qInfo("target %d: seed 000 feed, TTKF mean NEES %.2f", id, v.first);
+      QVERIFY(v.first > 3 * bounds.upper);
+    }
+  }
+  void everyTargetIsTrackedAndOwnShipUnaffected() {
+    // Tracking does not touch the DRKF: own-ship rows equal those of the same run without radar.
+    sim::Scenario s = test::builtinScenario("ttkf-matched");
+    const auto with = sim::runScenario(s, 7);
+    s.radar.fitted = false;
+    const auto without = sim::runScenario(s, 7);
+    QCOMPARE(with.rows.back().estXM, without.rows.back().estXM);
+    QVERIFY(without.trackRows.empty());
+    std::map<int, int> rowsPerTarget;
+    for (const auto& r : with.trackRows) ++rowsPerTarget[r.targetId];
+    QCOMPARE(rowsPerTarget.size(), std::size_t(5));
+    for (const auto& [id, n] : rowsPerTarget) QVERIFY(n >= 598);  // from the first sweep on
+  }
+};
+
+QTEST_APPLESS_MAIN(TestTrackingScenarios)
+#include "tst_tracking_scenarios.moc"

@@ -120,7 +120,6 @@ class MeasurementStack {
     return rep;
   }
 
-  [[nodiscard]] int dim() const { return dim_; }
   [[nodiscard]] int blockCount() const { return blockCount_; }
   [[nodiscard]] const BlockReport& block(int i) const { return blocks_[i]; }
 

@@ -14,20 +14,6 @@ namespace reckoner::sensors {
 enum class SensorId : std::uint8_t { Gps, LoranC, Speedlog, Gyro };
 inline constexpr int kOwnShipSensorCount = 4;
 
-constexpr std::string_view sensorName(SensorId s) {
-  switch (s) {
-    case SensorId::Gps:
-      return "gps";
-    case SensorId::LoranC:
-      return "loran_c";
-    case SensorId::Speedlog:
-      return "speedlog";
-    case SensorId::Gyro:
-      return "gyro";
-  }
-  return "unknown";
-}
-
 /// Speedlog reference, seed 000's names: ground-lock measures speed over ground, bottom-lock speed
 /// through the water.
 enum class SpeedlogMode : std::uint8_t { GroundLock, BottomLock };

@@ -1,6 +1,7 @@
 // reckoner-cli: headless runs of the Reckoner engine.
 //   reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]
 //   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]
+//   reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]   (exit 1 if a cell fails)
 //   reckoner-cli validate SCENARIO...
 //   reckoner-cli scenarios
 // SCENARIO is a file path or builtin:NAME (see `reckoner-cli scenarios`).
@@ -20,7 +21,10 @@
 #include "io/own_ship_output.h"
 #include "io/scenario_json.h"
 #include "io/text_format.h"
+#include "io/track_output.h"
+#include "metrics/imo_accuracy.h"
 #include "metrics/own_ship_stats.h"
+#include "metrics/track_stats.h"
 #include "resources/embedded.h"
 #include "sim/scenario_run.h"
 
@@ -32,6 +36,7 @@ constexpr const char* kUsage =
     "usage:\n"
     "  reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]\n"
     "  reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]\n"
+    "  reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]\n"
     "  reckoner-cli validate SCENARIO...\n"
     "  reckoner-cli scenarios\n"
     "SCENARIO is a JSON file (docs/scenarios.md) or builtin:NAME.\n";
@@ -115,6 +120,25 @@ void printPhaseTable(const std::vector<metrics::PhaseStats>& phases) {
   }
 }
 
+void printTracking(const metrics::TrackingStats& t, const sim::RunResult& run) {
+  const auto& c = run.trackCounters;
+  std::printf(
+      "\n  radar tracking: %ld plots, %ld associated; %ld tracks started, %ld confirmed, %ld lost, %ld "
+      "dropped\n",
+      c.plots, c.plotsAssociated, c.tracksStarted, c.tracksConfirmed, c.tracksLost, c.tracksDropped);
+  std::printf(
+      "  continuity %.2f%% over %zu targets (%d never held), %d breaks, %d swaps (%d between targets > 500 m "
+      "apart), %d false tracks\n",
+      100.0 * t.continuity, t.targets.size(), t.targetsNeverHeld, t.breaks, t.swaps, t.farSwaps,
+      t.falseTracks);
+  if (t.targets.size() > 12) return;
+  std::printf("  %-6s %10s %7s %12s %12s %9s\n", "target", "continuity", "breaks", "pos RMSE", "vel RMSE",
+              "mean NEES");
+  for (const auto& s : t.targets)
+    std::printf("  %-6d %9.1f%% %7d %10.1f m %8.3f m/s %9.2f\n", s.targetId, 100.0 * s.continuity, s.breaks,
+                s.rmsePositionM, s.rmseVelocityMps, s.meanNees);
+}
+
 int cmdRun(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {"seed", "out"});
   if (a.positional.size() != 1) throw UsageError("run needs exactly one SCENARIO");
@@ -127,6 +151,7 @@ int cmdRun(int argc, char** argv) {
   const auto phases = metrics::summarisePhases(metrics::derivePhases(s), run.rows);
   io::writeOwnShipCsv(out + "/ownship.csv", run.rows);
   io::writeTextFile(out + "/summary.json", io::runSummaryJson(s, run, phases));
+  if (s.radar.fitted) io::writeTargetsCsv(out + "/targets.csv", run.trackRows);
   if (a.quiet) return 0;
 
   const geo::LocalFrame frame(s.origin.latDeg, s.origin.lonDeg);
@@ -143,7 +168,9 @@ int cmdRun(int argc, char** argv) {
                 io::formatLatitude(last.estLatDeg).c_str(), io::formatLongitude(last.estLonDeg).c_str(),
                 last.sdPositionM(), last.positionErrorM());
   }
-  std::printf("  wrote %s/ownship.csv and %s/summary.json\n", out.c_str(), out.c_str());
+  if (s.radar.fitted) printTracking(metrics::summariseTracking(run.trackRows, run.targetRows), run);
+  std::printf("  wrote %s/ownship.csv%s and %s/summary.json\n", out.c_str(),
+              s.radar.fitted ? (", " + out + "/targets.csv").c_str() : "", out.c_str());
   return 0;
 }
 
@@ -190,6 +217,48 @@ int cmdMonteCarlo(int argc, char** argv) {
   return 0;
 }
 
+int cmdImo(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"runs", "threads", "seed"});
+  const int runs =
+      a.options.count("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 100;
+  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = a.options.count("threads")
+                          ? static_cast<int>(parseCount("threads", a.options.at("threads"), 1, 1024))
+                          : hw;
+  std::vector<std::string> specs = a.positional;
+  if (specs.empty()) specs = {"builtin:imo-1", "builtin:imo-2", "builtin:imo-3", "builtin:imo-4"};
+  std::vector<sim::Scenario> scenarios;
+  for (const auto& spec : specs) scenarios.push_back(loadScenario(spec));
+  bool all = true;
+  std::printf("ARPA accuracy (IMO MSC.192(79)): 95th percentile of the error over %d runs\n", runs);
+  for (const auto& s : scenarios) {
+    const std::uint64_t seed =
+        a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+    const auto r = metrics::evaluateImo(s, runs, threads, seed);
+    all = all && r.pass;
+    std::printf(
+        "\n%s: target tracked at 3 min in %d of %d runs; true relative speed %.1f kn, true speed %.1f kn\n",
+        r.scenario.c_str(), r.tracked, r.runs, r.trueRelativeSpeedKn, r.trueSpeedKn);
+    std::printf("  %-16s %-5s %10s %8s %-5s %10s %8s %-5s\n", "quantity", "unit", "1 min p95", "limit", "",
+                "3 min p95", "limit", "");
+    for (const auto& row : r.rows) {
+      const auto cell = [](const metrics::ImoCell& c, char* buf, std::size_t n) {
+        if (!c.required)
+          std::snprintf(buf, n, "%10s %8s %-5s", "-", "-", "");
+        else
+          std::snprintf(buf, n, "%10.3f %8.3f %-5s", c.p95, c.limit, c.pass ? "pass" : "FAIL");
+      };
+      char c1[64], c3[64];
+      cell(row.at1Min, c1, sizeof c1);
+      cell(row.at3Min, c3, sizeof c3);
+      std::printf("  %-16s %-5s %s %s\n", metrics::imoQuantityName(row.quantity),
+                  metrics::imoQuantityUnit(row.quantity), c1, c3);
+    }
+  }
+  std::printf("\n%s\n", all ? "all cells pass" : "SOME CELLS FAIL");
+  return all ? 0 : 1;
+}
+
 int cmdValidate(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {});
   if (a.positional.empty()) throw UsageError("validate needs at least one SCENARIO");
@@ -221,6 +290,7 @@ int main(int argc, char** argv) {
     if (cmd == "run") return cmdRun(argc, argv);
     if (cmd == "montecarlo") return cmdMonteCarlo(argc, argv);
     if (cmd == "validate") return cmdValidate(argc, argv);
+    if (cmd == "imo") return cmdImo(argc, argv);
     if (cmd == "scenarios") return cmdScenarios();
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {

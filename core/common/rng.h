@@ -74,6 +74,7 @@ enum RngStream : std::uint64_t {
   kStreamGyro = 5,
   kStreamFilterInit = 6,
   kStreamRadar = 7,
+  kStreamClutter = 8,        ///< radar clutter and per-sweep gyro scatter
   kStreamTargetBase = 1000,  ///< target i uses kStreamTargetBase + i
 };
 

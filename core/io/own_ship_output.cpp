@@ -8,6 +8,7 @@
 #include "estimation/update_report.h"
 #include "io/input_error.h"
 #include "io/json.h"
+#include "io/track_output.h"
 
 namespace reckoner::io {
 
@@ -100,6 +101,8 @@ std::string runSummaryJson(const sim::Scenario& s, const sim::RunResult& run,
   w.key("predict_failures").value(static_cast<std::int64_t>(run.counters.predictFailures));
   w.key("stale_samples").value(static_cast<std::int64_t>(run.counters.staleSamples));
   w.key("overflow_samples").value(static_cast<std::int64_t>(run.counters.overflowSamples));
+  if (s.radar.fitted)
+    writeTrackingSummary(w, metrics::summariseTracking(run.trackRows, run.targetRows), run.trackCounters);
   w.endObject();
   return w.str();
 }

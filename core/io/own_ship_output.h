@@ -19,6 +19,7 @@ void writeTextFile(const std::string& path, const std::string& text);
 void writeOwnShipCsv(const std::string& path, std::span<const sim::OwnShipRow> rows);
 
 /// summary.json of one run: per-phase RMSE, mean NEES, 3-sd containment, update counts, wall time.
+/// With radar targets, also the "tracking" object (io/track_output.h).
 std::string runSummaryJson(const sim::Scenario& s, const sim::RunResult& run,
                            const std::vector<metrics::PhaseStats>& phases);
 

@@ -214,14 +214,43 @@ void readSensors(Fields& top, sim::Scenario& s) {
     auto& r = s.radar;
     r.fitted = true;
     r.sweepPeriodS = f.numberOr("sweep_period_s", r.sweepPeriodS, Fields::Check::Positive);
-    r.rangeSdM = f.number("range_sd_m", Fields::Check::Positive);
-    r.bearingSdRad = degToRad(f.number("bearing_sd_deg", Fields::Check::Positive));
-    r.maxRangeM = nmToMetres(f.numberOr("max_range_nm", metresToNm(r.maxRangeM), Fields::Check::Positive));
+    const bool a823 = [&] {
+      const JsonValue* budget = f.get("error_budget");
+      if (!budget) return false;
+      if (!budget->isString() || budget->string != "a823")
+        f.fail(*budget, f.pathOf("error_budget"), "must be \"a823\" (IMO A.823(19) sensor errors)");
+      return true;
+    }();
+    if (a823) {
+      r.rangeSdM = 20.0;                                  // pulse shape
+      r.bearingSdRad = degToRad(std::hypot(0.05, 0.03));  // beam shape and encoder
+      r.bearingBacklashRad = degToRad(0.05);
+      r.rangeQuantumM = nmToMetres(0.02);   // +-0.01 NM
+      r.bearingQuantumRad = degToRad(0.2);  // +-0.1 deg
+      r.gyroCalibrationRad = degToRad(0.5);
+      r.gyroScatterSdRad = degToRad(0.12);
+    }
+    const auto P = Fields::Check::Positive;
+    const auto NN = Fields::Check::NonNegative;
+    r.rangeSdM = a823 ? f.numberOr("range_sd_m", r.rangeSdM, P) : f.number("range_sd_m", P);
+    r.bearingSdRad = a823 ? degToRad(f.numberOr("bearing_sd_deg", radToDeg(r.bearingSdRad), P))
+                          : degToRad(f.number("bearing_sd_deg", P));
+    r.bearingBacklashRad = degToRad(f.numberOr("bearing_backlash_deg", radToDeg(r.bearingBacklashRad), NN));
+    r.rangeQuantumM = f.numberOr("range_quantum_m", r.rangeQuantumM, NN);
+    r.bearingQuantumRad = degToRad(f.numberOr("bearing_quantum_deg", radToDeg(r.bearingQuantumRad), NN));
+    r.gyroCalibrationRad =
+        degToRad(f.numberOr("gyro_calibration_deg", radToDeg(r.gyroCalibrationRad), Fields::Check::Any));
+    r.gyroScatterSdRad = degToRad(f.numberOr("gyro_scatter_sd_deg", radToDeg(r.gyroScatterSdRad), NN));
+    r.maxRangeM = nmToMetres(f.numberOr("max_range_nm", metresToNm(r.maxRangeM), P));
+    r.minRangeM = f.numberOr("min_range_m", r.minRangeM, NN);
+    if (r.minRangeM >= r.maxRangeM)
+      f.fail(*f.get("min_range_m"), f.pathOf("min_range_m"), "must be below max_range_nm");
     if (const JsonValue* pd = f.get("detection_probability")) {
-      r.detectionProbability =
-          f.checkedNumber(*pd, f.pathOf("detection_probability"), Fields::Check::NonNegative);
+      r.detectionProbability = f.checkedNumber(*pd, f.pathOf("detection_probability"), NN);
       if (r.detectionProbability > 1.0) f.fail(*pd, f.pathOf("detection_probability"), "must lie in [0, 1]");
     }
+    r.clutterPerKm2 = f.numberOr("clutter_per_km2", 0.0, NN);
+    r.clutterMaxRangeM = nmToMetres(f.numberOr("clutter_max_range_nm", 0.0, NN));
     readPowerSchedule(f, r.power, dur);
     f.finish();
   }
@@ -326,11 +355,62 @@ void readTracker(Fields& top, sim::Scenario& s) {
       f.fail(*g, f.pathOf("gate_probability"), "must be in [0, 1) (0 disables gating)");
   }
   tr.initialSpeedSdMps = f.numberOr("initial_speed_sd_mps", tr.initialSpeedSdMps, Fields::Check::Positive);
-  if (const JsonValue* c = f.get("capacity")) {
-    if (!c->isNumber() || c->number < 1 || c->number > 1e6 || std::floor(c->number) != c->number)
-      f.fail(*c, "tracker.capacity", "must be an integer in [1, 1000000]");
-    tr.capacity = static_cast<std::size_t>(c->number);
+  const auto integer = [&f](std::string_view key, int lo, int hi, int fallback) {
+    const JsonValue* c = f.get(key);
+    if (!c) return fallback;
+    if (!c->isNumber() || c->number < lo || c->number > hi || std::floor(c->number) != c->number)
+      f.fail(*c, f.pathOf(key),
+             "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return static_cast<int>(c->number);
+  };
+  tr.capacity = static_cast<std::size_t>(integer("capacity", 1, 1000000, static_cast<int>(tr.capacity)));
+  if (const JsonValue* a = f.get("association")) {
+    if (a->isString() && a->string == "nearest")
+      tr.association = track::Association::Nearest;
+    else if (a->isString() && a->string == "known")
+      tr.association = track::Association::Known;
+    else
+      f.fail(
+          *a, f.pathOf("association"),
+          "must be \"nearest\" (global nearest neighbour) or \"known\" (seed 000: plots carry their target)");
   }
+  if (const JsonValue* c = f.get("confirm")) {
+    Fields g(top.file(), *c, "tracker.confirm");
+    tr.confirmHits = static_cast<int>(g.number("hits", Fields::Check::Positive));
+    tr.confirmSweeps = static_cast<int>(g.number("of_sweeps", Fields::Check::Positive));
+    if (tr.confirmHits > tr.confirmSweeps || tr.confirmSweeps > 32 ||
+        std::floor(g.number("hits")) != tr.confirmHits)
+      g.fail(*c, "tracker.confirm", "needs integers 1 <= hits <= of_sweeps <= 32");
+    g.finish();
+  }
+  if (const JsonValue* c = f.get("keep")) {
+    Fields g(top.file(), *c, "tracker.keep");
+    tr.keepHits = static_cast<int>(g.number("hits", Fields::Check::Positive));
+    tr.keepSweeps = static_cast<int>(g.number("of_sweeps", Fields::Check::Positive));
+    if (tr.keepHits > tr.keepSweeps || tr.keepSweeps > 32 || std::floor(g.number("hits")) != tr.keepHits)
+      g.fail(*c, "tracker.keep", "needs integers 1 <= hits <= of_sweeps <= 32");
+    g.finish();
+  }
+  tr.lostHoldS = f.numberOr("lost_hold_s", tr.lostHoldS, Fields::Check::NonNegative);
+  if (const JsonValue* a = f.get("auto_acquire")) tr.autoAcquire = f.boolean(*a, f.pathOf("auto_acquire"));
+  if (const JsonValue* z = f.get("acquisition_zones")) {
+    if (!z->isArray()) f.fail(*z, f.pathOf("acquisition_zones"), "must be an array of zones");
+    for (std::size_t i = 0; i < z->array.size(); ++i) {
+      Fields g(top.file(), z->array[i], "tracker.acquisition_zones[" + std::to_string(i) + "]");
+      track::AcquisitionZone zone;
+      zone.minRangeM = nmToMetres(g.numberOr("min_range_nm", 0.0, Fields::Check::NonNegative));
+      zone.maxRangeM = nmToMetres(g.number("max_range_nm", Fields::Check::Positive));
+      if (zone.maxRangeM <= zone.minRangeM)
+        g.fail(*g.get("max_range_nm"), g.pathOf("max_range_nm"), "must exceed min_range_nm");
+      zone.fromBearingRad = degToRad(g.numberOr("from_bearing_deg", 0.0));
+      zone.toBearingRad = degToRad(g.numberOr("to_bearing_deg", 0.0));
+      g.finish();
+      tr.zones.push_back(zone);
+    }
+  }
+  tr.dangerCpaM =
+      nmToMetres(f.numberOr("danger_cpa_nm", metresToNm(tr.dangerCpaM), Fields::Check::NonNegative));
+  tr.dangerTcpaS = 60.0 * f.numberOr("danger_tcpa_min", tr.dangerTcpaS / 60.0, Fields::Check::NonNegative);
   f.finish();
 }
 

@@ -39,6 +39,27 @@ std::string sensorLabel(const SensorStates& s) {
   return label.empty() ? "none" : label;
 }
 
+track::TrackManagerConfig trackManagerConfigFor(const TrackerSpec& t, double sweepPeriodS) {
+  track::TrackManagerConfig c;
+  c.filter.process = {t.ownAcceleration, t.targetAcceleration};
+  c.filter.gateProbability = t.gateProbability;
+  c.filter.feed = t.feed;
+  c.filter.initialSpeedSdMps = t.initialSpeedSdMps;
+  c.association = t.association;
+  c.capacity = t.capacity;
+  c.confirmHits = t.confirmHits;
+  c.confirmSweeps = t.confirmSweeps;
+  c.keepHits = t.keepHits;
+  c.keepSweeps = t.keepSweeps;
+  c.lostHoldS = t.lostHoldS;
+  c.autoAcquire = t.autoAcquire;
+  c.zones = t.zones;
+  c.sweepPeriodS = sweepPeriodS;
+  c.dangerCpaM = t.dangerCpaM;
+  c.dangerTcpaS = t.dangerTcpaS;
+  return c;
+}
+
 std::string checkScenario(const Scenario& s) {
   if (!(s.durationUs > 0)) return "duration_s: must be positive";
   if (!(s.stepUs > 0)) return "step_s: must be positive";
@@ -64,11 +85,8 @@ std::string checkScenario(const Scenario& s) {
     return "sensors.speedlog: rate and white variance must be positive, Markov sigma >= 0 and beta > 0";
   if (s.gyro.fitted && (!positive(s.gyro.rateHz) || !positive(s.gyro.sdRad)))
     return "sensors.gyro: rate and sd must be positive";
-  const sensors::RadarSpec& r = s.radar;
-  if (r.fitted &&
-      (!positive(r.sweepPeriodS) || !positive(r.rangeSdM) || !positive(r.bearingSdRad) ||
-       !positive(r.maxRangeM) || !(r.detectionProbability >= 0.0 && r.detectionProbability <= 1.0)))
-    return "sensors.radar: period, sds and maximum range must be positive, detection probability in [0, 1]";
+  if (s.radar.fitted)
+    if (const std::string problem = s.radar.check(); !problem.empty()) return "sensors.radar: " + problem;
   for (std::size_t i = 0; i < s.targets.size(); ++i) {
     const auto& t = s.targets[i];
     if (t.id < 0) return "targets: ids must be >= 0";
@@ -87,7 +105,8 @@ std::string checkScenario(const Scenario& s) {
   if (!(tr.gateProbability >= 0.0 && tr.gateProbability < 1.0))
     return "tracker.gate_probability: must be in [0, 1)";
   if (!positive(tr.initialSpeedSdMps)) return "tracker.initial_speed_sd_mps: must be positive";
-  if (tr.capacity == 0) return "tracker.capacity: must be positive";
+  if (const std::string problem = trackManagerConfigFor(tr, s.radar.sweepPeriodS).check(); !problem.empty())
+    return "tracker: " + problem;
   const FilterSpec& f = s.filter;
   if (!f.acceleration.valid()) return "filter.acceleration: sigma must be >= 0 and beta > 0";
   if (f.current && !f.current->valid()) return "filter.current: sigma must be >= 0 and beta > 0";

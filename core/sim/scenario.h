@@ -11,7 +11,7 @@
 #include "geo/local_frame.h"
 #include "sensors/own_ship_sensor_specs.h"
 #include "sensors/radar.h"
-#include "tracking/ttkf.h"
+#include "tracking/track_manager.h"
 
 namespace reckoner::sim {
 
@@ -41,7 +41,7 @@ struct TargetSpec {
   VesselMotionSpec motion;
 };
 
-/// The target trackers (TTKFs) and their bank.
+/// The target trackers (TTKFs), their bank and its track management (docs/ttkf.md).
 struct TrackerSpec {
   est::GaussMarkov ownAcceleration{0.5, 1.0};     ///< Table III "Ves" sigma (m/s^2), beta
   est::GaussMarkov targetAcceleration{0.5, 1.0};  ///< Table III "Tgt" sigma (m/s^2), beta
@@ -49,7 +49,18 @@ struct TrackerSpec {
   double gateProbability = 0.9999;
   double initialSpeedSdMps = 10.0;
   std::size_t capacity = 1000;
+  track::Association association = track::Association::Nearest;
+  int confirmHits = 3, confirmSweeps = 5;
+  int keepHits = 5, keepSweeps = 10;
+  double lostHoldS = 60.0;
+  bool autoAcquire = true;
+  std::vector<track::AcquisitionZone> zones;  ///< empty: the whole picture
+  double dangerCpaM = 1852.0;
+  double dangerTcpaS = 720.0;
 };
+
+/// The track manager configuration a scenario implies (sweep period from the radar).
+track::TrackManagerConfig trackManagerConfigFor(const TrackerSpec& t, double sweepPeriodS);
 
 struct FilterSpec {
   est::GaussMarkov acceleration{0.5, 1.0};  ///< Table I footnote: sigma_a = 0.5 m/s^2, beta_a = 1 /s

@@ -4,8 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <stdexcept>
 #include <thread>
+
+#include "common/angles.h"
+#include "common/units.h"
 
 namespace reckoner::sim {
 
@@ -48,33 +52,63 @@ OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo) {
   return r;
 }
 
-void appendTrackRows(const SimFrame& f, const Scenario& scenario, std::vector<TrackRow>& out) {
+double TrackRow::positionErrorM() const {
+  return std::hypot(estXM - trueXM, estYM - trueYM);
+}
+double TrackRow::velocityErrorMps() const {
+  return std::hypot(estVxMps - trueVxMps, estVyMps - trueVyMps);
+}
+
+void appendSweepRows(const SimFrame& f, const Scenario& scenario, const geo::LocalFrame& geo,
+                     std::vector<TrackRow>& tracks, std::vector<TargetSweepRow>& targets) {
   namespace tk = est::ttkf;
-  for (const auto& t : f.tracks) {
-    std::size_t i = 0;
-    while (i < scenario.targets.size() && scenario.targets[i].id != t.targetId) ++i;
-    if (i == scenario.targets.size()) continue;
-    const VesselTruth& truth = f.targets[i];
-    TrackRow r;
-    r.timeUs = f.timeUs;
-    r.trackId = t.trackId;
-    r.targetId = t.targetId;
-    r.trueXM = truth.position.xM;
-    r.trueYM = truth.position.yM;
-    r.trueVxMps = truth.groundVxMps();
-    r.trueVyMps = truth.groundVyMps();
-    const auto& x = t.estimate.x;
-    const auto& P = t.estimate.P;
-    r.estXM = x[tk::kTgtX];
-    r.estYM = x[tk::kTgtY];
-    r.estVxMps = x[tk::kTgtVx];
-    r.estVyMps = x[tk::kTgtVy];
-    r.sdXM = std::sqrt(P(tk::kTgtX, tk::kTgtX));
-    r.sdYM = std::sqrt(P(tk::kTgtY, tk::kTgtY));
-    r.sdVxMps = std::sqrt(P(tk::kTgtVx, tk::kTgtVx));
-    r.sdVyMps = std::sqrt(P(tk::kTgtVy, tk::kTgtVy));
-    r.nees = est::nees<tk::kStateDim>(trueTrackState(f.truth, truth) - x, P);
-    out.push_back(r);
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  for (const SweepSnapshot& sw : f.sweeps) {
+    for (std::size_t i = 0; i < scenario.targets.size(); ++i) {
+      const auto& p = sw.targets[i].position;
+      const double range = std::hypot(p.xM - sw.ownTruth.position.xM, p.yM - sw.ownTruth.position.yM);
+      targets.push_back({sw.timeUs, scenario.targets[i].id,
+                         range <= scenario.radar.maxRangeM && range >= scenario.radar.minRangeM, p.xM, p.yM});
+    }
+    for (const TrackSnapshot& t : sw.tracks) {
+      TrackRow r;
+      r.timeUs = sw.timeUs;
+      r.trackId = t.trackId;
+      r.targetId = t.targetId;
+      r.status = t.status;
+      r.dangerous = t.dangerous;
+      const auto& x = t.estimate.x;
+      const auto& P = t.estimate.P;
+      r.estXM = x[tk::kTgtX];
+      r.estYM = x[tk::kTgtY];
+      r.estVxMps = x[tk::kTgtVx];
+      r.estVyMps = x[tk::kTgtVy];
+      r.sdXM = std::sqrt(P(tk::kTgtX, tk::kTgtX));
+      r.sdYM = std::sqrt(P(tk::kTgtY, tk::kTgtY));
+      r.sdVxMps = std::sqrt(P(tk::kTgtVx, tk::kTgtVx));
+      r.sdVyMps = std::sqrt(P(tk::kTgtVy, tk::kTgtVy));
+      const geo::GeoPoint ll = geo.toGeodetic({r.estXM, r.estYM});
+      r.estLatDeg = ll.latDeg;
+      r.estLonDeg = ll.lonDeg;
+      r.courseDeg = radToDeg(t.kinematics.trueCourseRad);
+      r.speedKn = mpsToKnots(t.kinematics.speedMps);
+      r.cpaNm = t.kinematics.cpa.defined ? metresToNm(t.kinematics.cpa.cpaM) : kNan;
+      r.tcpaMin = t.kinematics.cpa.defined ? t.kinematics.cpa.tcpaS / 60.0 : kNan;
+      r.nis = t.lastNis;
+      r.nees = kNan;
+      std::size_t i = 0;
+      while (i < scenario.targets.size() && scenario.targets[i].id != t.targetId) ++i;
+      if (t.targetId >= 0 && i < scenario.targets.size()) {
+        const VesselTruth& truth = sw.targets[i];
+        r.hasTruth = true;
+        r.trueXM = truth.position.xM;
+        r.trueYM = truth.position.yM;
+        r.trueVxMps = truth.groundVxMps();
+        r.trueVyMps = truth.groundVyMps();
+        r.nees = est::nees<tk::kStateDim>(trueTrackState(sw.ownTruth, truth) - x, P);
+      }
+      tracks.push_back(r);
+    }
   }
 }
 
@@ -87,27 +121,22 @@ RunResult runScenario(const Scenario& scenario, std::uint64_t seed) {
   while (!engine.finished()) {
     const SimFrame f = engine.step();
     result.rows.push_back(makeRow(f, engine.frame()));
-    appendTrackRows(f, scenario, result.trackRows);
+    appendSweepRows(f, scenario, engine.frame(), result.trackRows, result.targetRows);
   }
   result.counters = engine.drkf().counters();
+  result.trackCounters = engine.trackers().counters();
   result.wallTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
-std::vector<RunResult> runMonteCarlo(const Scenario& scenario, int runs, int threads,
-                                     std::uint64_t baseSeed) {
-  if (runs <= 0) throw std::invalid_argument("Monte Carlo: runs must be positive");
-  if (threads <= 0) throw std::invalid_argument("Monte Carlo: threads must be positive");
-  if (const std::string problem = checkScenario(scenario); !problem.empty())
-    throw std::invalid_argument("scenario '" + scenario.name + "': " + problem);
-  std::vector<RunResult> results(static_cast<std::size_t>(runs));
+void parallelRuns(int runs, int threads, const std::function<void(int)>& fn) {
+  if (runs <= 0) return;
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(runs));
   std::atomic<int> next{0};
   auto worker = [&] {
     for (int i = next++; i < runs; i = next++) {
       try {
-        results[static_cast<std::size_t>(i)] =
-            runScenario(scenario, baseSeed + static_cast<std::uint64_t>(i));
+        fn(i);
       } catch (...) {
         errors[static_cast<std::size_t>(i)] = std::current_exception();
       }
@@ -119,6 +148,18 @@ std::vector<RunResult> runMonteCarlo(const Scenario& scenario, int runs, int thr
   for (auto& t : pool) t.join();
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);
+}
+
+std::vector<RunResult> runMonteCarlo(const Scenario& scenario, int runs, int threads,
+                                     std::uint64_t baseSeed) {
+  if (runs <= 0) throw std::invalid_argument("Monte Carlo: runs must be positive");
+  if (threads <= 0) throw std::invalid_argument("Monte Carlo: threads must be positive");
+  if (const std::string problem = checkScenario(scenario); !problem.empty())
+    throw std::invalid_argument("scenario '" + scenario.name + "': " + problem);
+  std::vector<RunResult> results(static_cast<std::size_t>(runs));
+  parallelRuns(runs, threads, [&](int i) {
+    results[static_cast<std::size_t>(i)] = runScenario(scenario, baseSeed + static_cast<std::uint64_t>(i));
+  });
   return results;
 }
 

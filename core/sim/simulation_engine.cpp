@@ -21,14 +21,6 @@ const Scenario& checked(const Scenario& s) {
   return s;
 }
 
-track::TtkfConfig ttkfConfigFor(const Scenario& s) {
-  track::TtkfConfig c;
-  c.process = {s.tracker.ownAcceleration, s.tracker.targetAcceleration};
-  c.gateProbability = s.tracker.gateProbability;
-  c.feed = s.tracker.feed;
-  c.initialSpeedSdMps = s.tracker.initialSpeedSdMps;
-  return c;
-}
 }  // namespace
 
 nav::DrkfConfig drkfConfigFor(const Scenario& s) {
@@ -69,7 +61,7 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
       loran_(scenario.loran, Rng(seed, kStreamLoran), 0),
       speedlog_(scenario.speedlog, Rng(seed, kStreamSpeedlog), 0),
       gyro_(scenario.gyro, Rng(seed, kStreamGyro)),
-      radar_(scenario.radar, Rng(seed, kStreamRadar)) {
+      radar_(scenario.radar, Rng(seed, kStreamRadar), Rng(seed, kStreamClutter)) {
   const std::array<std::pair<bool, double>, sensors::kOwnShipSensorCount> rates{
       {{scenario.gps.fitted, scenario.gps.rateHz},
        {scenario.loran.fitted, scenario.loran.rateHz},
@@ -93,7 +85,7 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
   targets_.reserve(scenario.targets.size());
   for (std::size_t i = 0; i < scenario.targets.size(); ++i)
     targets_.emplace_back(scenario.targets[i].motion, noCurrent, Rng(seed, kStreamTargetBase + i));
-  bank_.emplace(ttkfConfigFor(scenario), scenario.tracker.capacity);
+  manager_.emplace(trackManagerConfigFor(scenario.tracker, scenario.radar.sweepPeriodS));
   nextSweepUs_ = scenario.radar.fitted ? 0 : kNever;
 }
 
@@ -127,7 +119,25 @@ void SimulationEngine::advanceTargetsTo(TimeUs t) {
 }
 
 track::OwnShipInput SimulationEngine::ownShipInput() const {
-  return {drkf_->timeUs(), nav::groundStateOf(drkf_->belief()), nav::groundCovarianceOf(drkf_->belief())};
+  track::OwnShipInput in{drkf_->timeUs(), nav::groundStateOf(drkf_->belief()),
+                         nav::groundCovarianceOf(drkf_->belief()), 0.0};
+  in.convergenceRad = frame_.gridInfo({in.x[0], in.x[1]}).convergenceRad;
+  return in;
+}
+
+TrackSnapshot SimulationEngine::snapshotOf(const track::Track& t, TimeUs time, double convergence) const {
+  TrackSnapshot s;
+  s.trackId = t.id;
+  s.targetId = t.tag();
+  s.status = t.status;
+  s.dangerous = t.dangerous;
+  s.manual = t.manual;
+  s.initiatedUs = t.initiatedUs;
+  s.estimate = manager_->beliefAt(t, time);
+  s.kinematics = track::kinematicsOf(s.estimate, convergence);
+  s.radarUpdates = t.radarUpdates;
+  s.lastNis = t.lastRadar.nis;
+  return s;
 }
 
 void SimulationEngine::ownShipEpoch(TimeUs t, SimFrame& frame) {
@@ -162,20 +172,31 @@ void SimulationEngine::ownShipEpoch(TimeUs t, SimFrame& frame) {
   }
   const auto& m = frame.measurements;
   frame.updates.push_back(drkf_->update(t, std::span(m).subspan(first, m.size() - first)));
-  bank_->feedOwnShip(ownShipInput());  // one DRKF feeds every TTKF (seed 000 figure 3)
+  manager_->feedOwnShip(ownShipInput());  // one DRKF feeds every TTKF (seed 000 figure 3)
 }
 
-void SimulationEngine::startSweep(TimeUs t) {
+void SimulationEngine::startSweep(TimeUs t, SimFrame& frame) {
   truth_.advanceTo(t);
   advanceTargetsTo(t);
+  if (t > 0) {  // the previous sweep ends here
+    manager_->endSweep(t);
+    SweepSnapshot snap;
+    snap.timeUs = t;
+    snap.ownTruth = truth_.state();
+    for (const auto& m : targets_) snap.targets.push_back(m.state());
+    const double convergence = ownShipInput().convergenceRad;
+    for (const auto& tr : manager_->tracks()) snap.tracks.push_back(snapshotOf(tr, t, convergence));
+    frame.sweeps.push_back(std::move(snap));
+  }
   const VesselTruth& own = truth_.state();
   const double gamma = truthGrid().convergenceRad;
   std::vector<PendingPlot> sweep;
   for (std::size_t i = 0; i < targets_.size(); ++i) {
     const auto& p = targets_[i].state().position;
     const double trueBearing = bearingOf(p.xM - own.position.xM, p.yM - own.position.yM) + gamma;
-    sweep.push_back({radar_.beamTime(t, trueBearing), i});
+    sweep.push_back({radar_.beamTime(t, trueBearing), i, std::nullopt});
   }
+  for (const auto& c : radar_.beginSweep(t)) sweep.push_back({c.timeUs, kClutter, c});
   std::stable_sort(sweep.begin(), sweep.end(),
                    [](const auto& a, const auto& b) { return a.timeUs < b.timeUs; });
   pending_.insert(pending_.end(), sweep.begin(), sweep.end());
@@ -186,18 +207,23 @@ void SimulationEngine::radarPlot(const PendingPlot& pp, SimFrame& frame) {
   truth_.advanceTo(pp.timeUs);
   advanceTargetsTo(pp.timeUs);
   if (!scenario_.radar.power.at(pp.timeUs)) return;
-  const VesselTruth& own = truth_.state();
-  const VesselTruth& tgt = targets_[pp.target].state();
-  const auto plot = radar_.measure(pp.timeUs, tgt.position.xM - own.position.xM,
-                                   tgt.position.yM - own.position.yM, truthGrid());
+  std::optional<sensors::RadarPlot> plot = pp.plot;
+  int source = -1;
+  if (pp.target != kClutter) {
+    const VesselTruth& own = truth_.state();
+    const VesselTruth& tgt = targets_[pp.target].state();
+    plot = radar_.measure(pp.timeUs, tgt.position.xM - own.position.xM, tgt.position.yM - own.position.yM,
+                          truthGrid());
+    source = scenario_.targets[pp.target].id;
+  }
   if (!plot) return;
-  const int targetId = scenario_.targets[pp.target].id;
   frame.plots.push_back(*plot);
-  frame.plotSources.push_back(targetId);
-  // The tracker converts with the convergence at the estimated own-ship position.
+  frame.plotSources.push_back(source);
+  // The tracker converts with the convergence at the estimated own-ship position; the source goes
+  // along only for scoring (and for association in the paper's Known mode).
   const track::OwnShipInput ownEst = ownShipInput();
   const geo::GridInfo grid = frame_.gridInfo({ownEst.x[0], ownEst.x[1]});
-  bank_->processAssociated(targetId, track::toGrid(*plot, grid), ownEst);
+  manager_->addPlot(track::toGrid(*plot, grid), source);
 }
 
 SimFrame SimulationEngine::step() {
@@ -216,7 +242,7 @@ SimFrame SimulationEngine::step() {
     if (t == tOwn) {
       ownShipEpoch(t, frame);
     } else if (t == nextSweepUs_) {
-      startSweep(t);
+      startSweep(t, frame);
     } else {
       const PendingPlot p = pending_.front();
       pending_.pop_front();
@@ -228,7 +254,6 @@ SimFrame SimulationEngine::step() {
   loran_.advanceTo(end);
   speedlog_.advanceTo(end);
   drkf_->predictTo(end);
-  bank_->predictAllTo(end);
   timeUs_ = end;
 
   frame.timeUs = end;
@@ -237,8 +262,10 @@ SimFrame SimulationEngine::step() {
   frame.estimate = drkf_->belief();
   frame.sensors = sensorStatesAt(scenario_, end);
   for (const auto& m : targets_) frame.targets.push_back(m.state());
-  for (const auto& t : bank_->tracks())
-    frame.tracks.push_back({t.trackId, t.targetId, t.filter.belief(), t.radarUpdates});
+  const double convergence = ownShipInput().convergenceRad;
+  for (const auto& t : manager_->tracks()) frame.tracks.push_back(snapshotOf(t, end, convergence));
+  frame.trackEvents = manager_->takeEvents();
+  frame.capacityWarning = manager_->capacityWarning();
   return frame;
 }
 

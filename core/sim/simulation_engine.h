@@ -11,16 +11,30 @@
 #include "sensors/radar.h"
 #include "sim/scenario.h"
 #include "sim/vessel_motion.h"
-#include "tracking/ttkf_bank.h"
+#include "tracking/track_manager.h"
 
 namespace reckoner::sim {
 
-/// A track at the frame time.
+/// A track as the ARPA shows it at a time.
 struct TrackSnapshot {
   int trackId = 0;
-  int targetId = -1;  ///< the true target it follows (perfect association)
-  est::ttkf::Belief estimate;
+  int targetId = -1;  ///< the true target whose plots it mostly used (-1: clutter or none)
+  track::TrackStatus status = track::TrackStatus::Tentative;
+  bool dangerous = false;
+  bool manual = false;
+  TimeUs initiatedUs = 0;
+  est::ttkf::Belief estimate;  ///< predicted to the snapshot time (lost: at its last plot)
+  track::TrackKinematics kinematics;
   int radarUpdates = 0;
+  double lastNis = 0.0;  ///< NIS of its last radar update attempt
+};
+
+/// The picture at the end of a radar sweep: every track and the truth at that instant.
+struct SweepSnapshot {
+  TimeUs timeUs = 0;
+  VesselTruth ownTruth;
+  std::vector<VesselTruth> targets;  ///< in scenario order
+  std::vector<TrackSnapshot> tracks;
 };
 
 struct SimFrame {
@@ -34,7 +48,10 @@ struct SimFrame {
   std::vector<VesselTruth> targets;       ///< in scenario order
   std::vector<sensors::RadarPlot> plots;  ///< radar plots of this cycle
   std::vector<int> plotSources;           ///< target id of each plot (-1: clutter); not given to trackers
-  std::vector<TrackSnapshot> tracks;      ///< predicted to timeUs
+  std::vector<TrackSnapshot> tracks;      ///< at timeUs
+  std::vector<SweepSnapshot> sweeps;      ///< sweeps that ended during this cycle
+  std::vector<track::TrackEvent> trackEvents;
+  bool capacityWarning = false;
 };
 
 /// Truth of own ship and a target in the TTKF's coordinates (own acceleration: through the water,
@@ -53,7 +70,12 @@ class SimulationEngine {
   [[nodiscard]] const Scenario& scenario() const { return scenario_; }
   [[nodiscard]] const geo::LocalFrame& frame() const { return frame_; }
   [[nodiscard]] const nav::Drkf& drkf() const { return *drkf_; }
-  [[nodiscard]] const track::TtkfBank& trackers() const { return *bank_; }
+  [[nodiscard]] const track::TrackManager& trackers() const { return *manager_; }
+
+  /// Operator commands, applied between steps. Manual acquisition of the plot nearest to a point.
+  std::optional<int> acquireAt(const geo::GridPoint& p) { return manager_->acquire(p.xM, p.yM); }
+  bool cancelTrack(int id) { return manager_->cancel(id); }
+  void cancelAllTracks() { manager_->cancelAll(); }
 
  private:
   struct Clock {
@@ -63,12 +85,15 @@ class SimulationEngine {
   };
   struct PendingPlot {
     TimeUs timeUs;
-    std::size_t target;
+    std::size_t target;                      ///< index, or kClutter
+    std::optional<sensors::RadarPlot> plot;  ///< clutter: drawn at the sweep start
   };
+  static constexpr std::size_t kClutter = static_cast<std::size_t>(-1);
   [[nodiscard]] est::drkf::State trueState() const;
   const geo::GridInfo& truthGrid();
   void ownShipEpoch(TimeUs t, SimFrame& frame);
-  void startSweep(TimeUs t);
+  void startSweep(TimeUs t, SimFrame& frame);
+  [[nodiscard]] TrackSnapshot snapshotOf(const track::Track& t, TimeUs time, double convergence) const;
   void radarPlot(const PendingPlot& p, SimFrame& frame);
   void advanceTargetsTo(TimeUs t);
   [[nodiscard]] track::OwnShipInput ownShipInput() const;
@@ -84,7 +109,7 @@ class SimulationEngine {
   std::optional<nav::Drkf> drkf_;
   std::vector<VesselMotionModel> targets_;
   sensors::RadarSimulator radar_;
-  std::optional<track::TtkfBank> bank_;
+  std::optional<track::TrackManager> manager_;
   TimeUs nextSweepUs_ = 0;
   std::deque<PendingPlot> pending_;
   TimeUs timeUs_ = 0;

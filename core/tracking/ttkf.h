@@ -54,6 +54,7 @@ struct OwnShipInput {
   TimeUs timeUs = 0;
   est::Vec<4> x;
   est::Mat<4> P;
+  double convergenceRad = 0.0;  ///< grid convergence at own ship (true bearing = grid + this)
 };
 
 class Ttkf {

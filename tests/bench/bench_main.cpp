@@ -9,7 +9,7 @@
 #include "navigation/drkf.h"
 #include "resources/embedded.h"
 #include "sim/scenario_run.h"
-#include "tracking/ttkf_bank.h"
+#include "tracking/track_manager.h"
 
 namespace {
 

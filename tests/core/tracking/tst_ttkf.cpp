@@ -4,7 +4,7 @@
 
 #include "common/angles.h"
 #include "support/drkf_fixtures.h"
-#include "tracking/ttkf_bank.h"
+#include "tracking/track_manager.h"
 
 using namespace reckoner;
 using namespace reckoner::track;
@@ -138,20 +138,27 @@ class TestTtkf : public QObject {
     QVERIFY(std::abs(g.rangeVarM2 - 100.0 * 0.9996 * 0.9996) < 1e-9);
   }
   void bankHoldsAThousandTracks() {
-    TtkfConfig c;
-    c.process = {{0.05, 0.1}, {0.07, 0.1}};
-    TtkfBank bank(c, 1000);
+    // GIVEN a bank of capacity 1000 with known association WHEN 1001 targets are seen THEN 1000
+    // tracks exist, the last plot is refused and counted, the warning was raised at 95%, and one
+    // own-ship input reaches every track.
+    TrackManagerConfig c;
+    c.filter.process = {{0.05, 0.1}, {0.07, 0.1}};
+    c.association = Association::Known;
+    TrackManager bank(c);
     OwnShipInput own;
     own.timeUs = 0;
     own.x << 0.0, 0.0, 0.0, 5.0;
     own.P = est::Mat<4>::Identity();
-    for (int id = 0; id < 1001; ++id) {
-      const GridPlot p{1000, 1000.0 + id, degToRad(0.3 * id), 100.0, 1e-4};
-      const auto* t = bank.processAssociated(id, p, own);
-      QCOMPARE(t == nullptr, id == 1000);
-    }
+    bank.feedOwnShip(own);
+    for (int id = 0; id < 1001; ++id) bank.addPlot({1000, 1000.0 + id, degToRad(0.3 * id), 100.0, 1e-4}, id);
     QCOMPARE(bank.tracks().size(), std::size_t(1000));
-    QCOMPARE(bank.plotsRefusedForCapacity(), 1L);
+    QCOMPARE(bank.counters().plotsRefusedFull, 1L);
+    QVERIFY(bank.capacityWarning());
+    const auto events = bank.takeEvents();
+    QCOMPARE(std::count_if(events.begin(), events.end(),
+                           [](const TrackEvent& e) { return e.kind == TrackEvent::Kind::CapacityWarning; }),
+             1L);
+    QCOMPARE(events.back().kind, TrackEvent::Kind::CapacityFull);
     own.timeUs = 1'000'000;
     bank.feedOwnShip(own);
     for (const auto& t : bank.tracks()) QCOMPARE(t.filter.timeUs(), TimeUs{1'000'000});

@@ -1,0 +1,114 @@
+#include "io/track_output.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "io/own_ship_output.h"
+
+namespace reckoner::io {
+namespace {
+void appendNumber(std::string& s, double v, const char* fmt) {
+  s += ',';
+  if (!std::isfinite(v)) return;  // empty field
+  char buf[48];
+  std::snprintf(buf, sizeof buf, fmt, v);
+  s += buf;
+}
+}  // namespace
+
+std::string targetsCsvHeader() {
+  return "t_s,track_id,target_id,status,true_x_m,true_y_m,true_vx_mps,true_vy_mps,est_x_m,est_y_m,"
+         "est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,est_lat_deg,est_lon_deg,course_deg,"
+         "speed_kn,cpa_nm,tcpa_min,nees,nis";
+}
+
+std::string targetsCsvLine(const sim::TrackRow& r) {
+  char head[96];
+  std::snprintf(head, sizeof head, "%.6f,%d,", toSeconds(r.timeUs), r.trackId);
+  std::string s = head;
+  if (r.targetId >= 0) s.append(std::to_string(r.targetId));
+  s += ',';
+  s.append(track::trackStatusName(r.status));
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  appendNumber(s, r.hasTruth ? r.trueXM : kNan, "%.3f");
+  appendNumber(s, r.hasTruth ? r.trueYM : kNan, "%.3f");
+  appendNumber(s, r.hasTruth ? r.trueVxMps : kNan, "%.4f");
+  appendNumber(s, r.hasTruth ? r.trueVyMps : kNan, "%.4f");
+  appendNumber(s, r.estXM, "%.3f");
+  appendNumber(s, r.estYM, "%.3f");
+  appendNumber(s, r.estVxMps, "%.4f");
+  appendNumber(s, r.estVyMps, "%.4f");
+  appendNumber(s, r.sdXM, "%.4f");
+  appendNumber(s, r.sdYM, "%.4f");
+  appendNumber(s, r.sdVxMps, "%.5f");
+  appendNumber(s, r.sdVyMps, "%.5f");
+  appendNumber(s, r.estLatDeg, "%.9f");
+  appendNumber(s, r.estLonDeg, "%.9f");
+  appendNumber(s, r.courseDeg, "%.3f");
+  appendNumber(s, r.speedKn, "%.3f");
+  appendNumber(s, r.cpaNm, "%.5f");
+  appendNumber(s, r.tcpaMin, "%.4f");
+  appendNumber(s, r.nees, "%.4f");
+  appendNumber(s, r.nis, "%.4f");
+  return s;
+}
+
+void writeTargetsCsv(const std::string& path, std::span<const sim::TrackRow> rows) {
+  std::string text = targetsCsvHeader();
+  text += '\n';
+  text.reserve(rows.size() * 220);
+  for (const auto& r : rows) {
+    text.append(targetsCsvLine(r));
+    text += '\n';
+  }
+  writeTextFile(path, text);
+}
+
+void writeTrackingSummary(JsonWriter& w, const metrics::TrackingStats& s, const track::TrackCounters& c) {
+  const auto number = [&w](const char* k, double v) {
+    w.key(k);
+    if (std::isfinite(v))
+      w.value(v, 6);
+    else
+      w.null();
+  };
+  w.key("tracking").beginObject();
+  number("continuity", s.continuity);
+  w.key("breaks").value(s.breaks);
+  w.key("swaps").value(s.swaps);
+  w.key("far_swaps").value(s.farSwaps);
+  w.key("false_tracks").value(s.falseTracks);
+  w.key("false_track_sweeps").value(s.falseTrackSweeps);
+  w.key("confirmed_tracks").value(s.confirmedTracks);
+  w.key("targets_never_held").value(s.targetsNeverHeld);
+  w.key("plots").value(static_cast<std::int64_t>(c.plots));
+  w.key("plots_associated").value(static_cast<std::int64_t>(c.plotsAssociated));
+  w.key("plots_stale").value(static_cast<std::int64_t>(c.plotsStale));
+  w.key("plots_refused_full").value(static_cast<std::int64_t>(c.plotsRefusedFull));
+  w.key("tracks_started").value(static_cast<std::int64_t>(c.tracksStarted));
+  w.key("tracks_confirmed").value(static_cast<std::int64_t>(c.tracksConfirmed));
+  w.key("tracks_lost").value(static_cast<std::int64_t>(c.tracksLost));
+  w.key("tracks_dropped").value(static_cast<std::int64_t>(c.tracksDropped));
+  w.key("largest_cluster").value(static_cast<std::int64_t>(c.largestCluster));
+  w.key("targets").beginArray();
+  for (const auto& t : s.targets) {
+    w.beginObject();
+    w.key("target_id").value(t.targetId);
+    number("continuity", t.continuity);
+    w.key("sweeps_tracked").value(t.sweepsTracked);
+    w.key("sweeps_held").value(t.sweepsHeld);
+    w.key("breaks").value(t.breaks);
+    w.key("tracks").value(t.tracks);
+    number("first_held_s", t.firstHeldUs >= 0 ? toSeconds(t.firstHeldUs) : std::nan(""));
+    w.key("rows").value(t.rows);
+    number("rmse_position_m", t.rmsePositionM);
+    number("rmse_velocity_mps", t.rmseVelocityMps);
+    number("mean_nees", t.meanNees);
+    w.endObject();
+  }
+  w.endArray();
+  w.endObject();
+}
+
+}  // namespace reckoner::io

@@ -1,0 +1,22 @@
+#pragma once
+// targets.csv and the tracking part of summary.json (formats: docs/outputs.md).
+#include <span>
+#include <string>
+
+#include "io/json.h"
+#include "metrics/track_stats.h"
+#include "sim/scenario_run.h"
+
+namespace reckoner::io {
+
+/// The targets.csv header line (without newline).
+std::string targetsCsvHeader();
+/// One targets.csv line (without newline); truth columns and nees empty without truth, cpa and tcpa
+/// empty without relative motion.
+std::string targetsCsvLine(const sim::TrackRow& r);
+void writeTargetsCsv(const std::string& path, std::span<const sim::TrackRow> rows);
+
+/// Writes the "tracking" object (key included) of a run summary.
+void writeTrackingSummary(JsonWriter& w, const metrics::TrackingStats& s, const track::TrackCounters& c);
+
+}  // namespace reckoner::io

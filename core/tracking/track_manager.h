@@ -1,0 +1,184 @@
+#pragma once
+// ARPA track management (IMO MSC.192(79) 5.25) around a bank of TTKFs fed by one DRKF (seed 000
+// figure 3). Plots arrive without identity, in time order, as the beam sweeps; they are associated in
+// batches (everything received since the last own-ship input) by global nearest neighbour with an
+// optimal assignment inside a chi-square gate. New tracks start from unassociated plots inside the
+// acquisition zones (or by hand), are confirmed when seen in M of their first N sweeps, are kept
+// while seen in 5 of the last 10 sweeps and are then declared lost (last position kept for a while).
+// The paper's own mode, where every plot's target is known, is kept for its consistency tests.
+// docs/ttkf.md has the rules and their reasons.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tracking/cpa.h"
+#include "tracking/ttkf.h"
+
+namespace reckoner::track {
+
+enum class TrackStatus : std::uint8_t { Tentative, Confirmed, Lost };
+const char* trackStatusName(TrackStatus s);
+
+enum class Association : std::uint8_t {
+  Nearest,  ///< global nearest neighbour: plots carry no identity (a real radar)
+  Known,    ///< each plot's tag is its target (seed 000's assumption); tag < 0 plots are ignored
+};
+
+/// A ring sector around own ship: true bearings clockwise from `fromBearingRad` to `toBearingRad`
+/// (equal bearings: the whole circle), ranges [minRangeM, maxRangeM].
+struct AcquisitionZone {
+  double minRangeM = 0.0;
+  double maxRangeM = 0.0;
+  double fromBearingRad = 0.0;
+  double toBearingRad = 0.0;
+  [[nodiscard]] bool contains(double rangeM, double trueBearingRad) const;
+};
+
+struct TrackManagerConfig {
+  TtkfConfig filter;
+  Association association = Association::Nearest;
+  std::size_t capacity = 1000;
+  double capacityWarningFraction = 0.95;  ///< warn when this share of the capacity is in use
+  int confirmHits = 3;                    ///< M
+  int confirmSweeps = 5;                  ///< N
+  int keepHits = 5;                       ///< seen in keepHits ...
+  int keepSweeps = 10;                    ///< ... of the last keepSweeps sweeps, else lost
+  double lostHoldS = 60.0;                ///< a lost track stays shown this long
+  bool autoAcquire = true;
+  std::vector<AcquisitionZone> zones;  ///< empty with autoAcquire: the whole picture
+  double manualAcquireRadiusM = 300.0;
+  double sweepPeriodS = 2.0;
+  double dangerCpaM = 1852.0;  ///< 1 NM
+  double dangerTcpaS = 720.0;  ///< 12 min
+  /// Empty if valid, else the first problem.
+  [[nodiscard]] std::string check() const;
+};
+
+struct Track {
+  Track(int trackId, Ttkf f) : id(trackId), filter(std::move(f)) {}
+  int id = 0;
+  TrackStatus status = TrackStatus::Tentative;
+  Ttkf filter;
+  bool manual = false;
+  bool dangerous = false;
+  TimeUs initiatedUs = 0;
+  TimeUs lastPlotUs = 0;
+  TimeUs lostUs = 0;
+  std::uint32_t history = 0;  ///< bit k: seen in the k-th most recent completed sweep
+  int sweeps = 0;             ///< completed sweeps since initiation
+  bool seenThisSweep = false;
+  int radarUpdates = 0;
+  est::UpdateReport<2> lastRadar;
+  est::ttkf::Belief lastUpdate;      ///< right after the last radar update: a lost track is shown here
+  std::array<int, 10> recentTags{};  ///< tags of the last plots used (ring)
+  int tagCount = 0;
+
+  /// The most frequent tag among the last plots used (-1 if none): the true target in simulation.
+  [[nodiscard]] int tag() const;
+  [[nodiscard]] bool active() const { return status != TrackStatus::Lost; }
+};
+
+struct TrackEvent {
+  enum class Kind : std::uint8_t {
+    Acquired,         ///< a new (tentative) track
+    Confirmed,        ///< M of N reached
+    Lost,             ///< fewer than keepHits in keepSweeps: lost-target alarm
+    Dropped,          ///< a tentative track that could not be confirmed
+    Removed,          ///< a lost track's hold time is over
+    Cancelled,        ///< by the user
+    Dangerous,        ///< CPA and TCPA both under the limits (rising edge)
+    CapacityWarning,  ///< the number of tracks reached the warning level (rising edge)
+    CapacityFull,     ///< a plot was not acquired because the bank is full (once per sweep)
+  };
+  Kind kind;
+  TimeUs timeUs = 0;
+  int trackId = 0;
+};
+const char* trackEventName(TrackEvent::Kind k);
+
+struct TrackCounters {
+  long plots = 0;
+  long plotsAssociated = 0;
+  long plotsStale = 0;        ///< older than the last own-ship input: not usable
+  long plotsRefusedFull = 0;  ///< would have started a track, bank full
+  long tracksStarted = 0;
+  long tracksConfirmed = 0;
+  long tracksLost = 0;
+  long tracksDropped = 0;
+  std::size_t largestCluster = 0;  ///< largest association cluster solved (tracks + plots)
+};
+
+class TrackManager {
+ public:
+  /// Throws std::invalid_argument for an invalid configuration.
+  explicit TrackManager(const TrackManagerConfig& config);
+
+  /// The DRKF output (seed 000 figure 3): associates the plots received so far, then feeds every
+  /// active track.
+  void feedOwnShip(const OwnShipInput& own);
+  /// A plot in the grid frame, in time order; tag: its true target in simulation (-1: unknown),
+  /// used only for scoring, or for association in Known mode.
+  void addPlot(const GridPlot& plot, int tag = -1);
+  /// Closes the sweep at time t: associates the remaining plots, counts hits and misses, confirms,
+  /// drops, loses and removes tracks.
+  void endSweep(TimeUs t);
+
+  /// Manual acquisition: starts a track on the unassociated plot nearest to grid point (x, y) among
+  /// those of the current and the previous sweep, within manualAcquireRadiusM. Returns its id.
+  std::optional<int> acquire(double xGridM, double yGridM);
+  bool cancel(int trackId);
+  void cancelAll();
+
+  /// The track's belief predicted to t (not changing the track); lost tracks keep their last one.
+  [[nodiscard]] est::ttkf::Belief beliefAt(const Track& t, TimeUs time) const;
+  [[nodiscard]] const std::vector<Track>& tracks() const { return tracks_; }
+  [[nodiscard]] const Track* find(int trackId) const;
+  [[nodiscard]] std::size_t activeCount() const;
+  [[nodiscard]] bool capacityWarning() const { return capacityWarning_; }
+  [[nodiscard]] const TrackCounters& counters() const { return counters_; }
+  [[nodiscard]] const TrackManagerConfig& config() const { return config_; }
+  [[nodiscard]] const std::shared_ptr<const TtkfContext>& context() const { return ctx_; }
+  [[nodiscard]] const std::optional<OwnShipInput>& lastOwnShip() const { return lastOwn_; }
+  /// Events since the last call.
+  std::vector<TrackEvent> takeEvents();
+
+ private:
+  struct Pending {
+    GridPlot plot;
+    int tag;
+  };
+  struct FreePlot {
+    GridPlot plot;
+    int tag;
+    OwnShipInput own;  ///< own ship when the plot was left unassociated
+    int sweep;
+  };
+  void associatePending();
+  /// One GNN round between the tracks of one status and the plots not yet taken (taken[j]).
+  void associateRound(TrackStatus status, std::vector<char>& taken);
+  void associateKnown(const GridPlot& plot, int tag);
+  bool applyPlot(Track& t, const GridPlot& plot, int tag);
+  std::optional<int> startTrack(const OwnShipInput& own, const GridPlot& plot, int tag, bool manual);
+  bool inZones(const GridPlot& plot) const;
+  void updateDanger(Track& t, TimeUs now);
+  void event(TrackEvent::Kind k, TimeUs t, int id) { events_.push_back({k, t, id}); }
+
+  TrackManagerConfig config_;
+  std::shared_ptr<const TtkfContext> ctx_;
+  double assocGate_;
+  std::vector<Track> tracks_;
+  std::vector<Pending> pending_;
+  std::vector<FreePlot> free_;
+  std::optional<OwnShipInput> lastOwn_;
+  std::vector<TrackEvent> events_;
+  TrackCounters counters_;
+  int nextId_ = 1;
+  std::size_t active_ = 0;
+  int sweep_ = 0;
+  bool capacityWarning_ = false;
+  bool fullThisSweep_ = false;
+};
+
+}  // namespace reckoner::track

@@ -374,23 +374,21 @@ void readTracker(Fields& top, sim::Scenario& s) {
           *a, f.pathOf("association"),
           "must be \"nearest\" (global nearest neighbour) or \"known\" (seed 000: plots carry their target)");
   }
-  if (const JsonValue* c = f.get("confirm")) {
-    Fields g(top.file(), *c, "tracker.confirm");
-    tr.confirmHits = static_cast<int>(g.number("hits", Fields::Check::Positive));
-    tr.confirmSweeps = static_cast<int>(g.number("of_sweeps", Fields::Check::Positive));
-    if (tr.confirmHits > tr.confirmSweeps || tr.confirmSweeps > 32 ||
-        std::floor(g.number("hits")) != tr.confirmHits)
-      g.fail(*c, "tracker.confirm", "needs integers 1 <= hits <= of_sweeps <= 32");
+  // {"hits": M, "of_sweeps": N} with integers 1 <= M <= N <= 32.
+  const auto mOfN = [&](std::string_view key, int& hits, int& sweeps) {
+    const JsonValue* c = f.get(key);
+    if (!c) return;
+    Fields g(top.file(), *c, f.pathOf(key));
+    const double m = g.number("hits", Fields::Check::Positive);
+    const double n = g.number("of_sweeps", Fields::Check::Positive);
+    if (m != std::floor(m) || n != std::floor(n) || m > n || n > 32)
+      g.fail(*c, f.pathOf(key), "needs integers 1 <= hits <= of_sweeps <= 32");
     g.finish();
-  }
-  if (const JsonValue* c = f.get("keep")) {
-    Fields g(top.file(), *c, "tracker.keep");
-    tr.keepHits = static_cast<int>(g.number("hits", Fields::Check::Positive));
-    tr.keepSweeps = static_cast<int>(g.number("of_sweeps", Fields::Check::Positive));
-    if (tr.keepHits > tr.keepSweeps || tr.keepSweeps > 32 || std::floor(g.number("hits")) != tr.keepHits)
-      g.fail(*c, "tracker.keep", "needs integers 1 <= hits <= of_sweeps <= 32");
-    g.finish();
-  }
+    hits = static_cast<int>(m);
+    sweeps = static_cast<int>(n);
+  };
+  mOfN("confirm", tr.confirmHits, tr.confirmSweeps);
+  mOfN("keep", tr.keepHits, tr.keepSweeps);
   tr.lostHoldS = f.numberOr("lost_hold_s", tr.lostHoldS, Fields::Check::NonNegative);
   if (const JsonValue* a = f.get("auto_acquire")) tr.autoAcquire = f.boolean(*a, f.pathOf("auto_acquire"));
   if (const JsonValue* z = f.get("acquisition_zones")) {

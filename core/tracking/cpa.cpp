@@ -63,7 +63,7 @@ TrackKinematics kinematicsOf(const tk::Belief& b, double convergenceRad) {
     A(i, own[i]) = -1.0;
   }
   const est::Vec<4> rel = A * x;
-  const est::Mat<4> Prel = A * b.P * A.transpose();
+  const est::Mat<4> Prel = A.lazyProduct(b.P).lazyProduct(A.transpose());
   k.rangeM = rel.head<2>().norm();
   k.trueBearingRad = wrapTwoPi(bearingOf(rel[0], rel[1]) + convergenceRad);
   const double vx = x[tk::kTgtVx], vy = x[tk::kTgtVy];

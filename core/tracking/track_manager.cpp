@@ -267,16 +267,36 @@ void TrackManager::associateRound(TrackStatus status, std::vector<char>& taken) 
   std::vector<Candidate> cands;
   cands.reserve(tracks_.size());
   const TimeUs minGap = fromSeconds(0.5 * config_.sweepPeriodS);
+  // rel = A x: target minus own position and velocity.
+  Eigen::Matrix<double, 4, tk::kStateDim> A = Eigen::Matrix<double, 4, tk::kStateDim>::Zero();
+  A(0, tk::kTgtX) = A(1, tk::kTgtY) = A(2, tk::kTgtVx) = A(3, tk::kTgtVy) = 1.0;
+  A(0, tk::kOwnX) = A(1, tk::kOwnY) = A(2, tk::kOwnVx) = A(3, tk::kOwnVy) = -1.0;
+  struct StepCache {
+    TimeUs step;
+    Eigen::Matrix<double, 4, tk::kStateDim> APhi;
+    est::Mat<4> AQAt;
+  };
+  std::vector<StepCache> steps;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     const Track& t = tracks_[i];
     if (t.status != status || pending_.back().plot.timeUs - t.lastPlotUs <= minGap) continue;
-    const tk::Belief b = beliefAt(t, std::max(tRef, t.filter.timeUs()));
-    Eigen::Matrix<double, 4, tk::kStateDim> A = Eigen::Matrix<double, 4, tk::kStateDim>::Zero();
-    A(0, tk::kTgtX) = A(1, tk::kTgtY) = A(2, tk::kTgtVx) = A(3, tk::kTgtVy) = 1.0;
-    A(0, tk::kOwnX) = A(1, tk::kOwnY) = A(2, tk::kOwnVx) = A(3, tk::kOwnVy) = -1.0;
-    Candidate c{i, A * b.x, A * b.P * A.transpose(), 0.0, 0.0};
+    // Only the relative position and velocity at tRef are needed: (A Phi) x and (A Phi) P (A Phi)^T +
+    // A Q A^T, with one discretisation per distinct time step (most tracks share the last own-ship
+    // time), far cheaper than predicting all 12 states.
+    const TimeUs from = t.filter.timeUs();
+    const TimeUs step = std::max<TimeUs>(0, tRef - from);
+    auto it =
+        std::find_if(steps.begin(), steps.end(), [step](const StepCache& sc) { return sc.step == step; });
+    if (it == steps.end()) {
+      const auto& d = ctx_->discrete(step);
+      steps.push_back({step, A.lazyProduct(d.Phi.dense()), A.lazyProduct(d.Q).lazyProduct(A.transpose())});
+      it = steps.end() - 1;
+    }
+    const tk::Belief& b = t.filter.belief();
+    const Eigen::Matrix<double, 4, tk::kStateDim> APhiP = it->APhi.lazyProduct(b.P);
+    Candidate c{i, it->APhi * b.x, APhiP.lazyProduct(it->APhi.transpose()) + it->AQAt, 0.0, 0.0};
     // The filter may sit later than tRef (a plot just after an own-ship input): carry it back.
-    const double lag = toSeconds(t.filter.timeUs() > tRef ? t.filter.timeUs() - tRef : 0);
+    const double lag = toSeconds(from > tRef ? from - tRef : 0);
     c.rel.head<2>() -= c.rel.tail<2>() * lag;
     const double range = c.rel.head<2>().norm();
     const double bearing = bearingOf(c.rel[0], c.rel[1]);

@@ -1,6 +1,8 @@
 #include "tracking/ttkf.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -19,10 +21,33 @@ double gateOf(double p) {
 }
 }  // namespace
 
+namespace {
+std::atomic<std::uint64_t> contextGeneration{0};
+}
+
 TtkfContext::TtkfContext(const TtkfConfig& c)
-    : config(c), process(c.process), radarGate(gateOf(c.gateProbability)) {
+    : config(c), process(c.process), radarGate(gateOf(c.gateProbability)), generation_(++contextGeneration) {
   if (!(c.minRangeM >= 0.0) || !(c.initialSpeedSdMps > 0.0))
     throw std::invalid_argument("TTKF: min range must be >= 0 and initial speed sd > 0");
+}
+
+const tk::ProcessModel::Discrete& TtkfContext::discrete(TimeUs dt) const {
+  struct Entry {
+    const TtkfContext* owner = nullptr;
+    std::uint64_t generation = 0;
+    TimeUs dt = -1;
+    tk::ProcessModel::Discrete d;
+  };
+  // A context may be destroyed and another built at the same address: entries carry the generation
+  // of the context that wrote them.
+  thread_local std::array<Entry, 4> memo;
+  thread_local std::size_t next = 0;
+  for (const Entry& e : memo)
+    if (e.owner == this && e.generation == generation_ && e.dt == dt) return e.d;
+  Entry& e = memo[next];
+  next = (next + 1) % memo.size();
+  e = {this, generation_, dt, process.discretise(toSeconds(dt))};
+  return e.d;
 }
 
 GridPlot toGrid(const sensors::RadarPlot& p, const geo::GridInfo& grid) {
@@ -47,7 +72,7 @@ Ttkf Ttkf::initiate(std::shared_ptr<const TtkfContext> ctx, const OwnShipInput& 
   b.P(tk::kOwnAx, tk::kOwnAx) = b.P(tk::kOwnAy, tk::kOwnAy) = ownA2;
   // Placeholder target (uncorrelated, unit variance) while own ship is carried to the plot time.
   for (int i = tk::kTgtX; i < kN; ++i) b.P(i, i) = 1.0;
-  const auto d = ctx->process.discretise(toSeconds(std::max<TimeUs>(0, plot.timeUs - own.timeUs)));
+  const auto& d = ctx->discrete(std::max<TimeUs>(0, plot.timeUs - own.timeUs));
   est::predictLinear<kN>(b, d.Phi, d.Q);
 
   // Target = own position + polar offset: covariance of own position plus the converted plot's.
@@ -76,7 +101,7 @@ Ttkf Ttkf::initiate(std::shared_ptr<const TtkfContext> ctx, const OwnShipInput& 
 bool Ttkf::predictTo(TimeUs t) {
   if (t < timeUs_) return false;
   if (t == timeUs_) return true;
-  const auto d = ctx_->process.discretise(toSeconds(t - timeUs_));
+  const auto& d = ctx_->discrete(t - timeUs_);
   if (!est::predictLinear<kN>(belief_, d.Phi, d.Q)) return false;
   timeUs_ = t;
   return true;

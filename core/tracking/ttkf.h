@@ -36,6 +36,13 @@ class TtkfContext {
   const TtkfConfig config;
   const tk::ProcessModel process;
   const double radarGate;
+
+  /// process.discretise(dt), memoised: a bank predicts many filters over the same step (every track
+  /// not updated since the last own-ship input moves one DRKF period). The memo is per thread.
+  [[nodiscard]] const tk::ProcessModel::Discrete& discrete(TimeUs dt) const;
+
+ private:
+  std::uint64_t generation_;
 };
 
 /// A radar plot in the grid frame: range in grid metres, bearing clockwise from grid north.

@@ -58,6 +58,40 @@ class TestCli : public QObject {
     QCOMPARE(dr["kind"].toString(), QString("dead_reckoning"));
     QVERIFY(dr["rmse_position_m"].toDouble() > 0.0 && dr["mean_nees"].toDouble() > 0.0);
   }
+  void runWritesTargetsCsvWithTracking() {
+    // GIVEN a scenario with radar targets WHEN run THEN targets.csv has the documented columns, one row
+    // per track per sweep, clutter tracks without truth, and summary.json a tracking section.
+    QTemporaryDir dir;
+    const Result r = cli({"run", "builtin:imo-2", "--out", dir.path()});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.out.contains("continuity"));
+    const QList<QByteArray> lines = read(dir.filePath("targets.csv")).split('\n');
+    QCOMPARE(lines.front(),
+             QByteArray(
+                 "t_s,track_id,target_id,status,true_x_m,true_y_m,true_vx_mps,true_vy_mps,est_x_m,est_y_m,"
+                 "est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,est_lat_deg,est_lon_deg,course_deg,"
+                 "speed_kn,cpa_nm,tcpa_min,nees,nis"));
+    QVERIFY(lines.size() >= 119);  // 119 sweeps end within 240 s
+    const QList<QByteArray> last = lines[lines.size() - 2].split(',');
+    QCOMPARE(last.size(), 24);
+    QCOMPARE(last[2], QByteArray("1"));
+    QCOMPARE(last[3], QByteArray("confirmed"));
+    QVERIFY(std::abs(last[19].toDouble() - 14.14) < 0.5);  // true speed 14.1 kn
+    const QJsonObject t =
+        QJsonDocument::fromJson(read(dir.filePath("summary.json"))).object()["tracking"].toObject();
+    QVERIFY(t["continuity"].toDouble() > 0.99);
+    QCOMPARE(t["targets"].toArray().size(), 1);
+    QCOMPARE(t["far_swaps"].toInt(), 0);
+  }
+  void imoPrintsTheAccuracyTable() {
+    const Result r = cli({"imo", "builtin:imo-1", "--runs", "30"});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.out.contains("relative course"));
+    QVERIFY(r.out.contains("all cells pass"));
+    const Result bad = cli({"imo", "builtin:table1-test1"});  // no radar target
+    QCOMPARE(bad.code, 2);
+    QVERIFY(bad.err.contains("needs a radar and a target"));
+  }
   void sameSeedSameBytes() {
     QTemporaryDir a, b;
     QCOMPARE(cli({"run", "builtin:default", "--seed", "9", "--out", a.path(), "--quiet"}).code, 0);

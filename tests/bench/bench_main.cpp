@@ -1,10 +1,13 @@
 // reckoner-bench: speed of the estimation core (Google Benchmark). Figures go to docs/performance.md.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
 #include "common/angles.h"
+#include "common/rng.h"
 #include "io/scenario_json.h"
 #include "navigation/drkf.h"
 #include "resources/embedded.h"
@@ -165,6 +168,67 @@ void BM_TtkfOwnShipFeed(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_TtkfOwnShipFeed);
+
+/// A whole radar sweep of an ARPA with `n` established tracks and `n` plots (plus clutter when the
+/// second argument is set): association (gating, clustering, optimal assignment), n radar updates, two
+/// own-ship inputs to every track (1 Hz DRKF, 2 s sweep) and the end-of-sweep bookkeeping. The targets
+/// sit on a jittered 1.2 km grid around own ship, steaming at up to 8 m/s.
+void BM_RadarSweep(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const int clutter = static_cast<int>(state.range(1));
+  track::TrackManagerConfig c;
+  c.filter = ttkfConfig();
+  c.capacity = std::max<std::size_t>(n + 100, 1000);
+  c.manualAcquireRadiusM = 300.0;
+  track::TrackManager m(c);
+  Rng rng(42, 1);
+  const auto side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+  std::vector<std::array<double, 4>> targets;  // x, y, vx, vy
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = (static_cast<double>(i % side) - static_cast<double>(side) / 2.0) * 1200.0 +
+                     300.0 * rng.uniform() + 600.0;
+    const double y = (static_cast<double>(i / side) - static_cast<double>(side) / 2.0) * 1200.0 +
+                     300.0 * rng.uniform() + 600.0;
+    targets.push_back({x, y, 8.0 * (rng.uniform() - 0.5), 8.0 * (rng.uniform() - 0.5)});
+  }
+  const double sdB = degToRad(0.5);
+  int sweep = 0;
+  auto runSweep = [&] {
+    const double t0 = 2.0 * sweep++;
+    std::vector<std::pair<double, track::GridPlot>> plots;
+    const auto add = [&](double t, double dx, double dy) {
+      const double r = std::hypot(dx, dy) + 10.0 * rng.normal();
+      const double b = wrapTwoPi(bearingOf(dx, dy) + sdB * rng.normal());
+      plots.push_back({t, {fromSeconds(t), r, b, 100.0, sdB * sdB}});
+    };
+    for (const auto& tg : targets) {
+      const double b = wrapTwoPi(bearingOf(tg[0], tg[1] - 5.0 * t0));
+      const double t = t0 + b / kTwoPi * 2.0;
+      add(t, tg[0] + tg[2] * t, tg[1] + tg[3] * t - 5.0 * t);
+    }
+    for (int k = 0; k < clutter; ++k) {
+      const double b = kTwoPi * rng.uniform(), r = 25000.0 * std::sqrt(rng.uniform());
+      add(t0 + b / kTwoPi * 2.0, r * std::sin(b), r * std::cos(b));
+    }
+    std::sort(plots.begin(), plots.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    m.feedOwnShip(ownAt(t0));
+    bool fedMid = false;
+    for (const auto& [t, p] : plots) {
+      if (!fedMid && t >= t0 + 1.0) {
+        m.feedOwnShip(ownAt(t0 + 1.0));
+        fedMid = true;
+      }
+      m.addPlot(p);
+    }
+    if (!fedMid) m.feedOwnShip(ownAt(t0 + 1.0));
+    m.endSweep(fromSeconds(t0 + 2.0));
+  };
+  for (int k = 0; k < 6; ++k) runSweep();  // acquire and confirm
+  for (auto _ : state) runSweep();
+  state.counters["tracks"] = static_cast<double>(m.activeCount());
+  state.counters["largest_cluster"] = static_cast<double>(m.counters().largestCluster);
+}
+BENCHMARK(BM_RadarSweep)->Args({1000, 0})->Args({1000, 200})->Args({100, 0})->Unit(benchmark::kMillisecond);
 
 /// One simulated hour at 1 Hz: truth, four sensors, DRKF and output rows (with geodetic conversion).
 void BM_OneHourRun(benchmark::State& state) {

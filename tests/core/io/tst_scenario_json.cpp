@@ -138,6 +138,57 @@ class TestScenarioJson : public QObject {
     QVERIFY(std::abs(s.tracker.targetAcceleration.sigma - std::sqrt(0.005)) < 1e-12);
     QCOMPARE(s.tracker.feed, track::OwnShipFeed::Measurement);
     QCOMPARE(s.tracker.capacity, std::size_t(50));
+    QCOMPARE(s.tracker.association, track::Association::Nearest);  // default
+  }
+  void readsTheA823BudgetClutterAndTrackManagement() {
+    const std::string text = variant("\"gyro\": {\"sd_deg\": 1}", R"("gyro": {"sd_deg": 1},
+    "radar": {"error_budget": "a823", "gyro_calibration_deg": -0.5, "clutter_per_km2": 0.1,
+              "clutter_max_range_nm": 3, "min_range_m": 40}
+  },
+  "tracker": {"association": "known", "confirm": {"hits": 2, "of_sweeps": 3}, "keep": {"hits": 4, "of_sweeps": 8},
+              "auto_acquire": false, "lost_hold_s": 30, "danger_cpa_nm": 0.5, "danger_tcpa_min": 6,
+              "acquisition_zones": [{"min_range_nm": 0.5, "max_range_nm": 6, "from_bearing_deg": 270, "to_bearing_deg": 90}])");
+    const sim::Scenario s = io::parseScenario(text, "t.json");
+    QCOMPARE(s.radar.rangeSdM, 20.0);
+    QVERIFY(std::abs(radToDeg(s.radar.bearingSdRad) - std::hypot(0.05, 0.03)) < 1e-12);
+    QVERIFY(std::abs(radToDeg(s.radar.bearingBacklashRad) - 0.05) < 1e-12);
+    QVERIFY(std::abs(s.radar.rangeQuantumM - 0.02 * 1852.0) < 1e-9);
+    QVERIFY(std::abs(radToDeg(s.radar.bearingQuantumRad) - 0.2) < 1e-12);
+    QVERIFY(std::abs(radToDeg(s.radar.gyroCalibrationRad) + 0.5) < 1e-12);  // overridden
+    QVERIFY(std::abs(radToDeg(s.radar.gyroScatterSdRad) - 0.12) < 1e-12);
+    QCOMPARE(s.radar.clutterPerKm2, 0.1);
+    QVERIFY(std::abs(s.radar.clutterMaxRangeM - 3 * 1852.0) < 1e-9);
+    QCOMPARE(s.radar.minRangeM, 40.0);
+    QCOMPARE(s.tracker.association, track::Association::Known);
+    QCOMPARE(s.tracker.confirmHits, 2);
+    QCOMPARE(s.tracker.confirmSweeps, 3);
+    QCOMPARE(s.tracker.keepHits, 4);
+    QCOMPARE(s.tracker.keepSweeps, 8);
+    QVERIFY(!s.tracker.autoAcquire);
+    QCOMPARE(s.tracker.lostHoldS, 30.0);
+    QVERIFY(std::abs(s.tracker.dangerCpaM - 926.0) < 1e-9);
+    QCOMPARE(s.tracker.dangerTcpaS, 360.0);
+    QCOMPARE(s.tracker.zones.size(), std::size_t(1));
+    QVERIFY(s.tracker.zones[0].contains(3000.0, degToRad(10.0)));
+    QVERIFY(!s.tracker.zones[0].contains(3000.0, degToRad(180.0)));
+    // Without the budget the two sds are required; a wrong budget name is refused.
+    for (const auto& [radar, msg] :
+         {std::pair{R"("radar": {"range_sd_m": 20})",
+                    "sensors.radar.bearing_sd_deg: required field is missing"},
+          std::pair{R"("radar": {"error_budget": "b999"})", "sensors.radar.error_budget: must be"},
+          std::pair{R"("radar": {"error_budget": "a823", "clutter_per_km2": -1})",
+                    "sensors.radar.clutter_per_km2: must not be negative"},
+          std::pair{R"("radar": {"error_budget": "a823", "min_range_m": 50000, "max_range_nm": 12})",
+                    "sensors.radar.min_range_m: must be below max_range_nm"}}) {
+      try {
+        io::parseScenario(
+            variant("\"gyro\": {\"sd_deg\": 1}", std::string("\"gyro\": {\"sd_deg\": 1}, ") + radar),
+            "t.json");
+        QFAIL(radar);
+      } catch (const io::InputError& e) {
+        QVERIFY2(QString(e.what()).contains(msg), e.what());
+      }
+    }
   }
   void badTargetsAndTracker_data() {
     QTest::addColumn<QString>("insert");
@@ -152,6 +203,20 @@ class TestScenarioJson : public QObject {
                               << "tracker.own_ship_feed: must be";
     QTest::newRow("zero capacity") << R"("tracker": {"capacity": 0},)"
                                    << "tracker.capacity: must be an integer";
+    QTest::newRow("bad association") << R"("tracker": {"association": "oracle"},)"
+                                     << "tracker.association: must be";
+    QTest::newRow("M above N") << R"("tracker": {"confirm": {"hits": 4, "of_sweeps": 3}},)"
+                               << "tracker.confirm: needs integers";
+    QTest::newRow("fractional keep") << R"("tracker": {"keep": {"hits": 4.5, "of_sweeps": 10}},)"
+                                     << "tracker.keep: needs integers";
+    QTest::newRow("inverted zone")
+        << R"("tracker": {"acquisition_zones": [{"min_range_nm": 5, "max_range_nm": 2}]},)"
+        << "tracker.acquisition_zones[0].max_range_nm: must exceed min_range_nm";
+    QTest::newRow("zone without range")
+        << R"("tracker": {"acquisition_zones": [{"from_bearing_deg": 10}]},)"
+        << "tracker.acquisition_zones[0].max_range_nm: required field is missing";
+    QTest::newRow("negative danger cpa") << R"("tracker": {"danger_cpa_nm": -1},)"
+                                         << "tracker.danger_cpa_nm: must not be negative";
     QTest::newRow("both variance and sigma")
         << R"("tracker": {"target_acceleration": {"variance_m2_s4": 1, "sigma_mps2": 1, "beta_per_s": 1}},)"
         << "tracker.target_acceleration.sigma_mps2: give either";

@@ -4,6 +4,8 @@
 #include <map>
 
 #include "estimation/chi_square.h"
+#include "metrics/imo_accuracy.h"
+#include "metrics/track_stats.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;
@@ -80,6 +82,45 @@ class TestTrackingScenarios : public QObject {
     for (const auto& r : with.trackRows) ++rowsPerTarget[r.targetId];
     QCOMPARE(rowsPerTarget.size(), std::size_t(5));
     for (const auto& [id, n] : rowsPerTarget) QVERIFY(n >= 299);  // one row per sweep from the first on
+  }
+  void busyHarbourKeepsTrackContinuity() {
+    // GIVEN 40 targets, Pd 0.9, sea clutter and nearest-neighbour association over 30 minutes WHEN
+    // run with seeds 1-3 THEN every target is held, continuity is at least 99% and no track swaps
+    // between targets more than 500 m apart.
+    const sim::Scenario s = test::builtinScenario("busy-harbour");
+    QCOMPARE(s.targets.size(), std::size_t(40));
+    const auto runs = sim::runMonteCarlo(s, 3, 2, 1);
+    for (const auto& r : runs) {
+      const auto st = metrics::summariseTracking(r.trackRows, r.targetRows);
+      qInfo(
+          "seed %llu: continuity %.3f%%, %d breaks, %d swaps (%d far), %d false tracks, %ld clutter tracks "
+          "dropped",
+          static_cast<unsigned long long>(r.seed), 100 * st.continuity, st.breaks, st.swaps, st.farSwaps,
+          st.falseTracks, r.trackCounters.tracksDropped);
+      QCOMPARE(st.targets.size(), std::size_t(40));
+      QCOMPARE(st.targetsNeverHeld, 0);
+      QVERIFY(st.continuity >= 0.99);
+      QCOMPARE(st.farSwaps, 0);
+      QVERIFY(r.trackCounters.tracksDropped > 1000);  // the clutter was there and was rejected
+      QVERIFY(st.falseTracks <= 2);
+    }
+  }
+  void imoAccuracyTestPasses() {
+    // GIVEN the four A.823(19) scenarios with the A.823 error budget WHEN 100 runs each are scored
+    // THEN every MSC.192(79) cell passes at 1 and 3 minutes.
+    for (int n = 1; n <= 4; ++n) {
+      const sim::Scenario s = test::builtinScenario("imo-" + std::to_string(n));
+      const auto r = metrics::evaluateImo(s, 100, 2, s.seed);
+      QCOMPARE(r.tracked, 100);
+      for (const auto& row : r.rows) {
+        qInfo("imo-%d %-15s 1 min %.3f (limit %.3f)  3 min %.3f (limit %.3f) %s", n,
+              metrics::imoQuantityName(row.quantity), row.at1Min.p95, row.at1Min.limit, row.at3Min.p95,
+              row.at3Min.limit, metrics::imoQuantityUnit(row.quantity));
+        QVERIFY(row.at1Min.pass);
+        QVERIFY(row.at3Min.pass);
+      }
+      QVERIFY(r.pass);
+    }
   }
 };
 

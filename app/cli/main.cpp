@@ -1,6 +1,7 @@
 // reckoner-cli: headless runs of the Reckoner engine.
 //   reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]
 //   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]
+//   reckoner-cli compare SCENARIO [--runs N] [--targets LIST] [--threads K] [--seed N] --out DIR [--quiet]
 //   reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]   (exit 1 if a cell fails)
 //   reckoner-cli validate SCENARIO...
 //   reckoner-cli scenarios
@@ -26,6 +27,7 @@
 #include "metrics/own_ship_stats.h"
 #include "metrics/track_stats.h"
 #include "resources/embedded.h"
+#include "sim/comparison.h"
 #include "sim/scenario_run.h"
 
 namespace {
@@ -36,6 +38,7 @@ constexpr const char* kUsage =
     "usage:\n"
     "  reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]\n"
     "  reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]\n"
+    "  reckoner-cli compare SCENARIO [--runs N] [--targets 1,2,5,10,20] [--threads K] [--seed N] --out DIR\n"
     "  reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]\n"
     "  reckoner-cli validate SCENARIO...\n"
     "  reckoner-cli scenarios\n"
@@ -259,6 +262,71 @@ int cmdImo(int argc, char** argv) {
   return all ? 0 : 1;
 }
 
+std::vector<int> parseTargetCounts(const std::string& text) {
+  std::vector<int> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    out.push_back(static_cast<int>(parseCount("targets", item, 1, 200)));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+int cmdCompare(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"runs", "threads", "seed", "out", "targets"});
+  if (a.positional.size() != 1) throw UsageError("compare needs exactly one SCENARIO");
+  const int runs =
+      a.options.count("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 10000)) : 10;
+  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = a.options.count("threads")
+                          ? static_cast<int>(parseCount("threads", a.options.at("threads"), 1, 1024))
+                          : hw;
+  const std::vector<int> counts = a.options.count("targets") ? parseTargetCounts(a.options.at("targets"))
+                                                             : std::vector<int>{1, 2, 5, 10, 20};
+  const sim::Scenario s = loadScenario(a.positional[0]);
+  const std::uint64_t seed =
+      a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+  const std::string out = prepareOutDir(a);
+  const auto rows = sim::compareCoupled(s, counts, runs, threads, seed);
+  std::string csv =
+      "targets,coupled_states,runs,decoupled_rmse_position_m,coupled_rmse_position_m,decoupled_rmse_velocity_"
+      "mps,"
+      "coupled_rmse_velocity_mps,decoupled_mean_nees4,coupled_mean_nees4,decoupled_us_per_cycle,"
+      "coupled_us_per_cycle,cycle_ratio,decoupled_propagation_us,coupled_propagation_us,propagation_ratio,"
+      "eq10_ratio,eq10_saving_pct\n";
+  for (const auto& r : rows) {
+    char buf[512];
+    std::snprintf(
+        buf, sizeof buf, "%d,%d,%d,%.4f,%.4f,%.5f,%.5f,%.4f,%.4f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
+        r.targets, r.coupledDim, r.runs, r.decoupledRmsePositionM, r.coupledRmsePositionM,
+        r.decoupledRmseVelocityMps, r.coupledRmseVelocityMps, r.decoupledMeanNees, r.coupledMeanNees,
+        r.decoupledUsPerCycle, r.coupledUsPerCycle, r.cycleRatio(), r.decoupledPropagationUs,
+        r.coupledPropagationUs, r.propagationRatio(), r.eq10Ratio, r.eq10SavingPct);
+    csv += buf;
+  }
+  io::writeTextFile(out + "/compare.csv", csv);
+  if (a.quiet) return 0;
+  std::printf("Decoupled (DRKF + TTKF bank) vs coupled (11 + 6n states): %s, %d runs, known association\n",
+              s.name.c_str(), runs);
+  std::printf("  %3s %4s | %-17s | %-17s | %-11s | %-17s | %-23s | %s\n", "n", "N", "pos RMSE dec/cpl m",
+              "vel RMSE dec/cpl", "NEES(4)", "us/cycle dec/cpl", "propagation us dec/cpl",
+              "ratio: cycle, prop, eq.10");
+  for (const auto& r : rows)
+    std::printf(
+        "  %3d %4d | %7.2f / %7.2f | %6.3f / %6.3f | %4.2f/%4.2f | %7.1f / %7.1f | %9.2f / %9.2f | %6.1f "
+        "%6.1f %6.1f (%.1f%%)\n",
+        r.targets, r.coupledDim, r.decoupledRmsePositionM, r.coupledRmsePositionM, r.decoupledRmseVelocityMps,
+        r.coupledRmseVelocityMps, r.decoupledMeanNees, r.coupledMeanNees, r.decoupledUsPerCycle,
+        r.coupledUsPerCycle, r.decoupledPropagationUs, r.coupledPropagationUs, r.cycleRatio(),
+        r.propagationRatio(), r.eq10Ratio, r.eq10SavingPct);
+  std::printf("  wrote %s/compare.csv\n", out.c_str());
+  return 0;
+}
+
 int cmdValidate(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {});
   if (a.positional.empty()) throw UsageError("validate needs at least one SCENARIO");
@@ -291,6 +359,7 @@ int main(int argc, char** argv) {
     if (cmd == "montecarlo") return cmdMonteCarlo(argc, argv);
     if (cmd == "validate") return cmdValidate(argc, argv);
     if (cmd == "imo") return cmdImo(argc, argv);
+    if (cmd == "compare") return cmdCompare(argc, argv);
     if (cmd == "scenarios") return cmdScenarios();
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {

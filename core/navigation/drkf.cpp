@@ -120,6 +120,12 @@ const geo::GridInfo& Drkf::gridAt(double xM, double yM) {
   return grid_;
 }
 
+void Drkf::setBelief(const Belief& b, TimeUs t) {
+  if (!b.x.allFinite() || !b.P.allFinite()) throw std::invalid_argument("DRKF: belief must be finite");
+  belief_ = b;
+  timeUs_ = t;
+}
+
 bool Drkf::predictTo(TimeUs t) {
   if (t < timeUs_) return false;
   if (t == timeUs_) return true;

@@ -79,6 +79,10 @@ class Drkf {
 
   [[nodiscard]] const drkf::Belief& belief() const { return belief_; }
   [[nodiscard]] TimeUs timeUs() const { return timeUs_; }
+  /// Replaces the belief (gate and counter state kept): the coupled filter of the comparison runs
+  /// its own-ship updates through this filter on the marginal of its joint state. Throws
+  /// std::invalid_argument for a non-finite belief.
+  void setBelief(const drkf::Belief& b, TimeUs t);
   [[nodiscard]] const DrkfCounters& counters() const { return counters_; }
   [[nodiscard]] const geo::LocalFrame& frame() const { return frame_; }
 

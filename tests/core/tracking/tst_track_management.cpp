@@ -10,6 +10,7 @@
 #include "common/rng.h"
 #include "estimation/numeric_jacobian.h"
 #include "tracking/assignment.h"
+#include "tracking/coupled_drttkf.h"
 #include "tracking/cpa.h"
 #include "tracking/track_manager.h"
 
@@ -149,6 +150,49 @@ class TestTrackManagement : public QObject {
     QVERIFY(std::abs(k.relativeSpeedMps - std::sqrt(50.0)) < 1e-12);
     QVERIFY(std::abs(radToDeg(k.trueBearingRad) - 91.0) < 1e-9);
     QVERIFY(std::abs(k.sdSpeedMps - 0.1) < 1e-12);
+  }
+
+  // ---- coupled filter
+  void coupledFilterWithoutTargetsIsTheDrkf() {
+    // GIVEN the coupled filter and a DRKF from the same belief WHEN fed the same samples THEN with no
+    // target they agree exactly; a target's initiation puts it at the plot with own position's
+    // covariance plus the converted plot's.
+    nav::DrkfConfig dc;
+    dc.process.current = {0.1, 0.1};
+    dc.process.acceleration = {0.05, 0.1};
+    dc.process.loranError = {30.0, 0.25};
+    dc.process.speedlogError = {0.1, 0.5};
+    const geo::LocalFrame frame(47.0, -122.0);
+    est::drkf::Belief b;
+    b.x.setZero();
+    b.x[est::drkf::kVelY] = 5.0;
+    b.P = nav::initialCovariance(dc.process, 10.0, 0.3);
+    nav::Drkf d(dc, frame, b, 0);
+    CoupledConfig cc;
+    cc.own = dc;
+    CoupledDrttkf c(cc, frame, b, 0);
+    for (int k = 1; k <= 5; ++k) {
+      const TimeUs t = k * kMicrosPerSecond;
+      const std::vector<sensors::OwnShipSample> s{
+          sensors::GpsSample{t, {0.3 * k, 5.0 * k + 1.0}, 25.0, true, 0.0, 5.0, 0.01},
+          sensors::GyroSample{t, 0.01, 1e-4}};
+      d.update(t, s);
+      c.updateOwnShip(t, s);
+    }
+    QVERIFY((c.ownShip().x - d.belief().x).cwiseAbs().maxCoeff() < 1e-9);
+    QVERIFY((c.ownShip().P - d.belief().P).cwiseAbs().maxCoeff() < 1e-9);
+    const GridPlot p{5 * kMicrosPerSecond, 1000.0, 0.0, 100.0, 1e-4};
+    QCOMPARE(c.updateRadar(7, p).status, est::UpdateStatus::Accepted);
+    QCOMPARE(c.dim(), 17);
+    QCOMPARE(c.indexOf(7), 0);
+    QVERIFY(std::abs(c.target(0)[1] - (d.belief().x[est::drkf::kPosY] + 1000.0)) < 1e-9);
+    const double expectVarX = d.belief().P(est::drkf::kPosX, est::drkf::kPosX) + 1e-4 * 1000.0 * 1000.0;
+    QVERIFY(std::abs(c.targetCovariance(0)(0, 0) - expectVarX) < 1e-6);
+    // A second plot updates it and shrinks its position variance.
+    const double before = c.targetCovariance(0)(1, 1);
+    QCOMPARE(c.updateRadar(7, {7 * kMicrosPerSecond, 1000.0 - 10.0, 0.0, 100.0, 1e-4}).status,
+             est::UpdateStatus::Accepted);
+    QVERIFY(c.targetCovariance(0)(1, 1) < before + 200.0);
   }
 
   // ---- optimal assignment

@@ -6,6 +6,7 @@
 #include "estimation/chi_square.h"
 #include "metrics/imo_accuracy.h"
 #include "metrics/track_stats.h"
+#include "sim/comparison.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;
@@ -121,6 +122,34 @@ class TestTrackingScenarios : public QObject {
       }
       QVERIFY(r.pass);
     }
+  }
+  void decoupledPerformsCloseToCoupled() {
+    // GIVEN the matched-model targets (1 and 3 of them) and identical measurement streams WHEN the
+    // DRKF + TTKF bank and the optimal coupled filter (11 + 6n states) both run THEN their target RMSE
+    // agree within 3%, both are consistent (4-state NEES near 4), and the coupled filter has 11 + 6n
+    // states. (seed 000 section 2.3: "performed close to the coupled system".)
+    const sim::Scenario s = test::builtinScenario("ttkf-matched");
+    const auto rows = sim::compareCoupled(s, {1, 3}, 3, 2, 1);
+    QCOMPARE(rows.size(), std::size_t(2));
+    for (const auto& r : rows) {
+      qInfo(
+          "n=%d: position RMSE %.2f vs %.2f m, velocity %.3f vs %.3f m/s, NEES %.2f vs %.2f, cost ratio %.1f "
+          "(eq. 10: %.1f)",
+          r.targets, r.decoupledRmsePositionM, r.coupledRmsePositionM, r.decoupledRmseVelocityMps,
+          r.coupledRmseVelocityMps, r.decoupledMeanNees, r.coupledMeanNees, r.propagationRatio(),
+          r.eq10Ratio);
+      QCOMPARE(r.coupledDim, 11 + 6 * r.targets);
+      QVERIFY(std::abs(r.coupledRmsePositionM / r.decoupledRmsePositionM - 1.0) < 0.03);
+      QVERIFY(std::abs(r.coupledRmseVelocityMps / r.decoupledRmseVelocityMps - 1.0) < 0.03);
+      QVERIFY(r.coupledMeanNees > 3.0 && r.coupledMeanNees < 5.5);
+      QVERIFY(r.decoupledMeanNees > 3.0 && r.decoupledMeanNees < 5.5);
+      QVERIFY(r.coupledUsPerCycle > r.decoupledUsPerCycle);  // measured, not asserted against a figure
+    }
+    QVERIFY(std::abs(rows[0].eq10Ratio - 17.0 * 17 * 17 / (1331.0 + 1728.0)) < 1e-9);
+    // withTargetCount copies targets turned about own ship, with fresh ids.
+    const sim::Scenario s12 = sim::withTargetCount(s, 12);
+    QCOMPARE(s12.targets.size(), std::size_t(12));
+    QVERIFY(sim::checkScenario(s12).empty());
   }
 };
 

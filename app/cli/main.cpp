@@ -1,23 +1,31 @@
 // reckoner-cli: headless runs of the Reckoner engine.
 //   reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]
 //   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]
+//   reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association] --out DIR
+//   reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR
 //   reckoner-cli compare SCENARIO [--runs N] [--targets LIST] [--threads K] [--seed N] --out DIR [--quiet]
 //   reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]   (exit 1 if a cell fails)
 //   reckoner-cli validate SCENARIO...
 //   reckoner-cli scenarios
 // SCENARIO is a file path or builtin:NAME (see `reckoner-cli scenarios`).
 // Exit codes: 0 success, 2 bad input or usage (one line on stderr), 1 any other failure.
+#include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "common/angles.h"
 #include "io/input_error.h"
 #include "io/own_ship_output.h"
 #include "io/scenario_json.h"
@@ -28,6 +36,8 @@
 #include "metrics/track_stats.h"
 #include "resources/embedded.h"
 #include "sim/comparison.h"
+#include "sim/nmea_export.h"
+#include "sim/replay.h"
 #include "sim/scenario_run.h"
 
 namespace {
@@ -38,6 +48,9 @@ constexpr const char* kUsage =
     "usage:\n"
     "  reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]\n"
     "  reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]\n"
+    "  reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association] --out "
+    "DIR\n"
+    "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
     "  reckoner-cli compare SCENARIO [--runs N] [--targets 1,2,5,10,20] [--threads K] [--seed N] --out DIR\n"
     "  reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]\n"
     "  reckoner-cli validate SCENARIO...\n"
@@ -53,6 +66,7 @@ struct Args {
   std::vector<std::string> positional;
   std::map<std::string, std::string> options;  // --name value
   bool quiet = false;
+  bool assumeAssociation = false;
 };
 
 Args parseArgs(int argc, char** argv, int first, const std::vector<std::string>& valued) {
@@ -61,6 +75,9 @@ Args parseArgs(int argc, char** argv, int first, const std::vector<std::string>&
     const std::string s = argv[i];
     if (s == "--quiet") {
       a.quiet = true;
+    } else if (s == "--assume-association" &&
+               std::find(valued.begin(), valued.end(), "assume-association") != valued.end()) {
+      a.assumeAssociation = true;
     } else if (s.rfind("--", 0) == 0) {
       const std::string name = s.substr(2);
       if (std::find(valued.begin(), valued.end(), name) == valued.end())
@@ -327,6 +344,87 @@ int cmdCompare(int argc, char** argv) {
   return 0;
 }
 
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw io::InputError(path, 0, "", "cannot open: " + std::string(std::strerror(errno)));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+int cmdReplay(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"nmea", "radar", "config", "out", "assume-association"});
+  if (!a.positional.empty()) throw UsageError("replay takes no positional arguments (use --nmea FILE)");
+  if (!a.options.count("nmea")) throw UsageError("--nmea FILE is required");
+  sim::ReplayOptions o;
+  if (a.options.count("config")) {
+    o.settings = loadScenario(a.options.at("config"));
+    o.originFromSettings = true;
+  } else {
+    o.settings = loadScenario("builtin:default");
+  }
+  if (!o.settings.radar.fitted) {  // the radar noise a replay assumes without a configured radar
+    o.settings.radar.fitted = true;
+    o.settings.radar.rangeSdM = 20.0;
+    o.settings.radar.bearingSdRad = degToRad(0.5);
+  }
+  o.assumeAssociation = a.assumeAssociation;
+  const std::string out = prepareOutDir(a);
+  const std::string nmeaPath = a.options.at("nmea");
+  const std::string nmea = readFile(nmeaPath);
+  std::optional<std::string> radar;
+  if (a.options.count("radar")) radar = readFile(a.options.at("radar"));
+  const sim::ReplayResult r = sim::replay(nmea, nmeaPath, radar ? &*radar : nullptr,
+                                          a.options.count("radar") ? a.options.at("radar") : "", o);
+  io::writeReplayOwnShipCsv(out + "/ownship.csv", r);
+  if (radar) io::writeReplayTargetsCsv(out + "/targets.csv", r);
+  io::writeTextFile(out + "/summary.json", io::replaySummaryJson(r, nmeaPath));
+  if (a.quiet) return 0;
+  const auto& st = r.stats;
+  std::printf("Reckoner replay of %s%s%s from %s\n", nmeaPath.c_str(), radar ? " and " : "",
+              radar ? a.options.at("radar").c_str() : "", sim::formatIso8601(r.utc0).c_str());
+  std::printf(
+      "  NMEA: %ld lines, %ld sentences used, %ld skipped (%ld bad checksum, %ld unknown, %ld malformed, "
+      "%ld untimed, %ld out of order, %ld unusable)\n",
+      st.nmeaLines, st.sentencesUsed, st.nmeaSkipped(), st.badChecksum, st.unknownSentences, st.malformed,
+      st.untimed, st.outOfOrder, st.unusable);
+  std::printf("  %ld own-ship epochs (%ld before the first fix), origin %s %s\n", st.epochs,
+              st.epochsBeforeFix, io::formatLatitude(r.origin.latDeg).c_str(),
+              io::formatLongitude(r.origin.lonDeg).c_str());
+  if (radar)
+    std::printf(
+        "  radar: %ld lines, %ld plots, %ld bad, %ld out of order; %ld tracks started, %ld confirmed (%s)\n",
+        st.radarLines, st.radarPlots, st.radarBad, st.radarOutOfOrder, r.tracking.tracksStarted,
+        r.tracking.tracksConfirmed, o.assumeAssociation ? "association by target_id" : "nearest neighbour");
+  if (!r.own.empty()) {
+    const auto& last = r.own.back();
+    std::printf("  final estimate %s %s, position sd %.1f m\n", io::formatLatitude(last.estLatDeg).c_str(),
+                io::formatLongitude(last.estLonDeg).c_str(), std::hypot(last.sdXM, last.sdYM));
+  }
+  std::printf("  wrote %s/ownship.csv%s and %s/summary.json\n", out.c_str(),
+              radar ? (", " + out + "/targets.csv").c_str() : "", out.c_str());
+  return 0;
+}
+
+int cmdExport(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"seed", "out", "date"});
+  if (a.positional.size() != 1) throw UsageError("export needs exactly one SCENARIO");
+  const sim::Scenario s = loadScenario(a.positional[0]);
+  const std::uint64_t seed =
+      a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+  const std::string date = a.options.count("date") ? a.options.at("date") : "2026-01-01";
+  const auto utc0 = sim::parseIso8601(date + "T00:00:00Z");
+  if (!utc0) throw UsageError("--date: expected YYYY-MM-DD, got '" + date + "'");
+  const std::string out = prepareOutDir(a);
+  const auto e = sim::exportRun(s, seed, *utc0);
+  io::writeTextFile(out + "/ownship.nmea", e.nmea);
+  io::writeTextFile(out + "/radar.csv", e.radarCsv);
+  if (!a.quiet)
+    std::printf("wrote %s/ownship.nmea and %s/radar.csv (%s, seed %llu, from %sT00:00:00Z)\n", out.c_str(),
+                out.c_str(), s.name.c_str(), static_cast<unsigned long long>(seed), date.c_str());
+  return 0;
+}
+
 int cmdValidate(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {});
   if (a.positional.empty()) throw UsageError("validate needs at least one SCENARIO");
@@ -360,6 +458,8 @@ int main(int argc, char** argv) {
     if (cmd == "validate") return cmdValidate(argc, argv);
     if (cmd == "imo") return cmdImo(argc, argv);
     if (cmd == "compare") return cmdCompare(argc, argv);
+    if (cmd == "replay") return cmdReplay(argc, argv);
+    if (cmd == "export") return cmdExport(argc, argv);
     if (cmd == "scenarios") return cmdScenarios();
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {

@@ -65,6 +65,91 @@ void writeTargetsCsv(const std::string& path, std::span<const sim::TrackRow> row
   writeTextFile(path, text);
 }
 
+void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) {
+  std::string text =
+      "t_s,utc,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,est_lat_deg,est_lon_"
+      "deg,"
+      "sensors,rows\n";
+  char buf[512];
+  for (const auto& o : r.own) {
+    std::snprintf(buf, sizeof buf, "%.6f,%s,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f,%.9f,%.9f,%s,%d\n",
+                  toSeconds(o.timeUs), sim::formatIso8601(o.utcUs).c_str(), o.estXM, o.estYM, o.estVxMps,
+                  o.estVyMps, o.sdXM, o.sdYM, o.sdVxMps, o.sdVyMps, o.estLatDeg, o.estLonDeg,
+                  o.sensors.c_str(), o.rowsApplied);
+    text.append(buf);
+  }
+  writeTextFile(path, text);
+}
+
+void writeReplayTargetsCsv(const std::string& path, const sim::ReplayResult& r) {
+  std::string text =
+      "t_s,utc,track_id,target_id,status,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,"
+      "sd_vy_mps,est_lat_deg,est_lon_deg,course_deg,speed_kn,cpa_nm,tcpa_min,nis\n";
+  for (std::size_t i = 0; i < r.tracks.size(); ++i) {
+    const sim::TrackRow& t = r.tracks[i];
+    char head[128];
+    std::snprintf(head, sizeof head, "%.6f,%s,%d,", toSeconds(t.timeUs),
+                  sim::formatIso8601(r.trackRowUtc[i]).c_str(), t.trackId);
+    std::string s = head;
+    if (t.targetId >= 0) s.append(std::to_string(t.targetId));
+    s += ',';
+    s.append(track::trackStatusName(t.status));
+    appendNumber(s, t.estXM, "%.3f");
+    appendNumber(s, t.estYM, "%.3f");
+    appendNumber(s, t.estVxMps, "%.4f");
+    appendNumber(s, t.estVyMps, "%.4f");
+    appendNumber(s, t.sdXM, "%.4f");
+    appendNumber(s, t.sdYM, "%.4f");
+    appendNumber(s, t.sdVxMps, "%.5f");
+    appendNumber(s, t.sdVyMps, "%.5f");
+    appendNumber(s, t.estLatDeg, "%.9f");
+    appendNumber(s, t.estLonDeg, "%.9f");
+    appendNumber(s, t.courseDeg, "%.3f");
+    appendNumber(s, t.speedKn, "%.3f");
+    appendNumber(s, t.cpaNm, "%.5f");
+    appendNumber(s, t.tcpaMin, "%.4f");
+    appendNumber(s, t.nis, "%.4f");
+    text.append(s);
+    text += '\n';
+  }
+  writeTextFile(path, text);
+}
+
+std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nmeaName) {
+  JsonWriter w;
+  const auto& s = r.stats;
+  const auto n = [&w](const char* k, long v) { w.key(k).value(static_cast<std::int64_t>(v)); };
+  w.beginObject();
+  w.key("nmea_file").value(nmeaName);
+  w.key("utc_start").value(sim::formatIso8601(r.utc0));
+  w.key("origin").beginArray().value(r.origin.latDeg).value(r.origin.lonDeg).endArray();
+  w.key("nmea").beginObject();
+  n("lines", s.nmeaLines);
+  n("sentences_used", s.sentencesUsed);
+  n("skipped", s.nmeaSkipped());
+  n("bad_checksum", s.badChecksum);
+  n("unknown", s.unknownSentences);
+  n("malformed", s.malformed);
+  n("untimed", s.untimed);
+  n("out_of_order", s.outOfOrder);
+  n("unusable", s.unusable);
+  n("epochs", s.epochs);
+  n("epochs_before_fix", s.epochsBeforeFix);
+  w.endObject();
+  w.key("radar").beginObject();
+  n("lines", s.radarLines);
+  n("plots", s.radarPlots);
+  n("bad", s.radarBad);
+  n("out_of_order", s.radarOutOfOrder);
+  n("before_fix", s.radarBeforeFix);
+  n("tracks_started", r.tracking.tracksStarted);
+  n("tracks_confirmed", r.tracking.tracksConfirmed);
+  n("tracks_lost", r.tracking.tracksLost);
+  w.endObject();
+  w.endObject();
+  return w.str();
+}
+
 void writeTrackingSummary(JsonWriter& w, const metrics::TrackingStats& s, const track::TrackCounters& c) {
   const auto number = [&w](const char* k, double v) {
     w.key(k);

@@ -5,6 +5,7 @@
 
 #include "io/json.h"
 #include "metrics/track_stats.h"
+#include "sim/replay.h"
 #include "sim/scenario_run.h"
 
 namespace reckoner::io {
@@ -15,6 +16,12 @@ std::string targetsCsvHeader();
 /// empty without relative motion.
 std::string targetsCsvLine(const sim::TrackRow& r);
 void writeTargetsCsv(const std::string& path, std::span<const sim::TrackRow> rows);
+
+/// Replay outputs: ownship.csv and targets.csv without truth columns, with a utc column; summary.json
+/// with the input counts.
+void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r);
+void writeReplayTargetsCsv(const std::string& path, const sim::ReplayResult& r);
+std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nmeaName);
 
 /// Writes the "tracking" object (key included) of a run summary.
 void writeTrackingSummary(JsonWriter& w, const metrics::TrackingStats& s, const track::TrackCounters& c);

@@ -92,6 +92,29 @@ class TestCli : public QObject {
     QCOMPARE(bad.code, 2);
     QVERIFY(bad.err.contains("needs a radar and a target"));
   }
+  void exportThenReplay() {
+    // GIVEN a run exported as NMEA and radar CSV WHEN replayed THEN ownship.csv and targets.csv carry a
+    // utc column and no truth, and summary.json counts the input; a missing file is exit code 2.
+    QTemporaryDir dir;
+    QCOMPARE(cli({"export", "builtin:imo-2", "--date", "2026-11-23", "--out", dir.path()}).code, 0);
+    const Result r =
+        cli({"replay", "--nmea", dir.filePath("ownship.nmea"), "--radar", dir.filePath("radar.csv"),
+             "--config", "builtin:imo-2", "--out", dir.filePath("replay")});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.out.contains("0 skipped"));
+    const QList<QByteArray> own = read(dir.filePath("replay/ownship.csv")).split('\n');
+    QVERIFY(own.front().startsWith("t_s,utc,est_x_m"));
+    QVERIFY(own[1].split(',')[1].startsWith("2026-11-23T00:00:01"));
+    const QList<QByteArray> tg = read(dir.filePath("replay/targets.csv")).split('\n');
+    QVERIFY(tg.front().startsWith("t_s,utc,track_id,target_id,status,est_x_m"));
+    QVERIFY(tg.size() > 100);
+    const QJsonObject s = QJsonDocument::fromJson(read(dir.filePath("replay/summary.json"))).object();
+    QCOMPARE(s["nmea"].toObject()["bad_checksum"].toInt(), 0);
+    QVERIFY(s["radar"].toObject()["plots"].toInt() > 100);
+    const Result missing = cli({"replay", "--nmea", dir.filePath("nope.nmea"), "--out", dir.path()});
+    QCOMPARE(missing.code, 2);
+    QVERIFY(missing.err.contains("nope.nmea"));
+  }
   void sameSeedSameBytes() {
     QTemporaryDir a, b;
     QCOMPARE(cli({"run", "builtin:default", "--seed", "9", "--out", a.path(), "--quiet"}).code, 0);

@@ -1,0 +1,268 @@
+#include "io/nmea.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace reckoner::io::nmea {
+namespace {
+
+struct Bad {
+  std::string reason;
+};
+
+std::vector<std::string_view> split(std::string_view s) {
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = s.find(',', start);
+    out.push_back(s.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::optional<double> number(std::string_view f) {
+  if (f.empty()) return std::nullopt;
+  double v = 0.0;
+  const auto [p, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+  if (ec != std::errc() || p != f.data() + f.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+double required(const std::vector<std::string_view>& f, std::size_t i, const char* what) {
+  if (i >= f.size()) throw Bad{std::string(what) + ": field missing"};
+  const auto v = number(f[i]);
+  if (!v) throw Bad{std::string(what) + ": not a number '" + std::string(f[i]) + "'"};
+  return *v;
+}
+
+std::optional<double> optionalNumber(const std::vector<std::string_view>& f, std::size_t i,
+                                     const char* what) {
+  if (i >= f.size() || f[i].empty()) return std::nullopt;
+  const auto v = number(f[i]);
+  if (!v) throw Bad{std::string(what) + ": not a number '" + std::string(f[i]) + "'"};
+  return v;
+}
+
+/// ddmm.mmmm / dddmm.mmmm with hemisphere.
+double angle(const std::vector<std::string_view>& f, std::size_t i, int degreeDigits, char pos, char neg,
+             const char* what) {
+  if (i + 1 >= f.size() || f[i].size() < static_cast<std::size_t>(degreeDigits + 2))
+    throw Bad{std::string(what) + ": missing or too short"};
+  const auto deg = number(f[i].substr(0, static_cast<std::size_t>(degreeDigits)));
+  const auto min = number(f[i].substr(static_cast<std::size_t>(degreeDigits)));
+  if (!deg || !min || *min < 0.0 || *min >= 60.0 || *deg < 0.0)
+    throw Bad{std::string(what) + ": malformed '" + std::string(f[i]) + "'"};
+  const double v = *deg + *min / 60.0;
+  if (v > (degreeDigits == 2 ? 90.0 : 180.0)) throw Bad{std::string(what) + ": out of range"};
+  if (f[i + 1] == std::string_view(&pos, 1)) return v;
+  if (f[i + 1] == std::string_view(&neg, 1)) return -v;
+  throw Bad{std::string(what) + ": hemisphere must be " + pos + " or " + neg};
+}
+
+double time(const std::vector<std::string_view>& f, std::size_t i) {
+  if (i >= f.size()) throw Bad{"time: field missing"};
+  const auto t = parseTimeOfDay(f[i]);
+  if (!t) throw Bad{"time: malformed '" + std::string(f[i]) + "'"};
+  return *t;
+}
+
+Date checkedDate(int y, int m, int d) {
+  static constexpr int kDays[] = {31, 29, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  if (m < 1 || m > 12 || d < 1 || d > kDays[m - 1] || y < 1980 || y > 2200) throw Bad{"date: out of range"};
+  return {y, m, d};
+}
+
+Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
+  // f[0] is the address field; data fields start at f[1].
+  if (type == "RMC") {
+    Rmc r;
+    r.timeOfDayS = time(f, 1);
+    if (f.size() < 10) throw Bad{"RMC: needs at least 9 fields"};
+    r.valid = f[2] == "A";
+    if (!r.valid && f[2] != "V") throw Bad{"RMC status: must be A or V"};
+    if (r.valid) {
+      r.latDeg = angle(f, 3, 2, 'N', 'S', "RMC latitude");
+      r.lonDeg = angle(f, 5, 3, 'E', 'W', "RMC longitude");
+    }
+    r.sogKn = optionalNumber(f, 7, "RMC speed");
+    r.cogTrueDeg = optionalNumber(f, 8, "RMC course");
+    if (!f[9].empty()) {
+      if (f[9].size() != 6) throw Bad{"RMC date: must be ddmmyy"};
+      const auto d = number(f[9].substr(0, 2)), m = number(f[9].substr(2, 2)), y = number(f[9].substr(4, 2));
+      if (!d || !m || !y) throw Bad{"RMC date: malformed"};
+      const int yy = static_cast<int>(*y);
+      r.date = checkedDate(yy < 80 ? 2000 + yy : 1900 + yy, static_cast<int>(*m), static_cast<int>(*d));
+    }
+    return r;
+  }
+  if (type == "GGA") {
+    Gga g;
+    g.timeOfDayS = time(f, 1);
+    if (f.size() < 9) throw Bad{"GGA: needs at least 8 fields"};
+    g.quality = static_cast<int>(required(f, 6, "GGA quality"));
+    if (g.quality > 0) {
+      g.latDeg = angle(f, 2, 2, 'N', 'S', "GGA latitude");
+      g.lonDeg = angle(f, 4, 3, 'E', 'W', "GGA longitude");
+    }
+    g.hdop = optionalNumber(f, 8, "GGA hdop");
+    return g;
+  }
+  if (type == "VTG") {
+    Vtg v;
+    if (f.size() < 8) throw Bad{"VTG: needs at least 7 fields"};
+    v.cogTrueDeg = optionalNumber(f, 1, "VTG course");
+    v.sogKn = required(f, 5, "VTG speed");
+    if (v.sogKn < 0.0) throw Bad{"VTG speed: negative"};
+    return v;
+  }
+  if (type == "GLL") {
+    Gll g;
+    g.latDeg = angle(f, 1, 2, 'N', 'S', "GLL latitude");
+    g.lonDeg = angle(f, 3, 3, 'E', 'W', "GLL longitude");
+    if (f.size() > 5 && !f[5].empty()) g.timeOfDayS = time(f, 5);
+    if (f.size() > 6) g.valid = f[6] == "A";
+    return g;
+  }
+  if (type == "HDT") {
+    const double h = required(f, 1, "HDT heading");
+    if (h < 0.0 || h > 360.0) throw Bad{"HDT heading: out of range"};
+    return Hdt{h};
+  }
+  if (type == "VHW") {
+    Vhw v;
+    v.headingTrueDeg = optionalNumber(f, 1, "VHW heading");
+    if (f.size() < 6) throw Bad{"VHW: needs at least 5 fields"};
+    v.speedKn = required(f, 5, "VHW speed");
+    return v;
+  }
+  if (type == "VBW") {
+    Vbw v;
+    if (f.size() < 7) throw Bad{"VBW: needs at least 6 fields"};
+    if (f[3] == "A") {
+      v.longWaterKn = required(f, 1, "VBW water speed");
+      v.transWaterKn = required(f, 2, "VBW water speed");
+    }
+    if (f[6] == "A") {
+      v.longGroundKn = required(f, 4, "VBW ground speed");
+      v.transGroundKn = required(f, 5, "VBW ground speed");
+    }
+    return v;
+  }
+  if (type == "ZDA") {
+    Zda z;
+    z.timeOfDayS = time(f, 1);
+    z.date = checkedDate(static_cast<int>(required(f, 4, "ZDA year")),
+                         static_cast<int>(required(f, 3, "ZDA month")),
+                         static_cast<int>(required(f, 2, "ZDA day")));
+    return z;
+  }
+  throw Bad{"unknown"};  // not reached: the caller checks the type
+}
+
+bool known(std::string_view type) {
+  for (const char* k : {"RMC", "GGA", "VTG", "GLL", "HDT", "VHW", "VBW", "ZDA"})
+    if (type == k) return true;
+  return false;
+}
+
+int hexValue(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  return -1;
+}
+}  // namespace
+
+const char* errorName(Error e) {
+  switch (e) {
+    case Error::None:
+      return "none";
+    case Error::Empty:
+      return "empty";
+    case Error::BadChecksum:
+      return "bad_checksum";
+    case Error::Unknown:
+      return "unknown";
+    case Error::Malformed:
+      return "malformed";
+  }
+  return "?";
+}
+
+std::optional<double> parseTimeOfDay(std::string_view f) {
+  if (f.size() < 6) return std::nullopt;
+  const auto h = number(f.substr(0, 2)), m = number(f.substr(2, 2)), s = number(f.substr(4));
+  if (!h || !m || !s || *h < 0 || *h > 23 || *m < 0 || *m > 59 || *s < 0.0 || *s >= 61.0) return std::nullopt;
+  if (f[0] == '-' || f[2] == '-' || f[4] == '-') return std::nullopt;
+  return *h * 3600.0 + *m * 60.0 + *s;
+}
+
+std::string withChecksum(std::string_view body) {
+  unsigned char sum = 0;
+  for (char c : body) sum = static_cast<unsigned char>(sum ^ static_cast<unsigned char>(c));
+  char tail[4];
+  std::snprintf(tail, sizeof tail, "*%02X", sum);
+  std::string out = "$";
+  out.append(body);
+  out.append(tail);
+  return out;
+}
+
+ParseResult parse(std::string_view line) {
+  ParseResult r;
+  while (!line.empty() && (line.back() == '\n' || line.back() == '\r' || line.back() == ' '))
+    line.remove_suffix(1);
+  if (line.empty()) {
+    r.error = Error::Empty;
+    return r;
+  }
+  if (line[0] != '$' && line[0] != '!') {
+    r.error = Error::Malformed;
+    r.reason = "does not start with '$'";
+    return r;
+  }
+  const std::size_t star = line.rfind('*');
+  if (star == std::string_view::npos || star + 3 != line.size()) {
+    r.error = Error::BadChecksum;
+    r.reason = "no checksum";
+    return r;
+  }
+  const int hi = hexValue(line[star + 1]), lo = hexValue(line[star + 2]);
+  unsigned char sum = 0;
+  for (std::size_t i = 1; i < star; ++i)
+    sum = static_cast<unsigned char>(sum ^ static_cast<unsigned char>(line[i]));
+  if (hi < 0 || lo < 0 || sum != hi * 16 + lo) {
+    r.error = Error::BadChecksum;
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "checksum %02X, sentence says %.2s", sum, line.data() + star + 1);
+    r.reason = buf;
+    return r;
+  }
+  const std::string_view body = line.substr(1, star - 1);
+  const auto fields = split(body);
+  const std::string_view address = fields[0];
+  if (address.size() != 5) {
+    r.error = address.size() > 5 && address[0] == 'P' ? Error::Unknown : Error::Malformed;
+    r.reason = "address '" + std::string(address) + "'";
+    return r;
+  }
+  const std::string_view type = address.substr(2);
+  if (!known(type)) {
+    r.error = Error::Unknown;
+    r.reason = std::string(type);
+    return r;
+  }
+  try {
+    r.sentence = Sentence{std::string(address.substr(0, 2)), parseBody(type, fields)};
+  } catch (const Bad& b) {
+    r.error = Error::Malformed;
+    r.reason = b.reason;
+  }
+  return r;
+}
+
+}  // namespace reckoner::io::nmea

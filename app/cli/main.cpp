@@ -398,8 +398,10 @@ int cmdReplay(int argc, char** argv) {
         r.tracking.tracksConfirmed, o.assumeAssociation ? "association by target_id" : "nearest neighbour");
   if (!r.own.empty()) {
     const auto& last = r.own.back();
-    std::printf("  final estimate %s %s, position sd %.1f m\n", io::formatLatitude(last.estLatDeg).c_str(),
-                io::formatLongitude(last.estLonDeg).c_str(), std::hypot(last.sdXM, last.sdYM));
+    std::printf("  final estimate %s %s, position sd %.1f m\n",
+                io::formatLatitude(last.estimate.latDeg).c_str(),
+                io::formatLongitude(last.estimate.lonDeg).c_str(),
+                std::hypot(last.estimate.sdXM, last.estimate.sdYM));
   }
   std::printf("  wrote %s/ownship.csv%s and %s/summary.json\n", out.c_str(),
               radar ? (", " + out + "/targets.csv").c_str() : "", out.c_str());

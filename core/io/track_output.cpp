@@ -67,15 +67,14 @@ void writeTargetsCsv(const std::string& path, std::span<const sim::TrackRow> row
 
 void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) {
   std::string text =
-      "t_s,utc,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,est_lat_deg,est_lon_"
-      "deg,"
-      "sensors,rows\n";
+      "t_s,utc,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,"
+      "est_lat_deg,est_lon_deg,sensors,rows\n";
   char buf[512];
   for (const auto& o : r.own) {
     std::snprintf(buf, sizeof buf, "%.6f,%s,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f,%.9f,%.9f,%s,%d\n",
-                  toSeconds(o.timeUs), sim::formatIso8601(o.utcUs).c_str(), o.estXM, o.estYM, o.estVxMps,
-                  o.estVyMps, o.sdXM, o.sdYM, o.sdVxMps, o.sdVyMps, o.estLatDeg, o.estLonDeg,
-                  o.sensors.c_str(), o.rowsApplied);
+                  toSeconds(o.timeUs), sim::formatIso8601(o.utcUs).c_str(), o.estimate.xM, o.estimate.yM,
+                  o.estimate.vxMps, o.estimate.vyMps, o.estimate.sdXM, o.estimate.sdYM, o.estimate.sdVxMps,
+                  o.estimate.sdVyMps, o.estimate.latDeg, o.estimate.lonDeg, o.sensors.c_str(), o.rowsApplied);
     text.append(buf);
   }
   writeTextFile(path, text);

@@ -369,32 +369,9 @@ ReplayResult replay(const std::string& nmeaText, const std::string& nmeaName, co
       bank.endSweep(*nextSweepEnd);
       const double gamma = ownInput().convergenceRad;
       for (const auto& tr : bank.tracks()) {
-        TrackRow r;
-        r.timeUs = *nextSweepEnd;
-        r.trackId = tr.id;
-        r.targetId = tr.tag();
-        r.status = tr.status;
-        r.dangerous = tr.dangerous;
         const auto b = bank.beliefAt(tr, *nextSweepEnd);
-        namespace tk = est::ttkf;
-        r.estXM = b.x[tk::kTgtX];
-        r.estYM = b.x[tk::kTgtY];
-        r.estVxMps = b.x[tk::kTgtVx];
-        r.estVyMps = b.x[tk::kTgtVy];
-        r.sdXM = std::sqrt(b.P(tk::kTgtX, tk::kTgtX));
-        r.sdYM = std::sqrt(b.P(tk::kTgtY, tk::kTgtY));
-        r.sdVxMps = std::sqrt(b.P(tk::kTgtVx, tk::kTgtVx));
-        r.sdVyMps = std::sqrt(b.P(tk::kTgtVy, tk::kTgtVy));
-        const geo::GeoPoint ll = frame.toGeodetic({r.estXM, r.estYM});
-        r.estLatDeg = ll.latDeg;
-        r.estLonDeg = ll.lonDeg;
-        const auto k = track::kinematicsOf(b, gamma);
-        r.courseDeg = radToDeg(k.trueCourseRad);
-        r.speedKn = mpsToKnots(k.speedMps);
-        r.cpaNm = k.cpa.defined ? metresToNm(k.cpa.cpaM) : std::nan("");
-        r.tcpaMin = k.cpa.defined ? k.cpa.tcpaS / 60.0 : std::nan("");
-        r.nees = std::nan("");
-        r.nis = tr.lastRadar.nis;
+        const TrackRow r = trackEstimateRow(*nextSweepEnd, tr.id, tr.tag(), tr.status, tr.dangerous, b,
+                                            track::kinematicsOf(b, gamma), tr.lastRadar.nis, frame);
         res.tracks.push_back(r);
         res.trackRowUtc.push_back(res.utc0 + *nextSweepEnd);
       }
@@ -402,25 +379,26 @@ ReplayResult replay(const std::string& nmeaText, const std::string& nmeaName, co
     }
   };
 
+  const auto processPlot = [&](const Plot& p) {
+    const TimeUs tp = rel(p.utc);
+    if (tp < drkf.timeUs()) {
+      ++res.stats.radarBeforeFix;
+      return;
+    }
+    if (!nextSweepEnd) nextSweepEnd = tp + sweepUs;
+    closeSweepsUntil(tp);
+    const auto own = ownInput();
+    const sensors::RadarPlot rp{tp, p.rangeM, p.bearingRad, st.radar.plotRangeVarM2(),
+                                st.radar.plotBearingVarRad2()};
+    bank.addPlot(track::toGrid(rp, frame.gridInfo({own.x[0], own.x[1]})), p.tag);
+  };
+
   std::size_t pi = 0;
   for (const Epoch& e : epochs) {
     ++res.stats.epochs;
     const TimeUs t = rel(e.utc);
     // Plots up to (not including) this epoch.
-    for (; pi < plots.size() && rel(plots[pi].utc) < t; ++pi) {
-      const Plot& p = plots[pi];
-      const TimeUs tp = rel(p.utc);
-      if (tp < drkf.timeUs()) {
-        ++res.stats.radarBeforeFix;
-        continue;
-      }
-      if (!nextSweepEnd) nextSweepEnd = tp + sweepUs;
-      closeSweepsUntil(tp);
-      const auto own = ownInput();
-      const sensors::RadarPlot rp{tp, p.rangeM, p.bearingRad, st.radar.plotRangeVarM2(),
-                                  st.radar.plotBearingVarRad2()};
-      bank.addPlot(track::toGrid(rp, frame.gridInfo({own.x[0], own.x[1]})), p.tag);
-    }
+    for (; pi < plots.size() && rel(plots[pi].utc) < t; ++pi) processPlot(plots[pi]);
     if (t < drkf.timeUs()) {
       ++res.stats.epochsBeforeFix;
       continue;
@@ -448,37 +426,14 @@ ReplayResult replay(const std::string& nmeaText, const std::string& nmeaName, co
     ReplayOwnRow r;
     r.timeUs = t;
     r.utcUs = e.utc;
-    const est::Vec<4> g = nav::groundStateOf(drkf.belief());
-    const est::Mat<4> C = nav::groundCovarianceOf(drkf.belief());
-    r.estXM = g[0];
-    r.estYM = g[1];
-    r.estVxMps = g[2];
-    r.estVyMps = g[3];
-    r.sdXM = std::sqrt(C(0, 0));
-    r.sdYM = std::sqrt(C(1, 1));
-    r.sdVxMps = std::sqrt(C(2, 2));
-    r.sdVyMps = std::sqrt(C(3, 3));
-    const geo::GeoPoint ll = frame.toGeodetic({g[0], g[1]});
-    r.estLatDeg = ll.latDeg;
-    r.estLonDeg = ll.lonDeg;
+    r.estimate = groundEstimateOf(drkf.belief(), frame);
     r.sensors = labelOf(samples);
     r.rowsApplied = rep.dim;
     res.own.push_back(r);
   }
   // Plots after the last epoch are processed against the last own-ship estimate.
-  for (; pi < plots.size(); ++pi) {
-    const TimeUs tp = rel(plots[pi].utc);
-    if (tp < drkf.timeUs()) {
-      ++res.stats.radarBeforeFix;
-      continue;
-    }
-    if (!nextSweepEnd) nextSweepEnd = tp + sweepUs;
-    closeSweepsUntil(tp);
-    const auto own = ownInput();
-    const sensors::RadarPlot rp{tp, plots[pi].rangeM, plots[pi].bearingRad, st.radar.plotRangeVarM2(),
-                                st.radar.plotBearingVarRad2()};
-    bank.addPlot(track::toGrid(rp, frame.gridInfo({own.x[0], own.x[1]})), plots[pi].tag);
-  }
+  for (; pi < plots.size(); ++pi) processPlot(plots[pi]);
+  if (nextSweepEnd) closeSweepsUntil(*nextSweepEnd);  // the last sweep ends with the data
   res.drkf = drkf.counters();
   res.tracking = bank.counters();
   return res;

@@ -45,9 +45,7 @@ struct ReplayStats {
 struct ReplayOwnRow {
   TimeUs timeUs = 0;  ///< since the first NMEA timestamp
   UtcUs utcUs = 0;
-  double estXM = 0, estYM = 0, estVxMps = 0, estVyMps = 0;
-  double sdXM = 0, sdYM = 0, sdVxMps = 0, sdVyMps = 0;
-  double estLatDeg = 0, estLonDeg = 0;
+  GroundEstimate estimate;
   std::string sensors;  ///< the sensors of the epoch's samples
   int rowsApplied = 0;
 };

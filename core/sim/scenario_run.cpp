@@ -26,6 +26,53 @@ bool OwnShipRow::positionWithin(double k) const {
   return std::abs(estXM - trueXM) <= k * sdXM && std::abs(estYM - trueYM) <= k * sdYM;
 }
 
+GroundEstimate groundEstimateOf(const est::drkf::Belief& b, const geo::LocalFrame& geo) {
+  const est::Vec<4> g = nav::groundStateOf(b);
+  const est::Mat<4> C = nav::groundCovarianceOf(b);
+  const geo::GeoPoint ll = geo.toGeodetic({g[0], g[1]});
+  return {g[0],
+          g[1],
+          g[2],
+          g[3],
+          std::sqrt(C(0, 0)),
+          std::sqrt(C(1, 1)),
+          std::sqrt(C(2, 2)),
+          std::sqrt(C(3, 3)),
+          ll.latDeg,
+          ll.lonDeg};
+}
+
+TrackRow trackEstimateRow(TimeUs t, int trackId, int targetId, track::TrackStatus status, bool dangerous,
+                          const est::ttkf::Belief& b, const track::TrackKinematics& k, double nis,
+                          const geo::LocalFrame& geo) {
+  namespace tk = est::ttkf;
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  TrackRow r;
+  r.timeUs = t;
+  r.trackId = trackId;
+  r.targetId = targetId;
+  r.status = status;
+  r.dangerous = dangerous;
+  r.estXM = b.x[tk::kTgtX];
+  r.estYM = b.x[tk::kTgtY];
+  r.estVxMps = b.x[tk::kTgtVx];
+  r.estVyMps = b.x[tk::kTgtVy];
+  r.sdXM = std::sqrt(b.P(tk::kTgtX, tk::kTgtX));
+  r.sdYM = std::sqrt(b.P(tk::kTgtY, tk::kTgtY));
+  r.sdVxMps = std::sqrt(b.P(tk::kTgtVx, tk::kTgtVx));
+  r.sdVyMps = std::sqrt(b.P(tk::kTgtVy, tk::kTgtVy));
+  const geo::GeoPoint ll = geo.toGeodetic({r.estXM, r.estYM});
+  r.estLatDeg = ll.latDeg;
+  r.estLonDeg = ll.lonDeg;
+  r.courseDeg = radToDeg(k.trueCourseRad);
+  r.speedKn = mpsToKnots(k.speedMps);
+  r.cpaNm = k.cpa.defined ? metresToNm(k.cpa.cpaM) : kNan;
+  r.tcpaMin = k.cpa.defined ? k.cpa.tcpaS / 60.0 : kNan;
+  r.nis = nis;
+  r.nees = kNan;
+  return r;
+}
+
 OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo) {
   OwnShipRow r;
   r.timeUs = f.timeUs;
@@ -33,19 +80,17 @@ OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo) {
   r.trueYM = f.truth.position.yM;
   r.trueVxMps = f.truth.groundVxMps();
   r.trueVyMps = f.truth.groundVyMps();
-  const est::Vec<4> g = nav::groundStateOf(f.estimate);
-  const est::Mat<4> C = nav::groundCovarianceOf(f.estimate);
-  r.estXM = g[0];
-  r.estYM = g[1];
-  r.estVxMps = g[2];
-  r.estVyMps = g[3];
-  r.sdXM = std::sqrt(C(0, 0));
-  r.sdYM = std::sqrt(C(1, 1));
-  r.sdVxMps = std::sqrt(C(2, 2));
-  r.sdVyMps = std::sqrt(C(3, 3));
-  const geo::GeoPoint ll = geo.toGeodetic({g[0], g[1]});
-  r.estLatDeg = ll.latDeg;
-  r.estLonDeg = ll.lonDeg;
+  const GroundEstimate g = groundEstimateOf(f.estimate, geo);
+  r.estXM = g.xM;
+  r.estYM = g.yM;
+  r.estVxMps = g.vxMps;
+  r.estVyMps = g.vyMps;
+  r.sdXM = g.sdXM;
+  r.sdYM = g.sdYM;
+  r.sdVxMps = g.sdVxMps;
+  r.sdVyMps = g.sdVyMps;
+  r.estLatDeg = g.latDeg;
+  r.estLonDeg = g.lonDeg;
   r.nees = est::nees<est::drkf::kStateDim>(f.trueState - f.estimate.x, f.estimate.P);
   r.sensors = f.sensors;
   for (const auto& u : f.updates) r.rowsApplied += u.dim;
@@ -62,7 +107,6 @@ double TrackRow::velocityErrorMps() const {
 void appendSweepRows(const SimFrame& f, const Scenario& scenario, const geo::LocalFrame& geo,
                      std::vector<TrackRow>& tracks, std::vector<TargetSweepRow>& targets) {
   namespace tk = est::ttkf;
-  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
   for (const SweepSnapshot& sw : f.sweeps) {
     for (std::size_t i = 0; i < scenario.targets.size(); ++i) {
       const auto& p = sw.targets[i].position;
@@ -71,31 +115,10 @@ void appendSweepRows(const SimFrame& f, const Scenario& scenario, const geo::Loc
                          range <= scenario.radar.maxRangeM && range >= scenario.radar.minRangeM, p.xM, p.yM});
     }
     for (const TrackSnapshot& t : sw.tracks) {
-      TrackRow r;
-      r.timeUs = sw.timeUs;
-      r.trackId = t.trackId;
-      r.targetId = t.targetId;
-      r.status = t.status;
-      r.dangerous = t.dangerous;
+      TrackRow r = trackEstimateRow(sw.timeUs, t.trackId, t.targetId, t.status, t.dangerous, t.estimate,
+                                    t.kinematics, t.lastNis, geo);
       const auto& x = t.estimate.x;
       const auto& P = t.estimate.P;
-      r.estXM = x[tk::kTgtX];
-      r.estYM = x[tk::kTgtY];
-      r.estVxMps = x[tk::kTgtVx];
-      r.estVyMps = x[tk::kTgtVy];
-      r.sdXM = std::sqrt(P(tk::kTgtX, tk::kTgtX));
-      r.sdYM = std::sqrt(P(tk::kTgtY, tk::kTgtY));
-      r.sdVxMps = std::sqrt(P(tk::kTgtVx, tk::kTgtVx));
-      r.sdVyMps = std::sqrt(P(tk::kTgtVy, tk::kTgtVy));
-      const geo::GeoPoint ll = geo.toGeodetic({r.estXM, r.estYM});
-      r.estLatDeg = ll.latDeg;
-      r.estLonDeg = ll.lonDeg;
-      r.courseDeg = radToDeg(t.kinematics.trueCourseRad);
-      r.speedKn = mpsToKnots(t.kinematics.speedMps);
-      r.cpaNm = t.kinematics.cpa.defined ? metresToNm(t.kinematics.cpa.cpaM) : kNan;
-      r.tcpaMin = t.kinematics.cpa.defined ? t.kinematics.cpa.tcpaS / 60.0 : kNan;
-      r.nis = t.lastNis;
-      r.nees = kNan;
       std::size_t i = 0;
       while (i < scenario.targets.size() && scenario.targets[i].id != t.targetId) ++i;
       if (t.targetId >= 0 && i < scenario.targets.size()) {

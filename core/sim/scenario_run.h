@@ -31,6 +31,14 @@ struct OwnShipRow {
 
 OwnShipRow makeRow(const SimFrame& frame, const geo::LocalFrame& geo);
 
+/// A DRKF estimate as output columns: position and velocity over ground, their sds, latitude/longitude.
+struct GroundEstimate {
+  double xM = 0, yM = 0, vxMps = 0, vyMps = 0;
+  double sdXM = 0, sdYM = 0, sdVxMps = 0, sdVyMps = 0;
+  double latDeg = 0, lonDeg = 0;
+};
+GroundEstimate groundEstimateOf(const est::drkf::Belief& b, const geo::LocalFrame& geo);
+
 /// One track at the end of one radar sweep (targets.csv's columns). Truth columns are filled when the
 /// track's plots came mostly from a real target (hasTruth).
 struct TrackRow {
@@ -52,6 +60,11 @@ struct TrackRow {
   [[nodiscard]] double positionErrorM() const;
   [[nodiscard]] double velocityErrorMps() const;
 };
+
+/// A TrackRow's estimate columns from a track's belief and kinematics (no truth; nees NaN).
+TrackRow trackEstimateRow(TimeUs t, int trackId, int targetId, track::TrackStatus status, bool dangerous,
+                          const est::ttkf::Belief& b, const track::TrackKinematics& k, double nis,
+                          const geo::LocalFrame& geo);
 
 /// One target at the end of one radar sweep: where it truly is and whether the radar can see it.
 struct TargetSweepRow {

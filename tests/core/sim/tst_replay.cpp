@@ -104,8 +104,9 @@ class TestReplay : public QObject {
       const auto& a = r.own[k];
       const auto& t = e.truth.rows[k];
       QCOMPARE(a.timeUs + (r.utc0 - utc0), t.timeUs);
-      worst = std::max(worst, std::hypot(a.estXM - t.estXM, a.estYM - t.estYM));
-      within += std::abs(a.estXM - t.trueXM) <= 3 * a.sdXM && std::abs(a.estYM - t.trueYM) <= 3 * a.sdYM;
+      worst = std::max(worst, std::hypot(a.estimate.xM - t.estXM, a.estimate.yM - t.estYM));
+      within += std::abs(a.estimate.xM - t.trueXM) <= 3 * a.estimate.sdXM &&
+                std::abs(a.estimate.yM - t.trueYM) <= 3 * a.estimate.sdYM;
     }
     qInfo("replay vs simulated estimate: largest difference %.3f m; %d of %zu epochs within 3 sd of truth",
           worst, within, r.own.size() - 30);

@@ -172,7 +172,8 @@ void SimulationEngine::ownShipEpoch(TimeUs t, SimFrame& frame) {
   }
   const auto& m = frame.measurements;
   frame.updates.push_back(drkf_->update(t, std::span(m).subspan(first, m.size() - first)));
-  manager_->feedOwnShip(ownShipInput());  // one DRKF feeds every TTKF (seed 000 figure 3)
+  // One DRKF feeds every TTKF (seed 000 figure 3); without a radar there is nothing to feed.
+  if (scenario_.radar.fitted) manager_->feedOwnShip(ownShipInput());
 }
 
 void SimulationEngine::startSweep(TimeUs t, SimFrame& frame) {
@@ -262,8 +263,10 @@ SimFrame SimulationEngine::step() {
   frame.estimate = drkf_->belief();
   frame.sensors = sensorStatesAt(scenario_, end);
   for (const auto& m : targets_) frame.targets.push_back(m.state());
-  const double convergence = ownShipInput().convergenceRad;
-  for (const auto& t : manager_->tracks()) frame.tracks.push_back(snapshotOf(t, end, convergence));
+  if (!manager_->tracks().empty()) {
+    const double convergence = ownShipInput().convergenceRad;
+    for (const auto& t : manager_->tracks()) frame.tracks.push_back(snapshotOf(t, end, convergence));
+  }
   frame.trackEvents = manager_->takeEvents();
   frame.capacityWarning = manager_->capacityWarning();
   return frame;

@@ -43,11 +43,22 @@ Cpa cpaOf(const est::Vec<4>& rel, const est::Mat<4>& P) {
   }
   c.defined = true;
   c.tcpaS = -r.dot(v) / v.squaredNorm();
-  c.cpaM = (r + v * c.tcpaS).norm();
+  const est::Vec<2> d = r + v * c.tcpaS;
+  c.cpaM = d.norm();
   const est::MatRC<2, 4> J = cpaJacobian(rel);
-  const est::Mat<2> C = J * P * J.transpose();
-  c.sdCpaM = std::sqrt(std::max(0.0, C(0, 0)));
-  c.sdTcpaS = std::sqrt(std::max(0.0, C(1, 1)));
+  c.sdTcpaS = std::sqrt(std::max(0.0, J.row(1).dot(P * J.row(1).transpose())));
+  // Covariance of the CPA point d = r + v TCPA. Far from a collision course CPA = |d| is near-linear
+  // and its sd is that of d along d; near one it is not (|d| has a kink at 0), and the honest figure
+  // is the RMS distance of the estimated CPA point from the true one, sqrt(trace C_d).
+  const est::Vec<2> dTauDr = -v / v.squaredNorm();
+  const est::Vec<2> dTauDv = -r / v.squaredNorm() + 2.0 * r.dot(v) * v / (v.squaredNorm() * v.squaredNorm());
+  est::MatRC<2, 4> Jd;
+  Jd.leftCols<2>() = est::Mat<2>::Identity() + v * dTauDr.transpose();
+  Jd.rightCols<2>() = c.tcpaS * est::Mat<2>::Identity() + v * dTauDv.transpose();
+  const est::Mat<2> Cd = Jd * P * Jd.transpose();
+  const double spread = std::sqrt(std::max(0.0, Cd.trace()));
+  c.sdCpaM =
+      c.cpaM > 3.0 * spread ? std::sqrt(std::max(0.0, J.row(0).dot(P * J.row(0).transpose()))) : spread;
   return c;
 }
 

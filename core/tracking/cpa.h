@@ -3,7 +3,8 @@
 // and the course and speed figures a radar observer reads (docs/ttkf.md, "CPA and TCPA").
 //   r: target minus own position, v: target minus own velocity (grid frame, SI).
 //   TCPA = -(r . v) / |v|^2,  CPA = |r + v TCPA|.
-// The standard deviations propagate the covariance of (r, v) through the analytic gradients.
+// The standard deviations propagate the covariance of (r, v) through the analytic gradients; near a
+// collision course (CPA within 3 sd of 0) the CPA's sd is the RMS spread of the CPA point instead.
 #include "estimation/gaussian.h"
 #include "estimation/models/ttkf_state.h"
 

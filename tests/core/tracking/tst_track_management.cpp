@@ -136,6 +136,26 @@ class TestTrackManagement : public QObject {
     QVERIFY2(std::abs(sdC / c.sdCpaM - 1.0) < 0.05, qPrintable(QString("%1 vs %2").arg(sdC).arg(c.sdCpaM)));
     QVERIFY2(std::abs(sdT / c.sdTcpaS - 1.0) < 0.05, qPrintable(QString("%1 vs %2").arg(sdT).arg(c.sdTcpaS)));
   }
+  void cpaSpreadOnACollisionCourse() {
+    // GIVEN a head-on geometry (CPA 0) WHEN the CPA of draws from the covariance is taken THEN the
+    // reported sd is the RMS of those CPAs (the first-order gradient would say 0).
+    const est::Vec<4> rel(0.0, 8000.0, 0.0, -10.0);
+    const est::Mat<4> P = est::Vec<4>(400.0, 400.0, 0.01, 0.01).asDiagonal();
+    const Cpa c = cpaOf(rel, P);
+    QVERIFY(c.cpaM < 1e-9);
+    const Eigen::LLT<est::Mat<4>> llt(P);
+    const est::Mat<4> L = llt.matrixL();
+    Rng rng(12, 1);
+    double s2 = 0;
+    constexpr int n = 20000;
+    for (int i = 0; i < n; ++i) {
+      est::Vec<4> z;
+      for (int k = 0; k < 4; ++k) z[k] = rng.normal();
+      s2 += std::pow(cpaOf(rel + L * z, P).cpaM, 2);
+    }
+    QVERIFY2(std::abs(std::sqrt(s2 / n) / c.sdCpaM - 1.0) < 0.05,
+             qPrintable(QString("%1 vs %2").arg(std::sqrt(s2 / n)).arg(c.sdCpaM)));
+  }
   void kinematicsInTrueTerms() {
     tk::Belief b;
     b.x.setZero();

@@ -1,6 +1,7 @@
 // reckoner-cli: headless runs of the Reckoner engine.
 //   reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]
 //   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]
+//   reckoner-cli chart info PATH...
 //   reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association] --out DIR
 //   reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR
 //   reckoner-cli compare SCENARIO [--runs N] [--targets LIST] [--threads K] [--seed N] --out DIR [--quiet]
@@ -25,8 +26,10 @@
 #include <thread>
 #include <vector>
 
+#include "charts/s57/s57_loader.h"
 #include "common/angles.h"
 #include "io/input_error.h"
+#include "io/json.h"
 #include "io/own_ship_output.h"
 #include "io/scenario_json.h"
 #include "io/text_format.h"
@@ -48,6 +51,7 @@ constexpr const char* kUsage =
     "usage:\n"
     "  reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]\n"
     "  reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]\n"
+    "  reckoner-cli chart info PATH...   (S-57 cells or folders: metadata and feature counts as JSON)\n"
     "  reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association] --out "
     "DIR\n"
     "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
@@ -427,6 +431,64 @@ int cmdExport(int argc, char** argv) {
   return 0;
 }
 
+void writeCellJson(io::JsonWriter& w, const charts::ChartCell& c) {
+  const charts::CellInfo& i = c.info();
+  w.beginObject();
+  w.key("name").value(i.name);
+  w.key("path").value(i.path);
+  w.key("edition").value(i.edition);
+  w.key("update_number").value(i.updateNumber);
+  w.key("updates_applied").beginArray();
+  for (const auto& u : i.updatesApplied) w.value(u);
+  w.endArray();
+  w.key("issue_date").value(i.issueDate);
+  w.key("update_date").value(i.updateDate);
+  w.key("agency").value(i.agency);
+  w.key("intended_usage").value(i.intendedUsage);
+  w.key("compilation_scale").value(i.compilationScale);
+  const charts::Bounds& b = c.bounds();
+  w.key("bounds").beginObject();
+  w.key("min_lat_deg").value(b.minLatDeg, 9).key("max_lat_deg").value(b.maxLatDeg, 9);
+  w.key("min_lon_deg").value(b.minLonDeg, 9).key("max_lon_deg").value(b.maxLonDeg, 9);
+  w.endObject();
+  w.key("coverage_areas").value(static_cast<std::int64_t>(c.coverage().size()));
+  w.key("features").value(static_cast<std::int64_t>(c.features().size()));
+  w.key("soundings").value(static_cast<std::int64_t>(c.soundingCount()));
+  w.key("feature_counts").beginObject();
+  for (const auto& [cls, n] : c.countsByClass()) w.key(cls).value(static_cast<std::int64_t>(n));
+  w.endObject();
+  w.endObject();
+}
+
+/// chart info PATH...: JSON with every cell's metadata and feature counts; failures listed, exit 2
+/// when nothing loaded.
+int cmdChart(int argc, char** argv) {
+  if (argc < 3) throw UsageError("chart needs a subcommand: info");
+  const std::string sub = argv[2];
+  if (sub != "info") throw UsageError("unknown chart subcommand '" + sub + "' (known: info)");
+  const Args a = parseArgs(argc, argv, 3, {});
+  if (a.positional.empty()) throw UsageError("chart info needs at least one PATH (a .000 cell or a folder)");
+  const auto start = std::chrono::steady_clock::now();
+  const charts::LoadResult r = charts::loadCharts(a.positional);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  io::JsonWriter w;
+  w.beginObject();
+  w.key("load_time_s").value(wall, 6);
+  w.key("cells").beginArray();
+  for (const auto& c : r.cells) writeCellJson(w, *c);
+  w.endArray();
+  w.key("failures").beginArray();
+  for (const auto& f : r.failures)
+    w.beginObject().key("file").value(f.file).key("reason").value(f.reason).endObject();
+  w.endArray();
+  w.endObject();
+  std::printf("%s\n", w.str().c_str());
+  for (const auto& f : r.failures)
+    std::fprintf(stderr, "reckoner-cli: error: %s: %s\n", f.file.c_str(), f.reason.c_str());
+  if (r.cells.empty()) return 2;
+  return 0;
+}
+
 int cmdValidate(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {});
   if (a.positional.empty()) throw UsageError("validate needs at least one SCENARIO");
@@ -462,6 +524,7 @@ int main(int argc, char** argv) {
     if (cmd == "compare") return cmdCompare(argc, argv);
     if (cmd == "replay") return cmdReplay(argc, argv);
     if (cmd == "export") return cmdExport(argc, argv);
+    if (cmd == "chart") return cmdChart(argc, argv);
     if (cmd == "scenarios") return cmdScenarios();
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {

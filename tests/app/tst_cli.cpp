@@ -115,6 +115,22 @@ class TestCli : public QObject {
     QCOMPARE(missing.code, 2);
     QVERIFY(missing.err.contains("nope.nmea"));
   }
+  void chartInfo() {
+    // A bad path: exit 2, the file named. The real cells, when ../shared is there: JSON per cell.
+    const Result bad = cli({"chart", "info", "/nonexistent/cell.000"});
+    QCOMPARE(bad.code, 2);
+    QVERIFY(bad.err.contains("/nonexistent/cell.000: no such file or folder"));
+    const QString enc = RECKONER_SCENARIO_DIR "/../../../shared/data/enc/US5BOSDC";
+    if (!QDir(enc).exists()) QSKIP("../shared/data/enc is absent");
+    const Result r = cli({"chart", "info", enc});
+    QCOMPARE(r.code, 0);
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    const QJsonObject cell = o["cells"].toArray()[0].toObject();
+    QCOMPARE(cell["name"].toString(), QString("US5BOSDC"));
+    QCOMPARE(cell["compilation_scale"].toInt(), 12000);
+    QCOMPARE(cell["feature_counts"].toObject()["BOYLAT"].toInt(), 4);
+    QVERIFY(o["failures"].toArray().isEmpty());
+  }
   void sameSeedSameBytes() {
     QTemporaryDir a, b;
     QCOMPARE(cli({"run", "builtin:default", "--seed", "9", "--out", a.path(), "--quiet"}).code, 0);

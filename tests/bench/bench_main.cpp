@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <vector>
 
+#include "charts/s57/s57_loader.h"
 #include "common/angles.h"
 #include "common/rng.h"
 #include "io/scenario_json.h"
@@ -241,6 +243,20 @@ void BM_OneHourRun(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_OneHourRun)->Unit(benchmark::kMillisecond);
+
+/// Loading US5WA22M with its four updates through GDAL into the chart model (../shared must be present).
+void BM_LoadChartUS5WA22M(benchmark::State& state) {
+  const std::string cell = RECKONER_SHARED_DIR "/data/enc/US5WA22M/US5WA22M.000";
+  if (!std::filesystem::exists(cell)) {
+    state.SkipWithError("../shared/data/enc is absent");
+    return;
+  }
+  for (auto _ : state) {
+    auto c = charts::loadCell(cell);
+    benchmark::DoNotOptimize(c);
+  }
+}
+BENCHMARK(BM_LoadChartUS5WA22M)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -8,4 +8,10 @@ const EmbeddedFile* findScenario(std::string_view name) {
   return nullptr;
 }
 
+const EmbeddedFile* findPortrayal(std::string_view name) {
+  for (const auto& f : portrayal())
+    if (f.name == name) return &f;
+  return nullptr;
+}
+
 }  // namespace reckoner::resources

@@ -15,6 +15,10 @@ std::span<const EmbeddedFile> scenarios();
 /// The embedded scenario with that name, or nullptr.
 const EmbeddedFile* findScenario(std::string_view name);
 
+/// The portrayal files of resources/portrayal/ ("rules", "colours"), and one by name or nullptr.
+std::span<const EmbeddedFile> portrayal();
+const EmbeddedFile* findPortrayal(std::string_view name);
+
 /// The scenario the main job runs.
 inline constexpr std::string_view kDefaultScenario = "default";
 

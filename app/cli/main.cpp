@@ -26,6 +26,11 @@
 #include <thread>
 #include <vector>
 
+#include <QGuiApplication>
+#include <QImage>
+
+#include "charts/portrayal/portrayal.h"
+#include "charts/render/chart_renderer.h"
 #include "charts/s57/s57_loader.h"
 #include "common/angles.h"
 #include "io/input_error.h"
@@ -52,6 +57,8 @@ constexpr const char* kUsage =
     "  reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]\n"
     "  reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]\n"
     "  reckoner-cli chart info PATH...   (S-57 cells or folders: metadata and feature counts as JSON)\n"
+    "  reckoner-cli chart render PATH... --center LAT,LON --scale N --size WxH [--palette day|dusk|night]\n"
+    "               [--category base|standard|all] [--safety-contour M] --out FILE.png [--repeat K]\n"
     "  reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association] --out "
     "DIR\n"
     "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
@@ -462,10 +469,103 @@ void writeCellJson(io::JsonWriter& w, const charts::ChartCell& c) {
 
 /// chart info PATH...: JSON with every cell's metadata and feature counts; failures listed, exit 2
 /// when nothing loaded.
+std::pair<double, double> parsePair(const std::string& option, const std::string& text, char sep) {
+  const auto at = text.find(sep);
+  try {
+    if (at == std::string::npos) throw std::invalid_argument("no separator");
+    std::size_t u1 = 0, u2 = 0;
+    const double a = std::stod(text.substr(0, at), &u1), b = std::stod(text.substr(at + 1), &u2);
+    if (u1 != at || u2 != text.size() - at - 1 || !std::isfinite(a) || !std::isfinite(b))
+      throw std::invalid_argument("trailing");
+    return {a, b};
+  } catch (const std::exception&) {
+    throw UsageError("--" + option + ": expected two numbers separated by '" + std::string(1, sep) +
+                     "', got '" + text + "'");
+  }
+}
+
+/// chart render PATH... --center LAT,LON --scale N --size WxH [--palette] [--category] [--safety-contour M]
+/// --out FILE.png [--repeat K]: PNG and JSON with load and median render times.
+int cmdChartRender(int argc, char** argv) {
+  const Args a = parseArgs(
+      argc, argv, 3, {"center", "scale", "size", "palette", "category", "safety-contour", "out", "repeat"});
+  if (a.positional.empty()) throw UsageError("chart render needs at least one PATH");
+  for (const char* required : {"center", "scale", "size", "out"})
+    if (!a.options.count(required)) throw UsageError(std::string("--") + required + " is required");
+  const auto [lat, lon] = parsePair("center", a.options.at("center"), ',');
+  const double scale = static_cast<double>(parseCount("scale", a.options.at("scale"), 100, 100000000));
+  const auto [w, h] = parsePair("size", a.options.at("size"), 'x');
+  if (w < 16 || h < 16 || w > 16384 || h > 16384 || w != std::floor(w) || h != std::floor(h))
+    throw UsageError("--size: width and height must be integers in [16, 16384]");
+  charts::MarinerSettings ms;
+  if (a.options.count("palette")) {
+    const auto p = charts::paletteFromName(a.options.at("palette"));
+    if (!p) throw UsageError("--palette: day, dusk or night");
+    ms.palette = *p;
+  }
+  if (a.options.count("category")) {
+    const auto c = charts::categoryFromName(a.options.at("category"));
+    if (!c) throw UsageError("--category: base, standard or all");
+    ms.category = *c;
+  }
+  if (a.options.count("safety-contour")) {
+    std::size_t used = 0;
+    const std::string& t = a.options.at("safety-contour");
+    double v = -1;
+    try {
+      v = std::stod(t, &used);
+    } catch (const std::exception&) {
+    }
+    if (used != t.size() || !(v >= 0.0) || v > 12000.0)
+      throw UsageError("--safety-contour: metres in [0, 12000]");
+    ms.safetyContourM = v;
+    ms.safetyDepthM = v;
+  }
+  const int repeat =
+      a.options.count("repeat") ? static_cast<int>(parseCount("repeat", a.options.at("repeat"), 1, 1000)) : 1;
+  if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  int qargc = 1;
+  char name[] = "reckoner-cli";
+  char* qargv[] = {name, nullptr};
+  QGuiApplication app(qargc, qargv);  // fonts for the chart text
+  const auto t0 = std::chrono::steady_clock::now();
+  const charts::LoadResult r = charts::loadCharts(a.positional);
+  const double loadS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const auto& f : r.failures)
+    std::fprintf(stderr, "reckoner-cli: error: %s: %s\n", f.file.c_str(), f.reason.c_str());
+  if (r.cells.empty()) return 2;
+  const charts::Viewport view({lat, lon}, scale, static_cast<int>(w), static_cast<int>(h));
+  QImage image(static_cast<int>(w), static_cast<int>(h), QImage::Format_ARGB32_Premultiplied);
+  std::vector<double> times;
+  charts::RenderStats stats;
+  for (int k = 0; k < repeat; ++k) {
+    const auto s0 = std::chrono::steady_clock::now();
+    stats = charts::renderChart(image, r.cells, view, ms);
+    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - s0).count());
+  }
+  std::sort(times.begin(), times.end());
+  if (!image.save(QString::fromStdString(a.options.at("out")), "PNG"))
+    throw io::InputError(a.options.at("out"), 0, "", "cannot write the PNG");
+  io::JsonWriter jw;
+  jw.beginObject();
+  jw.key("out").value(a.options.at("out"));
+  jw.key("cells_loaded").value(static_cast<std::int64_t>(r.cells.size()));
+  jw.key("cells_drawn").value(stats.cellsDrawn);
+  jw.key("features_drawn").value(stats.featuresDrawn);
+  jw.key("overscale").value(stats.overscale, 4);
+  jw.key("load_time_s").value(loadS, 6);
+  jw.key("render_ms_median").value(times[times.size() / 2], 5);
+  jw.key("renders").value(repeat);
+  jw.endObject();
+  std::printf("%s\n", jw.str().c_str());
+  return 0;
+}
+
 int cmdChart(int argc, char** argv) {
-  if (argc < 3) throw UsageError("chart needs a subcommand: info");
+  if (argc < 3) throw UsageError("chart needs a subcommand: info or render");
   const std::string sub = argv[2];
-  if (sub != "info") throw UsageError("unknown chart subcommand '" + sub + "' (known: info)");
+  if (sub == "render") return cmdChartRender(argc, argv);
+  if (sub != "info") throw UsageError("unknown chart subcommand '" + sub + "' (known: info, render)");
   const Args a = parseArgs(argc, argv, 3, {});
   if (a.positional.empty()) throw UsageError("chart info needs at least one PATH (a .000 cell or a folder)");
   const auto start = std::chrono::steady_clock::now();

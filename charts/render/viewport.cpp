@@ -1,0 +1,70 @@
+#include "charts/render/viewport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace reckoner::charts {
+namespace {
+constexpr double kEarthRadiusM = 6378137.0;  // WGS-84 equatorial radius: the sphere of web/ECDIS Mercator
+constexpr double kMaxLatDeg = 85.0;
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+double mercatorY(double latDeg) {
+  const double lat = std::clamp(latDeg, -kMaxLatDeg, kMaxLatDeg) * kDeg;
+  return std::log(std::tan(std::numbers::pi / 4.0 + lat / 2.0));
+}
+}  // namespace
+
+Viewport::Viewport(LatLon centre, double scaleDenominator, int widthPx, int heightPx, double pixelSizeMm,
+                   double rotationRad)
+    : centre_(centre),
+      scale_(scaleDenominator),
+      width_(widthPx),
+      height_(heightPx),
+      pixelSizeM_(pixelSizeMm / 1000.0),
+      rotation_(rotationRad) {
+  if (!(scaleDenominator > 0.0) || widthPx <= 0 || heightPx <= 0 || !(pixelSizeMm > 0.0) ||
+      std::abs(centre.latDeg) > kMaxLatDeg || !std::isfinite(centre.lonDeg) || !std::isfinite(rotationRad))
+    throw std::invalid_argument("viewport: scale, size and pixel size must be positive, |latitude| <= 85");
+  cx_ = centre.lonDeg * kDeg;
+  cy_ = mercatorY(centre.latDeg);
+  // A ground distance d at the centre latitude is d / (R cos(lat)) Mercator units and d / (N p) pixels.
+  pxPerUnit_ = kEarthRadiusM * std::cos(centre.latDeg * kDeg) / (scale_ * pixelSizeM_);
+  cosR_ = std::cos(rotation_);
+  sinR_ = std::sin(rotation_);
+}
+
+ScreenPoint Viewport::toScreen(const LatLon& p) const {
+  // East and north offsets in pixels, then rotated so that the bearing `rotation` points up.
+  const double e = (p.lonDeg * kDeg - cx_) * pxPerUnit_;
+  const double n = (mercatorY(p.latDeg) - cy_) * pxPerUnit_;
+  const double right = e * cosR_ - n * sinR_;
+  const double up = e * sinR_ + n * cosR_;
+  return {0.5 * width_ + right, 0.5 * height_ - up};
+}
+
+LatLon Viewport::toLatLon(const ScreenPoint& s) const {
+  const double right = s.x - 0.5 * width_, up = 0.5 * height_ - s.y;
+  const double e = right * cosR_ + up * sinR_;
+  const double n = -right * sinR_ + up * cosR_;
+  const double lon = cx_ + e / pxPerUnit_;
+  const double y = cy_ + n / pxPerUnit_;
+  return {(2.0 * std::atan(std::exp(y)) - std::numbers::pi / 2.0) / kDeg, lon / kDeg};
+}
+
+double Viewport::metresPerPixel() const {
+  return scale_ * pixelSizeM_;
+}
+
+Bounds Viewport::visibleBounds() const {
+  Bounds b;
+  for (const ScreenPoint s : {ScreenPoint{0, 0}, ScreenPoint{static_cast<double>(width_), 0},
+                              ScreenPoint{0, static_cast<double>(height_)},
+                              ScreenPoint{static_cast<double>(width_), static_cast<double>(height_)}})
+    b.add(toLatLon(s));
+  return b;
+}
+
+}  // namespace reckoner::charts

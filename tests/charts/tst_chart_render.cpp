@@ -1,0 +1,158 @@
+// GIVEN / WHEN / THEN behaviour of the viewport, the portrayal rules and the chart renderer (pixels of
+// real NOAA cells from ../shared/data/enc when present).
+#include <QGuiApplication>
+#include <QImage>
+#include <QTest>
+
+#include <cmath>
+#include <filesystem>
+
+#include "charts/portrayal/portrayal.h"
+#include "charts/render/chart_renderer.h"
+#include "charts/render/viewport.h"
+#include "charts/s57/s57_loader.h"
+
+using namespace reckoner::charts;
+
+namespace {
+const std::string kEnc = RECKONER_SHARED_DIR "/data/enc";
+
+QRgb rgbOf(Palette p, const char* token) {
+  const Rgb c = defaultColours().colour(p, token);
+  return qRgb(c.r, c.g, c.b);
+}
+
+}  // namespace
+
+class TestChartRender : public QObject {
+  Q_OBJECT
+ private slots:
+  void viewportRoundTripsAndKeepsTheScale() {
+    const Viewport v({47.27, -122.43}, 20000, 1200, 800);
+    for (const LatLon p : {LatLon{47.27, -122.43}, LatLon{47.30, -122.50}, LatLon{47.20, -122.35}}) {
+      const LatLon back = v.toLatLon(v.toScreen(p));
+      QVERIFY(std::abs(back.latDeg - p.latDeg) < 1e-9 && std::abs(back.lonDeg - p.lonDeg) < 1e-9);
+    }
+    const ScreenPoint c = v.toScreen({47.27, -122.43});
+    QVERIFY(std::abs(c.x - 600) < 1e-9 && std::abs(c.y - 400) < 1e-9);
+    // 1 km east at the centre latitude is 1000 / (20000 * 0.28 mm) = 178.6 px to the right.
+    const double dLon = 1000.0 / (6378137.0 * std::cos(47.27 * M_PI / 180.0)) * 180.0 / M_PI;
+    const ScreenPoint e = v.toScreen({47.27, -122.43 + dLon});
+    QVERIFY2(std::abs(e.x - c.x - 1000.0 / (20000 * 0.00028)) < 0.01, qPrintable(QString::number(e.x - c.x)));
+    QVERIFY(std::abs(e.y - c.y) < 1e-6);
+    QVERIFY(v.toScreen({47.28, -122.43}).y < c.y);  // north is up
+    // Course-up at 090: east is up.
+    const Viewport r({47.27, -122.43}, 20000, 1200, 800, 0.28, M_PI / 2);
+    const ScreenPoint er = r.toScreen({47.27, -122.43 + dLon});
+    QVERIFY(std::abs(er.x - 600) < 1e-6 && std::abs(400 - er.y - 178.571) < 0.01);
+    const LatLon back = r.toLatLon(er);
+    QVERIFY(std::abs(back.lonDeg - (-122.43 + dLon)) < 1e-9);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Viewport({89.0, 0.0}, 1000, 10, 10));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Viewport({0.0, 0.0}, 0, 10, 10));
+  }
+  void portrayalTablesAndConditionalCases() {
+    QVERIFY(defaultPortrayal().size() > 50);
+    QVERIFY(defaultPortrayal().find("DEPARE", Primitive::Area) != nullptr);
+    QVERIFY(defaultPortrayal().find("DEPARE", Primitive::Point) == nullptr);
+    for (Palette p : {Palette::Day, Palette::Dusk, Palette::Night})
+      QVERIFY(!(defaultColours().colour(p, "LANDA") == Rgb{}));
+    // Night is dark: every token is dimmer than by day.
+    const Rgb day = defaultColours().colour(Palette::Day, "DEPDW"),
+              night = defaultColours().colour(Palette::Night, "DEPDW");
+    QVERIFY(night.r + night.g + night.b < 0.1 * (day.r + day.g + day.b));
+    MarinerSettings s;  // 2 / 10 / 30 m
+    QCOMPARE(depthShade(-1.0, s), std::string("DEPIT"));
+    QCOMPARE(depthShade(1.0, s), std::string("DEPVS"));
+    QCOMPARE(depthShade(5.0, s), std::string("DEPMS"));
+    QCOMPARE(depthShade(10.0, s), std::string("DEPMD"));
+    QCOMPARE(depthShade(40.0, s), std::string("DEPDW"));
+    s.fourShades = false;
+    QCOMPARE(depthShade(5.0, s), std::string("DEPVS"));
+    QCOMPARE(depthShade(12.0, s), std::string("DEPDW"));
+    QCOMPARE(*chooseSafetyContour({5.0, 18.2, 9.1, 30.0}, 10.0), 18.2);  // 10 absent: next deeper
+    QCOMPARE(*chooseSafetyContour({5.0, 10.0}, 10.0), 10.0);
+    QVERIFY(!chooseSafetyContour({2.0, 5.0}, 10.0).has_value());
+    QVERIFY(isIsolatedDanger(3.0, 10.0));
+    QVERIFY(!isIsolatedDanger(12.0, 10.0));
+    QVERIFY(!isIsolatedDanger(std::nullopt, 10.0));
+    QCOMPARE(soundingText(4.5), (std::pair<std::string, std::string>{"4", "5"}));
+    QCOMPARE(soundingText(12.0), (std::pair<std::string, std::string>{"12", ""}));
+    QCOMPARE(soundingText(35.7), (std::pair<std::string, std::string>{"35", ""}));
+    QCOMPARE(soundingText(-1.2), (std::pair<std::string, std::string>{"1", "2"}));  // drying height
+    QVERIFY_THROWS_EXCEPTION(
+        std::invalid_argument,
+        PortrayalTable::parse(R"({"rules": [{"class": "X", "primitive": "volume", "category": "base"}]})"));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             ColourTable::parse(R"({"day": {"A": "#zzzzzz"}, "dusk": {}, "night": {}})"));
+  }
+  void rendersLandWaterPalettesAndCategories() {
+    if (!std::filesystem::is_directory(kEnc)) QSKIP("../shared/data/enc is absent");
+    const std::vector<CellPtr> cells{loadCell(kEnc + "/US5WA22M/US5WA22M.000")};
+    const Viewport view({47.272, -122.425}, 20000, 1200, 800);
+    QImage day(1200, 800, QImage::Format_ARGB32_Premultiplied);
+    MarinerSettings s;
+    const RenderStats st = renderChart(day, cells, view, s);
+    QCOMPARE(st.cellsDrawn, 1);
+    QVERIFY(st.featuresDrawn > 500);
+    // Land south-west of Commencement Bay, water in the middle of the bay.
+    QCOMPARE(day.pixel(100, 700) & 0xFFFFFF, rgbOf(Palette::Day, "LANDA") & 0xFFFFFF);
+    const QRgb water = day.pixel(300, 150) & 0xFFFFFF;
+    QVERIFY(water == (rgbOf(Palette::Day, "DEPMD") & 0xFFFFFF) ||
+            water == (rgbOf(Palette::Day, "DEPMS") & 0xFFFFFF) ||
+            water == (rgbOf(Palette::Day, "DEPDW") & 0xFFFFFF));
+    // Night differs from day and is dark.
+    QImage night(1200, 800, QImage::Format_ARGB32_Premultiplied);
+    s.palette = Palette::Night;
+    renderChart(night, cells, view, s);
+    QCOMPARE(night.pixel(100, 700) & 0xFFFFFF, rgbOf(Palette::Night, "LANDA") & 0xFFFFFF);
+    QVERIFY(qGray(night.pixel(300, 150)) < 30);
+    // Soundings only in the "all" category.
+    s.palette = Palette::Day;
+    const Viewport close({47.268, -122.43}, 8000, 900, 600);
+    QImage all(900, 600, QImage::Format_ARGB32_Premultiplied),
+        base(900, 600, QImage::Format_ARGB32_Premultiplied);
+    s.category = DisplayCategory::Other;
+    const RenderStats sa = renderChart(all, cells, close, s);
+    s.category = DisplayCategory::Base;
+    const RenderStats sb = renderChart(base, cells, close, s);
+    QVERIFY(sb.featuresDrawn < sa.featuresDrawn);
+    // Around every visible sounding the "all" picture has dark text pixels that "base" lacks.
+    int checked = 0, withText = 0;
+    for (const auto& f : cells[0]->features()) {
+      if (f.objectClass != "SOUNDG") continue;
+      for (const auto& ll : f.geometry.parts[0]) {
+        const ScreenPoint sp = close.toScreen(ll);
+        if (sp.x < 20 || sp.y < 20 || sp.x > 880 || sp.y > 580) continue;
+        ++checked;
+        int darkAll = 0, darkBase = 0;
+        for (int dy = -4; dy <= 4; ++dy)
+          for (int dx = -6; dx <= 6; ++dx) {
+            darkAll += qGray(all.pixel(static_cast<int>(sp.x) + dx, static_cast<int>(sp.y) + dy)) < 150;
+            darkBase += qGray(base.pixel(static_cast<int>(sp.x) + dx, static_cast<int>(sp.y) + dy)) < 150;
+          }
+        withText += darkAll > darkBase + 3;
+      }
+    }
+    QVERIFY(checked > 50);
+    QVERIFY2(withText > 0.8 * checked, qPrintable(QString("%1 of %2").arg(withText).arg(checked)));
+    QVERIFY(sa.overscale > 1.5);  // 1:15000 cell shown at 1:8000
+  }
+  void aKnownBuoyIsDrawn() {
+    if (!std::filesystem::is_directory(kEnc)) QSKIP("../shared/data/enc is absent");
+    // "Mystic River Island End Point Buoy 4": red conical (BOYSHP 1, COLOUR 3) at 42.3874441 N 71.0547772 W.
+    const std::vector<CellPtr> cells{loadCell(kEnc + "/US5BOSDC/US5BOSDC.000")};
+    const Viewport view({42.3874441, -71.0547772}, 5000, 400, 400);
+    QImage img(400, 400, QImage::Format_ARGB32_Premultiplied);
+    renderChart(img, cells, view, MarinerSettings{});
+    // Inside the cone, a few pixels above the position.
+    QCOMPARE(img.pixel(200, 194) & 0xFFFFFF, rgbOf(Palette::Day, "CHRED") & 0xFFFFFF);
+  }
+};
+
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  QGuiApplication app(argc, argv);
+  TestChartRender t;
+  return QTest::qExec(&t, argc, argv);
+}
+#include "tst_chart_render.moc"

@@ -7,27 +7,48 @@
 namespace reckoner::track {
 namespace tk = est::ttkf;
 
-est::MatRC<2, 4> cpaJacobian(const est::Vec<4>& rel) {
+namespace {
+/// TCPA and the Jacobian of the CPA point d = r + v TCPA with respect to (r, v):
+///   d TCPA/dr = -v/|v|^2, d TCPA/dv = -r/|v|^2 + 2 (r.v) v/|v|^4, dd/dr = I + v dTCPA/dr^T,
+///   dd/dv = TCPA I + v dTCPA/dv^T.
+struct CpaPoint {
+  double tcpaS;
+  est::Vec<2> d;
+  est::Vec<4> dTcpa;  ///< gradient of TCPA
+  est::MatRC<2, 4> Jd;
+};
+
+CpaPoint cpaPoint(const est::Vec<4>& rel) {
   const est::Vec<2> r = rel.head<2>(), v = rel.tail<2>();
   const double vv = v.squaredNorm(), rv = r.dot(v);
-  const double tau = -rv / vv;
-  // d tau / d r = -v / |v|^2;  d tau / d v = -r / |v|^2 + 2 (r . v) v / |v|^4
+  CpaPoint c;
+  c.tcpaS = -rv / vv;
+  c.d = r + v * c.tcpaS;
   const est::Vec<2> dTauDr = -v / vv;
   const est::Vec<2> dTauDv = -r / vv + 2.0 * rv * v / (vv * vv);
-  // d = r + v tau;  d cpa = u^T dd with u = d / |d|;  dd/dr = I + v dTauDr^T, dd/dv = tau I + v dTauDv^T
-  const est::Vec<2> d = r + v * tau;
-  const double cpa = d.norm();
+  c.dTcpa << dTauDr, dTauDv;
+  c.Jd.leftCols<2>() = est::Mat<2>::Identity() + v * dTauDr.transpose();
+  c.Jd.rightCols<2>() = c.tcpaS * est::Mat<2>::Identity() + v * dTauDv.transpose();
+  return c;
+}
+}  // namespace
+
+Eigen::Matrix<double, 4, tk::kStateDim> relativeSelector() {
+  Eigen::Matrix<double, 4, tk::kStateDim> A = Eigen::Matrix<double, 4, tk::kStateDim>::Zero();
+  A(0, tk::kTgtX) = A(1, tk::kTgtY) = A(2, tk::kTgtVx) = A(3, tk::kTgtVy) = 1.0;
+  A(0, tk::kOwnX) = A(1, tk::kOwnY) = A(2, tk::kOwnVx) = A(3, tk::kOwnVy) = -1.0;
+  return A;
+}
+
+est::MatRC<2, 4> cpaJacobian(const est::Vec<4>& rel) {
+  const CpaPoint c = cpaPoint(rel);
+  const double cpa = c.d.norm();
   est::MatRC<2, 4> J;
-  J.row(1) << dTauDr.transpose(), dTauDv.transpose();
-  if (cpa > 1e-9) {
-    const est::Vec<2> u = d / cpa;
-    const est::Mat<2> ddr = est::Mat<2>::Identity() + v * dTauDr.transpose();
-    const est::Mat<2> ddv = tau * est::Mat<2>::Identity() + v * dTauDv.transpose();
-    J.block<1, 2>(0, 0) = u.transpose() * ddr;
-    J.block<1, 2>(0, 2) = u.transpose() * ddv;
-  } else {
+  J.row(1) = c.dTcpa.transpose();
+  if (cpa > 1e-9)
+    J.row(0) = (c.d / cpa).transpose() * c.Jd;  // d cpa = u^T dd with u = d / |d|
+  else
     J.row(0).setZero();  // |d| is not differentiable at a collision course; first order gives 0
-  }
   return J;
 }
 
@@ -41,38 +62,29 @@ Cpa cpaOf(const est::Vec<4>& rel, const est::Mat<4>& P) {
     c.sdCpaM = std::sqrt(std::max(0.0, u.dot(P.topLeftCorner<2, 2>() * u)));
     return c;
   }
+  const CpaPoint pt = cpaPoint(rel);
   c.defined = true;
-  c.tcpaS = -r.dot(v) / v.squaredNorm();
-  const est::Vec<2> d = r + v * c.tcpaS;
-  c.cpaM = d.norm();
-  const est::MatRC<2, 4> J = cpaJacobian(rel);
-  c.sdTcpaS = std::sqrt(std::max(0.0, J.row(1).dot(P * J.row(1).transpose())));
-  // Covariance of the CPA point d = r + v TCPA. Far from a collision course CPA = |d| is near-linear
-  // and its sd is that of d along d; near one it is not (|d| has a kink at 0), and the honest figure
-  // is the RMS distance of the estimated CPA point from the true one, sqrt(trace C_d).
-  const est::Vec<2> dTauDr = -v / v.squaredNorm();
-  const est::Vec<2> dTauDv = -r / v.squaredNorm() + 2.0 * r.dot(v) * v / (v.squaredNorm() * v.squaredNorm());
-  est::MatRC<2, 4> Jd;
-  Jd.leftCols<2>() = est::Mat<2>::Identity() + v * dTauDr.transpose();
-  Jd.rightCols<2>() = c.tcpaS * est::Mat<2>::Identity() + v * dTauDv.transpose();
-  const est::Mat<2> Cd = Jd * P * Jd.transpose();
+  c.tcpaS = pt.tcpaS;
+  c.cpaM = pt.d.norm();
+  c.sdTcpaS = std::sqrt(std::max(0.0, pt.dTcpa.dot(P * pt.dTcpa)));
+  // Far from a collision course CPA = |d| is near-linear and its sd is that of d along d; near one it
+  // is not (|d| has a kink at 0), and the honest figure is the RMS distance of the estimated CPA
+  // point from the true one, sqrt(trace C_d).
+  const est::Mat<2> Cd = pt.Jd * P * pt.Jd.transpose();
   const double spread = std::sqrt(std::max(0.0, Cd.trace()));
-  c.sdCpaM =
-      c.cpaM > 3.0 * spread ? std::sqrt(std::max(0.0, J.row(0).dot(P * J.row(0).transpose()))) : spread;
+  if (c.cpaM > 3.0 * spread) {
+    const est::Vec<2> u = pt.d / c.cpaM;
+    c.sdCpaM = std::sqrt(std::max(0.0, u.dot(Cd * u)));
+  } else {
+    c.sdCpaM = spread;
+  }
   return c;
 }
 
 TrackKinematics kinematicsOf(const tk::Belief& b, double convergenceRad) {
   TrackKinematics k;
   const auto& x = b.x;
-  // rel = A x with A picking target minus own position and velocity.
-  Eigen::Matrix<double, 4, tk::kStateDim> A = Eigen::Matrix<double, 4, tk::kStateDim>::Zero();
-  const int own[4] = {tk::kOwnX, tk::kOwnY, tk::kOwnVx, tk::kOwnVy};
-  const int tgt[4] = {tk::kTgtX, tk::kTgtY, tk::kTgtVx, tk::kTgtVy};
-  for (int i = 0; i < 4; ++i) {
-    A(i, tgt[i]) = 1.0;
-    A(i, own[i]) = -1.0;
-  }
+  static const Eigen::Matrix<double, 4, tk::kStateDim> A = relativeSelector();
   const est::Vec<4> rel = A * x;
   const est::Mat<4> Prel = A.lazyProduct(b.P).lazyProduct(A.transpose());
   k.rangeM = rel.head<2>().norm();

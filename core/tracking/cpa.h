@@ -21,6 +21,9 @@ struct Cpa {
   double sdTcpaS = 0.0;
 };
 
+/// A with A x = [target minus own position; target minus own velocity] for a TTKF state x.
+Eigen::Matrix<double, 4, est::ttkf::kStateDim> relativeSelector();
+
 /// CPA and TCPA of relative state [rx, ry, vx, vy] with covariance P.
 Cpa cpaOf(const est::Vec<4>& rel, const est::Mat<4>& P);
 /// d(cpa, tcpa) / d(rx, ry, vx, vy), analytic (tested against the numeric Jacobian).

@@ -267,10 +267,7 @@ void TrackManager::associateRound(TrackStatus status, std::vector<char>& taken) 
   std::vector<Candidate> cands;
   cands.reserve(tracks_.size());
   const TimeUs minGap = fromSeconds(0.5 * config_.sweepPeriodS);
-  // rel = A x: target minus own position and velocity.
-  Eigen::Matrix<double, 4, tk::kStateDim> A = Eigen::Matrix<double, 4, tk::kStateDim>::Zero();
-  A(0, tk::kTgtX) = A(1, tk::kTgtY) = A(2, tk::kTgtVx) = A(3, tk::kTgtVy) = 1.0;
-  A(0, tk::kOwnX) = A(1, tk::kOwnY) = A(2, tk::kOwnVx) = A(3, tk::kOwnVy) = -1.0;
+  static const Eigen::Matrix<double, 4, tk::kStateDim> A = relativeSelector();  // rel = A x
   struct StepCache {
     TimeUs step;
     Eigen::Matrix<double, 4, tk::kStateDim> APhi;

@@ -111,6 +111,15 @@ PortrayalTable PortrayalTable::parse(std::string_view json) {
     rule.colour = optionalString(r, "colour", where);
     rule.textAttribute = optionalString(r, "text", where);
     rule.procedure = optionalString(r, "procedure", where);
+    static const std::vector<std::string> kProcedures = {
+        "depth_area", "depth_contour", "soundings", "danger", "buoy", "beacon", "light", "topmark"};
+    if (rule.procedure &&
+        std::find(kProcedures.begin(), kProcedures.end(), *rule.procedure) == kProcedures.end())
+      throw std::invalid_argument(where + ".procedure: unknown procedure '" + *rule.procedure + "'");
+    static const std::vector<std::string> kCentreSymbols = {"anchor", "restricted", "caution", "tss_arrow"};
+    if (rule.centreSymbol &&
+        std::find(kCentreSymbols.begin(), kCentreSymbols.end(), *rule.centreSymbol) == kCentreSymbols.end())
+      throw std::invalid_argument(where + ".symbol_at_centre: unknown symbol '" + *rule.centreSymbol + "'");
     if (const io::JsonValue* l = member(r, "line")) {
       LineStyle ls;
       ls.colour = stringMember(*l, "colour", where + ".line");
@@ -193,6 +202,43 @@ std::pair<std::string, std::string> soundingText(double depthM) {
   const long whole = static_cast<long>(std::floor(d));
   const long tenth = static_cast<long>(std::floor((d - static_cast<double>(whole)) * 10.0 + 1e-9));
   return {std::to_string(whole), std::to_string(tenth)};
+}
+
+std::string lightDescription(const ChartFeature& light) {
+  // LITCHR abbreviations as on paper charts (INT 1, section P), by the S-57 enumeration.
+  static const std::map<int, std::string> kCharacter = {
+      {1, "F"},      {2, "Fl"},      {3, "LFl"},     {4, "Q"},       {5, "VQ"},
+      {6, "UQ"},     {7, "Iso"},     {8, "Oc"},      {9, "IQ"},      {10, "IVQ"},
+      {11, "IUQ"},   {12, "Mo"},     {13, "FFl"},    {14, "Fl+LFl"}, {15, "Oc+Fl"},
+      {16, "FLFl"},  {17, "Al.Oc"},  {18, "Al.LFl"}, {19, "Al.Fl"},  {20, "Al.Gr"},
+      {25, "Q+LFl"}, {26, "VQ+LFl"}, {27, "UQ+LFl"}, {28, "Al"},     {29, "Al.FFl"}};
+  static const std::map<int, std::string> kColour = {{1, "W"}, {3, "R"},  {4, "G"},   {5, "Bu"},
+                                                     {6, "Y"}, {9, "Am"}, {10, "Vi"}, {11, "Or"}};
+  const auto litchr = light.number("LITCHR");
+  if (!litchr) return {};
+  const auto ch = kCharacter.find(static_cast<int>(*litchr));
+  if (ch == kCharacter.end()) return {};
+  std::string out = ch->second;
+  if (const auto grp = light.text("SIGGRP"); grp && *grp != "()" && *grp != "(1)") out += *grp;
+  const auto colours = light.list("COLOUR");
+  std::string cols;
+  for (auto code : colours)
+    if (const auto it = kColour.find(static_cast<int>(code)); it != kColour.end()) cols += it->second;
+  if (!cols.empty() && cols != "W") {  // a lone white is left out, as charts do
+    if (out.back() != ')') out.push_back(' ');
+    out.append(cols);
+  }
+  auto append = [&out](std::optional<double> v, const char* unit) {
+    if (!v || !(*v > 0)) return;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " %g%s", *v, unit);
+    out.append(buf);
+  };
+  append(light.number("SIGPER"), "s");
+  append(light.number("HEIGHT"), "m");
+  append(light.number("VALNMR"), "M");
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
 }
 
 }  // namespace reckoner::charts

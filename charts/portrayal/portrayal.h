@@ -29,6 +29,7 @@ struct MarinerSettings {
   double safetyDepthM = 10.0;  ///< soundings at or above it in the bold colour
   bool fourShades = true;
   bool showText = true;
+  bool contourLabels = true;  ///< depth contour values along the contours (with showText)
   bool honourScamin = true;
 };
 
@@ -105,5 +106,9 @@ bool isIsolatedDanger(std::optional<double> valsouM, double safetyContourM);
 /// Depth for display the chart way: whole metres, with tenths below 31 m when not whole
 /// ("12" and "4" subscript "5" -> {"4", "5"}). The second string is empty for whole metres.
 std::pair<std::string, std::string> soundingText(double depthM);
+
+/// A light's description the chart way from LITCHR, SIGGRP, COLOUR, SIGPER, HEIGHT and VALNMR, e.g.
+/// "Fl(2)R 6s 12m 5M", "Iso WRG 4s", "Q(9)15s"; empty when the light has no character.
+std::string lightDescription(const ChartFeature& light);
 
 }  // namespace reckoner::charts

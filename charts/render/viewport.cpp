@@ -17,6 +17,10 @@ double mercatorY(double latDeg) {
 }
 }  // namespace
 
+MercatorPoint toMercator(const LatLon& p) {
+  return {p.lonDeg * kDeg, mercatorY(p.latDeg)};
+}
+
 Viewport::Viewport(LatLon centre, double scaleDenominator, int widthPx, int heightPx, double pixelSizeMm,
                    double rotationRad)
     : centre_(centre),
@@ -43,6 +47,33 @@ ScreenPoint Viewport::toScreen(const LatLon& p) const {
   const double right = e * cosR_ - n * sinR_;
   const double up = e * sinR_ + n * cosR_;
   return {0.5 * width_ + right, 0.5 * height_ - up};
+}
+
+MercatorToScreen Viewport::mercatorToScreen() const {
+  // right = k (dx cos - dy sin), up = k (dx sin + dy cos); x = W/2 + right, y = H/2 - up.
+  MercatorToScreen t;
+  const double k = pxPerUnit_;
+  t.a = k * cosR_;
+  t.b = -k * sinR_;
+  t.c = -k * sinR_;
+  t.d = -k * cosR_;
+  t.e = 0.5 * width_ - (t.a * cx_ + t.b * cy_);
+  t.f = 0.5 * height_ - (t.c * cx_ + t.d * cy_);
+  return t;
+}
+
+std::pair<MercatorPoint, MercatorPoint> Viewport::visibleMercator() const {
+  MercatorPoint lo{1e9, 1e9}, hi{-1e9, -1e9};
+  for (const ScreenPoint s : {ScreenPoint{0, 0}, ScreenPoint{static_cast<double>(width_), 0},
+                              ScreenPoint{0, static_cast<double>(height_)},
+                              ScreenPoint{static_cast<double>(width_), static_cast<double>(height_)}}) {
+    const double right = s.x - 0.5 * width_, up = 0.5 * height_ - s.y;
+    const double x = cx_ + (right * cosR_ + up * sinR_) / pxPerUnit_;
+    const double y = cy_ + (-right * sinR_ + up * cosR_) / pxPerUnit_;
+    lo = {std::min(lo.x, x), std::min(lo.y, y)};
+    hi = {std::max(hi.x, x), std::max(hi.y, y)};
+  }
+  return {lo, hi};
 }
 
 LatLon Viewport::toLatLon(const ScreenPoint& s) const {

@@ -2,6 +2,8 @@
 // The chart view's projection: Mercator on the sphere (as ECDIS displays are), a centre, a scale 1:N
 // referred to the centre latitude, a rotation (north-up = 0) and a pixel size. Converts both ways
 // between latitude/longitude and screen pixels (x right, y down). Plain C++, a value type.
+#include <utility>
+
 #include "charts/model/chart_model.h"
 
 namespace reckoner::charts {
@@ -9,6 +11,23 @@ namespace reckoner::charts {
 struct ScreenPoint {
   double x = 0.0, y = 0.0;
 };
+
+/// A point in spherical Mercator units (radians: x = longitude, y = ln tan(pi/4 + lat/2)).
+struct MercatorPoint {
+  double x = 0.0, y = 0.0;
+};
+
+/// The affine map from Mercator units to screen pixels of one view: x = a mx + b my + e,
+/// y = c mx + d my + f. Geometry projected once to Mercator is drawn in any view with it.
+struct MercatorToScreen {
+  double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;
+  [[nodiscard]] ScreenPoint operator()(double mx, double my) const {
+    return {a * mx + b * my + e, c * mx + d * my + f};
+  }
+};
+
+/// Latitude clamped to +-85 degrees, as the view does.
+MercatorPoint toMercator(const LatLon& p);
 
 class Viewport {
  public:
@@ -18,6 +37,9 @@ class Viewport {
            double rotationRad = 0.0);
 
   [[nodiscard]] ScreenPoint toScreen(const LatLon& p) const;
+  [[nodiscard]] MercatorToScreen mercatorToScreen() const;
+  /// The Mercator box containing the whole (possibly rotated) screen.
+  [[nodiscard]] std::pair<MercatorPoint, MercatorPoint> visibleMercator() const;
   [[nodiscard]] LatLon toLatLon(const ScreenPoint& s) const;
   /// Ground metres per pixel at the centre latitude.
   [[nodiscard]] double metresPerPixel() const;

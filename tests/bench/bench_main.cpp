@@ -7,6 +7,10 @@
 #include <filesystem>
 #include <vector>
 
+#include <QGuiApplication>
+#include <QPainter>
+
+#include "charts/render/chart_renderer.h"
 #include "charts/s57/s57_loader.h"
 #include "common/angles.h"
 #include "common/rng.h"
@@ -258,6 +262,57 @@ void BM_LoadChartUS5WA22M(benchmark::State& state) {
 }
 BENCHMARK(BM_LoadChartUS5WA22M)->Unit(benchmark::kMillisecond);
 
+/// A full redraw of US5WA22M at 1920x1080, 1:22 000 (the harbour and its approaches), day, standard
+/// display, from the prepared (Mercator-projected) cell, as a chart view redraws after a zoom.
+void BM_RenderFullUS5WA22M(benchmark::State& state) {
+  const std::string path = RECKONER_SHARED_DIR "/data/enc/US5WA22M/US5WA22M.000";
+  if (!std::filesystem::exists(path)) {
+    state.SkipWithError("../shared/data/enc is absent");
+    return;
+  }
+  const std::vector<charts::CellPtr> cells{charts::loadCell(path)};
+  const charts::Viewport view({47.278, -122.453}, 22000, 1920, 1080);
+  QImage image(1920, 1080, QImage::Format_ARGB32_Premultiplied);
+  charts::ChartRenderer renderer;
+  renderer.prepare(cells[0]);
+  charts::MarinerSettings settings;
+  settings.category =
+      state.range(0) == 0 ? charts::DisplayCategory::Standard : charts::DisplayCategory::Other;
+  for (auto _ : state) {
+    auto st = renderer.render(image, cells, view, settings);
+    benchmark::DoNotOptimize(st);
+  }
+}
+BENCHMARK(BM_RenderFullUS5WA22M)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+/// A pan frame from the cache: the last rendered 1920x1080 image drawn shifted by a drag of (37, -23)
+/// px into the window's back buffer while the worker renders the new view.
+void BM_PanFromCache(benchmark::State& state) {
+  const charts::Viewport before({47.278, -122.453}, 22000, 1920, 1080);
+  const charts::ScreenPoint moved = before.toScreen(before.centre());
+  const charts::Viewport after(before.toLatLon({moved.x - 37, moved.y + 23}), 22000, 1920, 1080);
+  QImage cached(1920, 1080, QImage::Format_ARGB32_Premultiplied);
+  cached.fill(QColor(120, 170, 220));
+  QImage target(1920, 1080, QImage::Format_ARGB32_Premultiplied);
+  for (auto _ : state) {
+    QPainter p(&target);
+    charts::drawFromCache(p, cached, before, after, QColor(167, 181, 185));
+    p.end();
+    benchmark::DoNotOptimize(target.constBits());
+  }
+}
+BENCHMARK(BM_PanFromCache)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  // Chart rendering draws text: a GUI application (offscreen) for the fonts.
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  int qargc = 1;
+  QGuiApplication app(qargc, argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -2,6 +2,7 @@
 // real NOAA cells from ../shared/data/enc when present).
 #include <QGuiApplication>
 #include <QImage>
+#include <QPainter>
 #include <QTest>
 
 #include <cmath>
@@ -47,6 +48,13 @@ class TestChartRender : public QObject {
     QVERIFY(std::abs(er.x - 600) < 1e-6 && std::abs(400 - er.y - 178.571) < 0.01);
     const LatLon back = r.toLatLon(er);
     QVERIFY(std::abs(back.lonDeg - (-122.43 + dLon)) < 1e-9);
+    // The affine Mercator map the renderer uses agrees with toScreen, rotated or not.
+    for (const Viewport& vp : {v, r})
+      for (const LatLon ll : {LatLon{47.2, -122.5}, LatLon{47.31, -122.38}}) {
+        const MercatorPoint m = toMercator(ll);
+        const ScreenPoint a = vp.toScreen(ll), b = vp.mercatorToScreen()(m.x, m.y);
+        QVERIFY(std::abs(a.x - b.x) < 1e-6 && std::abs(a.y - b.y) < 1e-6);
+      }
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Viewport({89.0, 0.0}, 1000, 10, 10));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Viewport({0.0, 0.0}, 0, 10, 10));
   }
@@ -84,6 +92,82 @@ class TestChartRender : public QObject {
         PortrayalTable::parse(R"({"rules": [{"class": "X", "primitive": "volume", "category": "base"}]})"));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                              ColourTable::parse(R"({"day": {"A": "#zzzzzz"}, "dusk": {}, "night": {}})"));
+  }
+  void lightDescriptionsReadTheChartWay() {
+    ChartFeature l;
+    l.objectClass = "LIGHTS";
+    l.attributes = {{"LITCHR", std::int64_t{2}},
+                    {"SIGGRP", std::string("(2)")},
+                    {"COLOUR", std::vector<std::int64_t>{3}},
+                    {"SIGPER", 6.0},
+                    {"HEIGHT", 12.0},
+                    {"VALNMR", 5.0}};
+    QCOMPARE(lightDescription(l), std::string("Fl(2)R 6s 12m 5M"));
+    l.attributes = {
+        {"LITCHR", std::int64_t{7}}, {"COLOUR", std::vector<std::int64_t>{1, 3, 4}}, {"SIGPER", 4.0}};
+    QCOMPARE(lightDescription(l), std::string("Iso WRG 4s"));
+    l.attributes = {{"LITCHR", std::int64_t{4}},
+                    {"SIGGRP", std::string("(9)")},
+                    {"COLOUR", std::int64_t{1}},
+                    {"SIGPER", 15.0}};
+    QCOMPARE(lightDescription(l), std::string("Q(9) 15s"));  // a lone white is not written
+    l.attributes = {{"COLOUR", std::int64_t{1}}};
+    QCOMPARE(lightDescription(l), std::string());
+    // Unknown procedures and centre symbols are named errors, not silent defaults.
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             PortrayalTable::parse(R"({"rules": [{"class": "X", "primitive": "point",
+                               "procedure": "sparkle", "category": "base"}]})"));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                             PortrayalTable::parse(R"({"rules": [{"class": "X", "primitive": "area",
+                               "symbol_at_centre": "unicorn", "category": "base"}]})"));
+  }
+  void aCachedImageFollowsPanAndZoom() {
+    // GIVEN an image rendered for one view, with a marker pixel
+    const Viewport before({47.27, -122.43}, 20000, 400, 300);
+    QImage cached(400, 300, QImage::Format_ARGB32_Premultiplied);
+    cached.fill(Qt::white);
+    cached.setPixel(100, 100, qRgb(255, 0, 0));
+    // WHEN the view is dragged 37 px right and 23 px up, THEN the marker moves with it
+    const ScreenPoint c = before.toScreen(before.centre());
+    const Viewport panned(before.toLatLon({c.x - 37, c.y + 23}), 20000, 400, 300);
+    QImage out(400, 300, QImage::Format_ARGB32_Premultiplied);
+    {
+      QPainter p(&out);
+      drawFromCache(p, cached, before, panned, Qt::gray);
+    }
+    QCOMPARE(out.pixel(137, 77), qRgb(255, 0, 0));
+    QCOMPARE(out.pixel(10, 290), QColor(Qt::gray).rgb());  // uncovered strip: the background
+    // WHEN zoomed in twice about the centre, THEN a point 50 px right of the centre is 100 px right
+    QImage dot(400, 300, QImage::Format_ARGB32_Premultiplied);
+    dot.fill(Qt::white);
+    for (int y = 148; y <= 152; ++y)
+      for (int x = 248; x <= 252; ++x) dot.setPixel(x, y, qRgb(0, 0, 255));
+    const Viewport zoomed(before.centre(), 10000, 400, 300);
+    {
+      QPainter p(&out);
+      drawFromCache(p, dot, before, zoomed, Qt::gray);
+    }
+    QCOMPARE(qBlue(out.pixel(300, 150)), 255);
+    QVERIFY(qRed(out.pixel(300, 150)) < 40);
+    QCOMPARE(out.pixel(250, 150), qRgb(255, 255, 255));
+  }
+  void aRendererReusesPreparedCellsAndCanBeCancelled() {
+    if (!std::filesystem::is_directory(kEnc)) QSKIP("../shared/data/enc is absent");
+    const std::vector<CellPtr> cells{loadCell(kEnc + "/US5WA22M/US5WA22M.000")};
+    const Viewport view({47.272, -122.425}, 20000, 600, 400);
+    QImage once(600, 400, QImage::Format_ARGB32_Premultiplied),
+        twice(600, 400, QImage::Format_ARGB32_Premultiplied);
+    renderChart(once, cells, view, MarinerSettings{});
+    ChartRenderer r;
+    r.render(twice, cells, view, MarinerSettings{});
+    QCOMPARE(r.preparedCount(), std::size_t{1});
+    r.render(twice, cells, view, MarinerSettings{});
+    QCOMPARE(r.preparedCount(), std::size_t{1});
+    QCOMPARE(twice, once);  // the prepared cell draws exactly what a fresh one does
+    std::atomic<bool> cancel{true};
+    QVERIFY(r.render(twice, cells, view, MarinerSettings{}, &cancel).cancelled);
+    r.retainOnly({});
+    QCOMPARE(r.preparedCount(), std::size_t{0});
   }
   void rendersLandWaterPalettesAndCategories() {
     if (!std::filesystem::is_directory(kEnc)) QSKIP("../shared/data/enc is absent");

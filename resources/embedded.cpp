@@ -14,4 +14,10 @@ const EmbeddedFile* findPortrayal(std::string_view name) {
   return nullptr;
 }
 
+const EmbeddedFile* findChart(std::string_view name) {
+  for (const auto& f : charts())
+    if (f.name == name) return &f;
+  return nullptr;
+}
+
 }  // namespace reckoner::resources

@@ -7,7 +7,7 @@ namespace reckoner::resources {
 
 struct EmbeddedFile {
   std::string_view name;  ///< file name without extension, e.g. "default", "table1-test1"
-  std::string_view text;
+  std::string_view text;  ///< the file's bytes
 };
 
 /// All embedded scenarios, sorted by name.
@@ -18,6 +18,11 @@ const EmbeddedFile* findScenario(std::string_view name);
 /// The portrayal files of resources/portrayal/ ("rules", "colours"), and one by name or nullptr.
 std::span<const EmbeddedFile> portrayal();
 const EmbeddedFile* findPortrayal(std::string_view name);
+
+/// The embedded charts (S-57 cells by cell name; bytes, not text): the fictional "RK5SOUND".
+std::span<const EmbeddedFile> charts();
+const EmbeddedFile* findChart(std::string_view name);
+inline constexpr std::string_view kDefaultChart = "RK5SOUND";
 
 /// The scenario the main job runs.
 inline constexpr std::string_view kDefaultScenario = "default";

@@ -453,6 +453,7 @@ void writeCellJson(io::JsonWriter& w, const charts::ChartCell& c) {
   w.key("agency").value(i.agency);
   w.key("intended_usage").value(i.intendedUsage);
   w.key("compilation_scale").value(i.compilationScale);
+  w.key("comment").value(i.comment);
   const charts::Bounds& b = c.bounds();
   w.key("bounds").beginObject();
   w.key("min_lat_deg").value(b.minLatDeg, 9).key("max_lat_deg").value(b.maxLatDeg, 9);

@@ -73,6 +73,7 @@ struct CellInfo {
   int agency = 0;            ///< DSID_AGEN (550: NOAA)
   int intendedUsage = 0;     ///< DSID_INTU, the navigational purpose band 1 (overview) to 6 (berthing)
   int compilationScale = 0;  ///< DSPM_CSCL, 1:N
+  std::string comment;       ///< DSID_COMT (the fictional default chart says "NOT FOR NAVIGATION" here)
   std::vector<std::string> updatesApplied;  ///< file names of the update files found and applied
 };
 

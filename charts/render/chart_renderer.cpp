@@ -515,9 +515,16 @@ void drawText(Ctx& c, const QString& text, QPointF at, const QColor& colour) {
 
 void drawLabels(Ctx& c) {
   c.p.setFont(c.fonts.text);
+  const double line = QFontMetricsF(c.fonts.text).height();
+  // Labels anchored at the same point (the sectors of one light, a buoy and its light) are stacked.
+  std::vector<std::pair<QPointF, int>> anchors;
   for (const auto& l : c.labels) {
+    int stacked = 0;
+    for (auto& [at, n] : anchors)
+      if (std::abs(at.x() - l.at.x()) < 1.0 && std::abs(at.y() - l.at.y()) < 1.0) stacked = n++;
+    if (stacked == 0) anchors.emplace_back(l.at, 1);
     c.p.setPen(l.colour);
-    c.p.drawText(l.at, l.text);
+    c.p.drawText(QPointF(l.at.x(), l.at.y() + stacked * line), l.text);
   }
   c.labels.clear();
 }
@@ -762,6 +769,24 @@ RenderStats ChartRenderer::render(QImage& image, const std::vector<CellPtr>& cel
     for (const PreparedItem& cov : pc->coverage())
       strokeParts(c, *pc, cov.firstPart, cov.partCount, boundary);
   }
+  // A chart that says it is not for navigation (the fictional default chart) says so on screen too.
+  for (const PreparedCell* pc : order)
+    if (pc->cell().info().comment.find("NOT FOR NAVIGATION") != std::string::npos) {
+      QFont font("DejaVu Sans");
+      font.setPixelSize(15);
+      font.setBold(true);
+      p.setFont(font);
+      const QString note = QString("FICTIONAL CHART %1 - NOT FOR NAVIGATION")
+                               .arg(QString::fromStdString(pc->cell().info().name));
+      const QRectF box(8, view.height() - 30, QFontMetricsF(font).horizontalAdvance(note) + 16, 24);
+      p.setPen(Qt::NoPen);
+      p.setBrush(c.colour("BKGND"));
+      p.drawRect(box);
+      p.setPen(c.colour("DNGHL"));
+      p.drawText(box, Qt::AlignCenter, note);
+      stats.notForNavigation = true;
+      break;
+    }
   if (stats.overscale > 1.0 + 1e-9) {
     QFont font("DejaVu Sans");
     font.setPixelSize(14);

@@ -27,7 +27,8 @@ struct RenderStats {
   int cellsDrawn = 0;
   int featuresDrawn = 0;
   double overscale = 1.0;  ///< compilation scale / display scale of the finest cell drawn (> 1: overscale)
-  bool cancelled = false;  ///< the cancel flag was raised during the render; the image is incomplete
+  bool notForNavigation = false;  ///< a drawn cell says so (DSID_COMT) and the notice is on screen
+  bool cancelled = false;         ///< the cancel flag was raised during the render; the image is incomplete
 };
 
 class PreparedCell;

@@ -2,6 +2,7 @@
 
 #include <cpl_conv.h>
 #include <cpl_error.h>
+#include <cpl_vsi.h>
 #include <gdal.h>
 #include <ogr_api.h>
 #include <ogr_core.h>
@@ -10,6 +11,8 @@
 #include <cctype>
 #include <filesystem>
 #include <mutex>
+
+#include "resources/embedded.h"
 
 namespace reckoner::charts {
 namespace fs = std::filesystem;
@@ -191,6 +194,7 @@ std::string s57CatalogueDirectory() {
 }
 
 std::vector<std::string> findCells(const std::string& path) {
+  if (path.rfind(kBuiltinPrefix, 0) == 0) return {path};
   std::error_code ec;
   const fs::path p(path);
   if (!fs::exists(p, ec)) throw ChartLoadError(path, "no such file or folder");
@@ -207,20 +211,51 @@ std::vector<std::string> findCells(const std::string& path) {
   return out;
 }
 
+namespace {
+/// Reads a cell at `gdalPath` (a file, or /vsimem/ for an embedded chart), reporting it as `path`.
+CellPtr readCell(const std::string& path, const std::string& gdalPath, bool withUpdates);
+}  // namespace
+
 CellPtr loadCell(const std::string& path) {
   initialiseGdal();
   if (catalogueDir.empty())
     throw ChartLoadError(path,
                          "GDAL's S-57 catalogue (s57objectclasses.csv) was not found; install gdal-data");
+  if (path.rfind(kBuiltinPrefix, 0) == 0) {
+    std::string name(path.substr(kBuiltinPrefix.size()));
+    if (name == "default") name = std::string(resources::kDefaultChart);
+    const resources::EmbeddedFile* chart = resources::findChart(name);
+    if (!chart) throw ChartLoadError(path, "no such built-in chart (there is builtin:default)");
+    // GDAL reads it from memory: a /vsimem/ file over the embedded bytes, made once.
+    const std::string mem = "/vsimem/reckoner/" + name + "/" + name + ".000";
+    static std::mutex memMutex;
+    {
+      const std::lock_guard lock(memMutex);
+      VSIStatBufL st;
+      if (VSIStatL(mem.c_str(), &st) != 0) {
+        VSILFILE* fp =
+            VSIFileFromMemBuffer(mem.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(chart->text.data())),
+                                 static_cast<vsi_l_offset>(chart->text.size()), FALSE);
+        if (!fp) throw ChartLoadError(path, "cannot open the embedded chart in memory");
+        VSIFCloseL(fp);
+      }
+    }
+    return readCell(path, mem, false);
+  }
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw ChartLoadError(path, "no such file");
+  return readCell(path, path, true);
+}
+
+namespace {
+CellPtr readCell(const std::string& path, const std::string& gdalPath, bool withUpdates) {
   ErrorCapture errors;
   const char* const drivers[] = {"S57", nullptr};
   const char* const options[] = {
       "UPDATES=APPLY",       "SPLIT_MULTIPOINT=OFF", "ADD_SOUNDG_DEPTH=OFF", "RETURN_PRIMITIVES=OFF",
       "RETURN_LINKAGES=OFF", "LNAM_REFS=ON",         "RECODE_BY_DSSI=ON",    nullptr};
   std::unique_ptr<void, DatasetCloser> ds(
-      GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, options, nullptr));
+      GDALOpenEx(gdalPath.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, options, nullptr));
   if (!ds) {
     const std::string why = errors.firstError();
     throw ChartLoadError(path, why.empty() ? "not an S-57 cell (GDAL's S57 driver cannot open it)"
@@ -228,7 +263,7 @@ CellPtr loadCell(const std::string& path) {
   }
   CellInfo info;
   info.path = path;
-  info.name = fs::path(path).stem().string();
+  info.name = fs::path(gdalPath).stem().string();
   std::vector<ChartFeature> features;
   const int layers = GDALDatasetGetLayerCount(ds.get());
   for (int l = 0; l < layers; ++l) {
@@ -247,6 +282,7 @@ CellPtr loadCell(const std::string& path) {
         info.updateDate = fieldString(f, "DSID_UADT");
         info.agency = fieldInt(f, "DSID_AGEN");
         info.intendedUsage = fieldInt(f, "DSID_INTU");
+        info.comment = fieldString(f, "DSID_COMT");
         info.compilationScale = fieldInt(f, "DSPM_CSCL");
         OGR_F_Destroy(f);
         continue;
@@ -270,7 +306,7 @@ CellPtr loadCell(const std::string& path) {
     throw ChartLoadError(path, "truncated or corrupt: " + errors.firstError());
   if (info.edition.empty())
     throw ChartLoadError(path, "no data set identification (DSID): not an S-57 base cell");
-  info.updatesApplied = updateFiles(fs::path(path));
+  if (withUpdates) info.updatesApplied = updateFiles(fs::path(path));
   if (!info.updatesApplied.empty()) {
     const std::string& last = info.updatesApplied.back();
     const int lastNumber = std::stoi(last.substr(last.size() - 3));
@@ -280,6 +316,7 @@ CellPtr loadCell(const std::string& path) {
   }
   return std::make_shared<const ChartCell>(std::move(info), std::move(features));
 }
+}  // namespace
 
 LoadResult loadCharts(const std::vector<std::string>& paths, const LoadProgress& progress,
                       const std::atomic<bool>* cancel) {

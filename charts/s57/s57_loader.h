@@ -11,6 +11,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "charts/model/chart_model.h"
@@ -27,7 +28,12 @@ class ChartLoadError : public std::runtime_error {
   std::string file_;
 };
 
-/// Loads one cell (.000) with its updates. Throws ChartLoadError.
+/// Paths naming the charts compiled into the program: "builtin:default" is the fictional default
+/// chart (resources/charts/reckoner_sound.cpp), also reachable by its cell name, "builtin:RK5SOUND".
+inline constexpr std::string_view kBuiltinPrefix = "builtin:";
+inline constexpr std::string_view kDefaultChartPath = "builtin:default";
+
+/// Loads one cell (.000) with its updates, or a built-in chart. Throws ChartLoadError.
 CellPtr loadCell(const std::string& path);
 
 /// The cells (.000 files) a path names: the file itself, or every cell below a folder, sorted.

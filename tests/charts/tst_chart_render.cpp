@@ -221,6 +221,25 @@ class TestChartRender : public QObject {
     QVERIFY2(withText > 0.8 * checked, qPrintable(QString("%1 of %2").arg(withText).arg(checked)));
     QVERIFY(sa.overscale > 1.5);  // 1:15000 cell shown at 1:8000
   }
+  void theDefaultChartRendersAndSaysItIsFictional() {
+    // GIVEN the embedded chart (no ../shared needed) WHEN drawn whole at 1:40 000
+    const std::vector<CellPtr> cells{loadCell(std::string(kDefaultChartPath))};
+    const Viewport view({49.5, -29.5}, 40000, 1600, 1100);
+    QImage img(1600, 1100, QImage::Format_ARGB32_Premultiplied);
+    const RenderStats st = renderChart(img, cells, view, MarinerSettings{});
+    // THEN the not-for-navigation notice is on screen, land is land and deep water deep
+    QVERIFY(st.notForNavigation);
+    const auto at = [&](double xKm, double yKm) {
+      const ScreenPoint p =
+          view.toScreen({49.5 + yKm / 110.57, -29.5 + xKm / (111.32 * std::cos(49.5 * M_PI / 180))});
+      return img.pixel(static_cast<int>(p.x), static_cast<int>(p.y)) & 0xFFFFFF;
+    };
+    QCOMPARE(at(-5.0, -5.0), rgbOf(Palette::Day, "LANDA") & 0xFFFFFF);
+    QCOMPARE(at(-4.0, 3.0), rgbOf(Palette::Day, "LANDA") & 0xFFFFFF);  // Gannet Island
+    QCOMPARE(at(-6.5, 4.0), rgbOf(Palette::Day, "DEPDW") & 0xFFFFFF);
+    QCOMPARE(at(-6.0, -3.0 + 0.5 * std::sin(-6.0 / 1.9) + 0.35 * std::sin(-6.0 / 0.7 + 1.0) + 0.04),
+             rgbOf(Palette::Day, "DEPVS") & 0xFFFFFF);  // just off the coast: very shallow
+  }
   void aKnownBuoyIsDrawn() {
     if (!std::filesystem::is_directory(kEnc)) QSKIP("../shared/data/enc is absent");
     // "Mystic River Island End Point Buoy 4": red conical (BOYSHP 1, COLOUR 3) at 42.3874441 N 71.0547772 W.

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "charts/s57/s57_loader.h"
 
@@ -77,6 +78,72 @@ class TestS57Loader : public QObject {
       qInfo("%s: %zu features in %zu classes, update %d", c->info().name.c_str(), c->features().size(),
             got.size(), c->info().updateNumber);
     }
+  }
+
+  void theDefaultChartIsACompleteFictionalHarbour() {
+    // GIVEN the chart compiled into the program WHEN loaded through the same path as any ENC
+    const CellPtr c = loadCell(std::string(kDefaultChartPath));
+    QCOMPARE(c->info().name, std::string("RK5SOUND"));
+    QVERIFY(c->info().comment.find("NOT FOR NAVIGATION") != std::string::npos);
+    QCOMPARE(c->coverage().size(), std::size_t{1});
+    // THEN GDAL's own reading of the same bytes (the cell the build wrote) agrees class by class
+    const auto expected = ogrinfoCounts(RECKONER_DEFAULT_CHART_FILE);
+    QVERIFY2(!expected.empty(), "ogrinfo (gdal-bin) did not run");
+    std::map<std::string, std::size_t> got;
+    for (const auto& [cls, n] : c->countsByClass()) got[cls] = n;
+    for (const auto& [cls, n] : expected) QCOMPARE(got[cls], n);
+    // AND it has what the harbour must have
+    std::set<double> bands;
+    std::set<std::int64_t> lateral;
+    int sectored = 0;
+    for (const auto& f : c->features()) {
+      if (f.objectClass == "DEPARE") bands.insert(*f.number("DRVAL1"));
+      if (f.objectClass == "BOYLAT") lateral.insert(f.list("CATLAM").at(0));
+      if (f.objectClass == "LIGHTS" && f.number("SECTR1")) ++sectored;
+    }
+    QVERIFY(bands.size() >= 5);
+    QVERIFY(got["DEPCNT"] >= 5);
+    QVERIFY(c->soundingCount() >= 100);
+    QCOMPARE(lateral, (std::set<std::int64_t>{1, 2}));  // port and starboard marks
+    QVERIFY(got["BOYLAT"] >= 6 && got["BOYCAR"] >= 1 && got["BOYISD"] >= 1 && got["TOPMAR"] >= 4);
+    QVERIFY(got["LIGHTS"] >= 5 && sectored >= 2);
+    QVERIFY(got["LNDARE"] >= 3);  // the mainland and two islands
+    for (const char* cls : {"COALNE", "WRECKS", "OBSTRN", "RESARE", "ACHARE", "TSSLPT", "TSEZNE", "M_NSYS"})
+      QVERIFY2(got[cls] >= 1, cls);
+    // AND every sounding lies in a depth area whose range holds it (areas and soundings agree)
+    const auto inside = [](const Geometry& g, const LatLon& p) {
+      bool in = false;
+      for (const auto& ring : g.parts)
+        for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+          if ((ring[i].latDeg > p.latDeg) != (ring[j].latDeg > p.latDeg) &&
+              p.lonDeg < (ring[j].lonDeg - ring[i].lonDeg) * (p.latDeg - ring[i].latDeg) /
+                                 (ring[j].latDeg - ring[i].latDeg) +
+                             ring[i].lonDeg)
+            in = !in;
+      return in;
+    };
+    int checked = 0, agreeing = 0;
+    for (const auto& s : c->features()) {
+      if (s.objectClass != "SOUNDG") continue;
+      for (std::size_t i = 0; i < s.geometry.parts[0].size(); ++i) {
+        const double depth = s.geometry.depthsM[i];
+        ++checked;
+        for (const auto& a : c->features())
+          if (a.objectClass == "DEPARE" && inside(a.geometry, s.geometry.parts[0][i])) {
+            const bool ok = depth >= *a.number("DRVAL1") - 0.05 && depth <= *a.number("DRVAL2") + 0.05;
+            agreeing += ok;
+            if (!ok)
+              qWarning("sounding %.1f m at %.5f %.5f in a %.0f-%.0f m area", depth,
+                       s.geometry.parts[0][i].latDeg, s.geometry.parts[0][i].lonDeg, *a.number("DRVAL1"),
+                       *a.number("DRVAL2"));
+            break;
+          }
+      }
+    }
+    QVERIFY(checked >= 100);
+    QCOMPARE(agreeing, checked);
+    // AND an unknown built-in chart is a named error
+    QVERIFY_THROWS_EXCEPTION(ChartLoadError, loadCell("builtin:atlantis"));
   }
 
   void metadataAttributesAndGeometry() {

@@ -29,6 +29,7 @@
 #include <QGuiApplication>
 #include <QImage>
 
+#include "charts/pick/pick_report.h"
 #include "charts/portrayal/portrayal.h"
 #include "charts/render/chart_renderer.h"
 #include "charts/s57/s57_loader.h"
@@ -59,6 +60,8 @@ constexpr const char* kUsage =
     "  reckoner-cli chart info PATH...   (S-57 cells or folders: metadata and feature counts as JSON)\n"
     "  reckoner-cli chart render PATH... --center LAT,LON --scale N --size WxH [--palette day|dusk|night]\n"
     "               [--category base|standard|all] [--safety-contour M] --out FILE.png [--repeat K]\n"
+    "  reckoner-cli chart pick PATH... --at LAT,LON [--scale N] [--tolerance PX]   (pick report as JSON)\n"
+    "  (PATH builtin:default is the embedded fictional chart)\n"
     "  reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association] --out "
     "DIR\n"
     "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
@@ -485,6 +488,58 @@ std::pair<double, double> parsePair(const std::string& option, const std::string
   }
 }
 
+/// chart pick PATH... --at LAT,LON [--scale N] [--tolerance PX]: the features there, in plain words.
+int cmdChartPick(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 3, {"at", "scale", "tolerance"});
+  if (a.positional.empty()) throw UsageError("chart pick needs at least one PATH");
+  if (!a.options.count("at")) throw UsageError("--at is required");
+  const auto [lat, lon] = parsePair("at", a.options.at("at"), ',');
+  if (!(std::abs(lat) <= 85.0) || !(std::abs(lon) <= 180.0))
+    throw UsageError("--at: latitude within +-85 and longitude within +-180 degrees");
+  const double scale = a.options.count("scale")
+                           ? static_cast<double>(parseCount("scale", a.options.at("scale"), 100, 100000000))
+                           : 10000.0;
+  const double tolerance =
+      a.options.count("tolerance")
+          ? static_cast<double>(parseCount("tolerance", a.options.at("tolerance"), 1, 200))
+          : 8.0;
+  const charts::LoadResult r = charts::loadCharts(a.positional);
+  for (const auto& f : r.failures)
+    std::fprintf(stderr, "reckoner-cli: error: %s: %s\n", f.file.c_str(), f.reason.c_str());
+  if (r.cells.empty()) return 2;
+  const charts::Viewport view({lat, lon}, scale, 101, 101);
+  const auto picked = charts::pickFeatures(r.cells, view, {50.5, 50.5}, tolerance);
+  io::JsonWriter jw;
+  jw.beginObject();
+  jw.key("at").beginObject();
+  jw.key("lat_deg").value(lat, 7);
+  jw.key("lon_deg").value(lon, 7);
+  jw.endObject();
+  jw.key("features").beginArray();
+  for (const auto& f : picked) {
+    jw.beginObject();
+    jw.key("cell").value(f.cell);
+    jw.key("class").value(f.objectClass);
+    jw.key("class_name").value(f.className);
+    jw.key("primitive").value(f.primitive);
+    jw.key("distance_px").value(f.distancePx, 3);
+    jw.key("attributes").beginArray();
+    for (const auto& at : f.attributes) {
+      jw.beginObject();
+      jw.key("acronym").value(at.acronym);
+      jw.key("name").value(at.name);
+      jw.key("value").value(at.value);
+      jw.endObject();
+    }
+    jw.endArray();
+    jw.endObject();
+  }
+  jw.endArray();
+  jw.endObject();
+  std::printf("%s\n", jw.str().c_str());
+  return 0;
+}
+
 /// chart render PATH... --center LAT,LON --scale N --size WxH [--palette] [--category] [--safety-contour M]
 /// --out FILE.png [--repeat K]: PNG and JSON with load and median render times.
 int cmdChartRender(int argc, char** argv) {
@@ -574,7 +629,8 @@ int cmdChart(int argc, char** argv) {
   if (argc < 3) throw UsageError("chart needs a subcommand: info or render");
   const std::string sub = argv[2];
   if (sub == "render") return cmdChartRender(argc, argv);
-  if (sub != "info") throw UsageError("unknown chart subcommand '" + sub + "' (known: info, render)");
+  if (sub == "pick") return cmdChartPick(argc, argv);
+  if (sub != "info") throw UsageError("unknown chart subcommand '" + sub + "' (known: info, render, pick)");
   const Args a = parseArgs(argc, argv, 3, {});
   if (a.positional.empty()) throw UsageError("chart info needs at least one PATH (a .000 cell or a folder)");
   const auto start = std::chrono::steady_clock::now();

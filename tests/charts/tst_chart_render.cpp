@@ -5,9 +5,11 @@
 #include <QPainter>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
+#include "charts/pick/pick_report.h"
 #include "charts/portrayal/portrayal.h"
 #include "charts/render/chart_renderer.h"
 #include "charts/render/viewport.h"
@@ -239,6 +241,38 @@ class TestChartRender : public QObject {
     QCOMPARE(at(-6.5, 4.0), rgbOf(Palette::Day, "DEPDW") & 0xFFFFFF);
     QCOMPARE(at(-6.0, -3.0 + 0.5 * std::sin(-6.0 / 1.9) + 0.35 * std::sin(-6.0 / 0.7 + 1.0) + 0.04),
              rgbOf(Palette::Day, "DEPVS") & 0xFFFFFF);  // just off the coast: very shallow
+  }
+  void pickReportsSpeakPlainWords() {
+    // GIVEN the default chart WHEN the dangerous wreck is clicked
+    const std::vector<CellPtr> cells{loadCell(std::string(kDefaultChartPath))};
+    const LatLon wreck{49.5 + 1.8 / 110.57, -29.5 + 2.8 / (111.32 * std::cos(49.5 * M_PI / 180))};
+    const Viewport view(wreck, 10000, 200, 200);
+    const ScreenPoint click = view.toScreen(wreck);
+    const auto picked = pickFeatures(cells, view, {click.x + 3, click.y - 2});
+    // THEN it comes first, decoded from GDAL's catalogue, and the areas under it follow
+    QVERIFY(picked.size() >= 3);
+    QCOMPARE(picked[0].objectClass, std::string("WRECKS"));
+    QCOMPARE(picked[0].className, std::string("Wreck"));
+    const auto value = [](const PickedFeature& f, const std::string& name) {
+      for (const auto& a : f.attributes)
+        if (a.name == name) return a.value;
+      return std::string("(absent)");
+    };
+    QCOMPARE(value(picked[0], "Category of wreck"), std::string("dangerous wreck"));
+    QCOMPARE(value(picked[0], "Value of sounding"), std::string("4.2"));
+    QVERIFY(std::any_of(picked.begin(), picked.end(), [&](const PickedFeature& f) {
+      return f.objectClass == "DEPARE" && value(f, "Depth range value 1") == "30";
+    }));
+    QCOMPARE(picked.back().primitive, std::string("area"));
+    // AND far from everything but the areas, no point or line is reported
+    const auto open = pickFeatures(cells, view, {click.x + 60, click.y + 60});
+    QVERIFY(
+        std::all_of(open.begin(), open.end(), [](const PickedFeature& f) { return f.primitive == "area"; }));
+    // AND list values are decoded one by one
+    QCOMPARE(S57Catalogue::installed().valueText("COLOUR", std::vector<std::int64_t>{2, 6}),
+             std::string("black, yellow"));
+    // AND a catalogue that is not there is a named error
+    QVERIFY_THROWS_EXCEPTION(ChartLoadError, S57Catalogue("/nonexistent"));
   }
   void aKnownBuoyIsDrawn() {
     if (!std::filesystem::is_directory(kEnc)) QSKIP("../shared/data/enc is absent");

@@ -1,0 +1,104 @@
+// GIVEN / WHEN / THEN behaviour of the chart view widget (offscreen): the worker renders the embedded
+// chart, a drag pans and a wheel step zooms about the cursor at once from the cached image, a click
+// reports the features there, and a burst of view changes renders only the views still wanted.
+#include <QApplication>
+#include <QMouseEvent>
+#include <QSignalSpy>
+#include <QTest>
+#include <QWheelEvent>
+#include <cmath>
+
+#include "charts/s57/s57_loader.h"
+#include "ui/map/chart_view.h"
+
+using namespace reckoner;
+
+namespace {
+charts::LatLon local(double xKm, double yKm) {  // the default chart's own frame (resources/charts)
+  return {49.5 + yKm / 110.57, -29.5 + xKm / (111.32 * std::cos(49.5 * M_PI / 180.0))};
+}
+
+void send(QWidget& w, QEvent::Type type, QPointF at, Qt::MouseButtons buttons) {
+  QMouseEvent e(type, at, w.mapToGlobal(at), Qt::LeftButton, buttons, Qt::NoModifier);
+  QCoreApplication::sendEvent(&w, &e);
+}
+
+bool near(const charts::ScreenPoint& a, double x, double y) {
+  return std::abs(a.x - x) < 0.5 && std::abs(a.y - y) < 0.5;
+}
+}  // namespace
+
+class TestChartView : public QObject {
+  Q_OBJECT
+ private slots:
+  void rendersPansZoomsAndPicks() {
+    ui::ChartView view;
+    view.resize(800, 600);
+    view.setCells({charts::loadCell(std::string(charts::kDefaultChartPath))});
+    view.setView(local(0.6, -3.0), 30000);
+    view.show();
+    QTRY_VERIFY_WITH_TIMEOUT(
+        view.renderedGeneration() == view.requestedGeneration() && !view.renderedImage().isNull(), 10000);
+    // THEN what is on screen is the chart: land south of the bay, the notice at the bottom
+    QImage shot = view.grab().toImage();
+    const charts::Rgb land = charts::defaultColours().colour(charts::Palette::Day, "LANDA");
+    const charts::ScreenPoint onLand = view.viewport().toScreen(local(-1.0, -5.0));
+    QCOMPARE(shot.pixel(static_cast<int>(onLand.x), static_cast<int>(onLand.y)) & 0xFFFFFF,
+             qRgb(land.r, land.g, land.b) & 0xFFFFFF);
+    if (qEnvironmentVariableIsSet("RECKONER_SAVE_PNG")) shot.save(qEnvironmentVariable("RECKONER_SAVE_PNG"));
+
+    // WHEN dragged by (50, 30) px THEN the chart point under the mouse follows it, and before any new
+    // render the cached image already shows it moved
+    const charts::LatLon grabbed = view.viewport().toLatLon({400, 300});
+    const QRgb before = shot.pixel(400, 300);
+    send(view, QEvent::MouseButtonPress, {400, 300}, Qt::LeftButton);
+    send(view, QEvent::MouseMove, {420, 312}, Qt::LeftButton);
+    send(view, QEvent::MouseMove, {450, 330}, Qt::LeftButton);
+    send(view, QEvent::MouseButtonRelease, {450, 330}, Qt::NoButton);
+    QVERIFY(near(view.viewport().toScreen(grabbed), 450, 330));
+    QCOMPARE(view.grab().toImage().pixel(450, 330), before);
+
+    // WHEN the wheel turns one step in at (200, 150) THEN the scale is 1.25 times larger and the chart
+    // point there stays put
+    QTRY_VERIFY_WITH_TIMEOUT(view.renderedGeneration() == view.requestedGeneration(), 10000);
+    const double scale = view.viewport().scaleDenominator();
+    const charts::LatLon anchor = view.viewport().toLatLon({200, 150});
+    QWheelEvent wheel({200, 150}, view.mapToGlobal(QPointF(200, 150)), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(&view, &wheel);
+    QVERIFY(std::abs(view.viewport().scaleDenominator() - scale / 1.25) < 1e-6 * scale);
+    QVERIFY(near(view.viewport().toScreen(anchor), 200, 150));
+
+    // WHEN the wreck is clicked (press and release without a drag) THEN its pick report arrives
+    view.setView(local(2.8, 1.8), 10000);
+    QSignalSpy picks(&view, &ui::ChartView::picked);
+    const charts::ScreenPoint wreck = view.viewport().toScreen(local(2.8, 1.8));
+    send(view, QEvent::MouseButtonPress, {wreck.x + 2, wreck.y + 1}, Qt::LeftButton);
+    send(view, QEvent::MouseButtonRelease, {wreck.x + 2, wreck.y + 1}, Qt::NoButton);
+    QCOMPARE(picks.count(), 1);
+    const auto features = picks.at(0).at(0).value<std::vector<charts::PickedFeature>>();
+    QVERIFY(!features.empty());
+    QCOMPARE(features.front().className, std::string("Wreck"));
+  }
+
+  void aBurstOfViewChangesRendersOnlyWhatIsStillWanted() {
+    ui::ChartView view;
+    view.resize(1200, 900);
+    view.setCells({charts::loadCell(std::string(charts::kDefaultChartPath))});
+    view.show();
+    QSignalSpy done(&view, &ui::ChartView::renderFinished);
+    for (int k = 0; k < 30; ++k) view.setView(local(-3.0 + 0.2 * k, 0.0), 40000 - 500 * k);
+    QTRY_VERIFY_WITH_TIMEOUT(view.renderedGeneration() == view.requestedGeneration(), 10000);
+    QVERIFY2(done.count() < 30, qPrintable(QString("%1 renders for 30 views").arg(done.count())));
+    QVERIFY(near(view.viewport().toScreen(local(-3.0 + 0.2 * 29, 0.0)), 600, 450));
+  }
+};
+
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  QApplication app(argc, argv);
+  qRegisterMetaType<std::vector<reckoner::charts::PickedFeature>>();
+  TestChartView t;
+  return QTest::qExec(&t, argc, argv);
+}
+#include "tst_chart_view.moc"

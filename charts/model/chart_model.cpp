@@ -79,4 +79,19 @@ std::size_t ChartCell::soundingCount() const {
   return n;
 }
 
+bool Geometry::contains(const LatLon& p) const {
+  if (primitive != Primitive::Area || !bounds.contains(p)) return false;
+  bool in = false;
+  for (const auto& ring : parts) {
+    if (ring.empty()) continue;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+      if ((ring[i].latDeg > p.latDeg) != (ring[j].latDeg > p.latDeg) &&
+          p.lonDeg < (ring[j].lonDeg - ring[i].lonDeg) * (p.latDeg - ring[i].latDeg) /
+                             (ring[j].latDeg - ring[i].latDeg) +
+                         ring[i].lonDeg)
+        in = !in;
+  }
+  return in;
+}
+
 }  // namespace reckoner::charts

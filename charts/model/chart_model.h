@@ -38,6 +38,9 @@ struct Geometry {
   std::vector<std::size_t> polygonStarts;  ///< areas only
   std::vector<double> depthsM;             ///< soundings: one depth per point of parts[0]
   Bounds bounds;
+
+  /// Areas: whether p lies inside (even-odd over all rings, so holes are outside).
+  [[nodiscard]] bool contains(const LatLon& p) const;
 };
 
 /// An attribute value as S-57 types it: enumerated and integer -> integer, float -> real, list -> a

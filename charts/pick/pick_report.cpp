@@ -165,16 +165,7 @@ std::vector<PickedFeature> pickFeatures(const std::vector<CellPtr>& cells, const
             dist = std::min(dist, segmentDistance(at.x, at.y, a.x, a.y, b.x, b.y));
           }
       } else if (g.primitive == Primitive::Area) {
-        if (!g.bounds.contains(here)) continue;
-        bool in = false;
-        for (const auto& ring : g.parts)
-          for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
-            if ((ring[i].latDeg > here.latDeg) != (ring[j].latDeg > here.latDeg) &&
-                here.lonDeg < (ring[j].lonDeg - ring[i].lonDeg) * (here.latDeg - ring[i].latDeg) /
-                                      (ring[j].latDeg - ring[i].latDeg) +
-                                  ring[i].lonDeg)
-              in = !in;
-        if (in) dist = 0;
+        if (g.contains(here)) dist = 0;
       }
       if (dist > tolerancePx) continue;
       PickedFeature p;

@@ -174,20 +174,10 @@ std::map<std::string, int> objectCodes() {
   std::getline(in, line);  // header
   while (std::getline(in, line)) {
     // Code,ObjectClass,Acronym,...: the acronym is the third field; the second may be quoted.
+    char** tokens = CSLTokenizeString2(line.c_str(), ",", CSLT_HONOURSTRINGS | CSLT_ALLOWEMPTYTOKENS);
     std::vector<std::string> fields;
-    std::string cur;
-    bool quoted = false;
-    for (char ch : line) {
-      if (ch == '"') {
-        quoted = !quoted;
-      } else if (ch == ',' && !quoted) {
-        fields.push_back(cur);
-        cur.clear();
-      } else {
-        cur += ch;
-      }
-    }
-    fields.push_back(cur);
+    for (int i = 0; tokens && tokens[i]; ++i) fields.emplace_back(tokens[i]);
+    CSLDestroy(tokens);
     if (fields.size() >= 3) codes[fields[2]] = std::atoi(fields[0].c_str());
   }
   return codes;

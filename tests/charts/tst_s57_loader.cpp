@@ -111,17 +111,6 @@ class TestS57Loader : public QObject {
     for (const char* cls : {"COALNE", "WRECKS", "OBSTRN", "RESARE", "ACHARE", "TSSLPT", "TSEZNE", "M_NSYS"})
       QVERIFY2(got[cls] >= 1, cls);
     // AND every sounding lies in a depth area whose range holds it (areas and soundings agree)
-    const auto inside = [](const Geometry& g, const LatLon& p) {
-      bool in = false;
-      for (const auto& ring : g.parts)
-        for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
-          if ((ring[i].latDeg > p.latDeg) != (ring[j].latDeg > p.latDeg) &&
-              p.lonDeg < (ring[j].lonDeg - ring[i].lonDeg) * (p.latDeg - ring[i].latDeg) /
-                                 (ring[j].latDeg - ring[i].latDeg) +
-                             ring[i].lonDeg)
-            in = !in;
-      return in;
-    };
     int checked = 0, agreeing = 0;
     for (const auto& s : c->features()) {
       if (s.objectClass != "SOUNDG") continue;
@@ -129,7 +118,7 @@ class TestS57Loader : public QObject {
         const double depth = s.geometry.depthsM[i];
         ++checked;
         for (const auto& a : c->features())
-          if (a.objectClass == "DEPARE" && inside(a.geometry, s.geometry.parts[0][i])) {
+          if (a.objectClass == "DEPARE" && a.geometry.contains(s.geometry.parts[0][i])) {
             const bool ok = depth >= *a.number("DRVAL1") - 0.05 && depth <= *a.number("DRVAL2") + 0.05;
             agreeing += ok;
             if (!ok)

@@ -6,6 +6,7 @@
 #include <QPainterPath>
 #include <QTransform>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -24,7 +25,6 @@ struct PreparedItem {
   std::uint32_t firstPart = 0, partCount = 0;
   MercatorPoint lo, hi;  // box of the feature
   double scamin = std::numeric_limits<double>::infinity();
-  int polygonCount = 0;  // areas: 1 means a single ring, drawn as a polygon
 };
 
 class PreparedCell {
@@ -51,7 +51,6 @@ class PreparedCell {
       it.f = &f;
       it.rule = r;
       if (const auto s = f.number("SCAMIN"); s && *s > 0) it.scamin = *s;
-      it.polygonCount = static_cast<int>(f.geometry.polygonStarts.size());
       addGeometry(f.geometry, it);
       const int layer = f.geometry.primitive == Primitive::Area   ? 0
                         : f.geometry.primitive == Primitive::Line ? 1
@@ -192,15 +191,21 @@ void fillArea(Ctx& c, const PreparedCell& pc, const PreparedItem& it, const QBru
 /// strokes lines up to one pixel wide with its fast cosmetic stroker, but wider ones through the
 /// general path stroker (joins, caps, then a polygon fill), several times slower. Copies shifted by
 /// at most a pixel along x and along y widen a line of any direction by at least 0.7 of the shift.
-std::vector<QPointF> widthOffsets(double width) {
-  std::vector<QPointF> offsets{{0, 0}};
-  const int steps = static_cast<int>(std::ceil(width - 1.0 - 1e-9));
+/// Used for widths up to 3 px, so at most two steps: five offsets, no allocation per line.
+struct WidthOffsets {
+  std::array<QPointF, 5> at{};
+  int n = 1;  // at[0] = (0, 0)
+};
+
+WidthOffsets widthOffsets(double width) {
+  WidthOffsets o;
+  const int steps = std::clamp(static_cast<int>(std::ceil(width - 1.0 - 1e-9)), 0, 2);
   for (int k = 1; k <= steps; ++k) {
     const double d = (width - 1.0) * k / steps;
-    offsets.emplace_back(d, 0);
-    offsets.emplace_back(0, d);
+    o.at[static_cast<std::size_t>(o.n++)] = QPointF(d, 0);
+    o.at[static_cast<std::size_t>(o.n++)] = QPointF(0, d);
   }
-  return offsets;
+  return o;
 }
 
 /// Strokes parts [first, first + count) as polylines (rings come closed from the loader).
@@ -211,20 +216,18 @@ void strokeParts(Ctx& c, const PreparedCell& pc, std::uint32_t first, std::uint3
   QPen p1 = pen;
   if (!thin) p1.setWidthF(1.0);
   c.p.setPen(p1);
-  const std::vector<QPointF> offsets = thin ? std::vector<QPointF>{{0, 0}} : widthOffsets(width);
+  const WidthOffsets offsets = thin ? WidthOffsets{} : widthOffsets(width);
   for (std::uint32_t k = 0; k < count; ++k) {
     const PartSpan& part = pc.parts()[first + k];
     if (part.count < 2 || !c.onScreen(part.lo, part.hi)) continue;
     const QPolygonF& poly = project(c, pc, part);
     if (poly.size() < 2) continue;
-    for (const QPointF& o : offsets) {
-      if (o.isNull()) {
-        c.p.drawPolyline(poly);
-      } else {
-        c.p.translate(o);
-        c.p.drawPolyline(poly);
-        c.p.translate(-o);
-      }
+    c.p.drawPolyline(poly);
+    for (int i = 1; i < offsets.n; ++i) {
+      const QPointF& o = offsets.at[static_cast<std::size_t>(i)];
+      c.p.translate(o);
+      c.p.drawPolyline(poly);
+      c.p.translate(-o);
     }
   }
 }

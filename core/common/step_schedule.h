@@ -22,6 +22,13 @@ class StepSchedule {
     return true;
   }
 
+  /// An operator override: drops every change at or after timeUs, then adds (timeUs, value). Later
+  /// scripted changes no longer apply; the schedule stays a faithful record of what happened.
+  void overrideFrom(TimeUs timeUs, T value) {
+    while (!changes_.empty() && changes_.back().first >= timeUs) changes_.pop_back();
+    changes_.emplace_back(timeUs, std::move(value));
+  }
+
   /// The value in force at timeUs (the last change at or before it).
   [[nodiscard]] const T& at(TimeUs timeUs) const {
     const auto it = std::upper_bound(changes_.begin(), changes_.end(), timeUs,

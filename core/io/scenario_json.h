@@ -17,6 +17,14 @@ sim::Scenario parseScenario(std::string_view text, const std::string& sourceName
 /// Reads and parses a scenario file. Throws InputError (also for a missing or unreadable file).
 sim::Scenario loadScenarioFile(const std::string& path);
 
+/// The scenario as JSON text in the same format, every value written so that parseScenario() gives it
+/// back (times to the microsecond, numbers with 17 significant digits).
+std::string writeScenario(const sim::Scenario& s);
+
+/// Writes writeScenario(s) to path (through a temporary file, so a failed write leaves the old file).
+/// Throws InputError naming the file.
+void saveScenarioFile(const sim::Scenario& s, const std::string& path);
+
 /// Reads a whole text file; throws InputError naming the file when it cannot.
 std::string readTextFile(const std::string& path);
 

@@ -36,11 +36,11 @@ LoranSample LoranSimulator::measure(TimeUs t, const geo::GridPoint& truePos) {
 }
 
 SpeedlogSample SpeedlogSimulator::measure(TimeUs t, double speedOverGroundGrid, double speedThroughWaterGrid,
-                                          const geo::GridInfo& grid) {
+                                          SpeedlogMode mode, const geo::GridInfo& grid) {
   advanceTo(t);
   SpeedlogSample s;
   s.timeUs = t;
-  s.mode = spec_.mode.at(t);
+  s.mode = mode;
   const double gridSpeed = s.mode == SpeedlogMode::GroundLock ? speedOverGroundGrid : speedThroughWaterGrid;
   // The Gauss-Markov error is defined on the filter's (grid) speed; report true length.
   s.speedMps = (gridSpeed + error_.value()) / grid.scale + rng_.normal(0.0, std::sqrt(spec_.whiteVarM2PerS2));

@@ -65,9 +65,10 @@ class SpeedlogSimulator {
   SpeedlogSimulator(const SpeedlogSpec& spec, Rng rng, TimeUs t0)
       : spec_(spec), rng_(rng), error_(spec.error, rng_, t0) {}
   void advanceTo(TimeUs t) { error_.advanceTo(t, rng_); }
-  /// Speeds are true grid speeds (m/s of grid length); the sample reports true length.
+  /// Speeds are true grid speeds (m/s of grid length); the sample reports true length. The mode is
+  /// the one in force (the scenario's schedule, or the operator's switch).
   SpeedlogSample measure(TimeUs t, double speedOverGroundGrid, double speedThroughWaterGrid,
-                         const geo::GridInfo& grid);
+                         SpeedlogMode mode, const geo::GridInfo& grid);
   [[nodiscard]] double errorMps() const { return error_.value(); }
 
  private:

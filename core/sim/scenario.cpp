@@ -11,6 +11,17 @@ bool positive(double v) {
 bool nonNegative(double v) {
   return std::isfinite(v) && v >= 0.0;
 }
+
+std::string checkMotion(const VesselMotionSpec& m) {
+  if (!nonNegative(m.maxTurnRateRadPerS)) return "max_turn_rate_dps: must be >= 0";
+  for (const auto& e : m.schedule) {
+    if (e.order && (e.setVelocityMps || e.turnRateRadPerS))
+      return "schedule: an order cannot be combined with velocity_mps or turn_rate_dps";
+    if (e.order && (!std::isfinite(e.order->headingRad) || !nonNegative(e.order->speedMps)))
+      return "schedule: order needs a finite heading and a speed >= 0";
+  }
+  return {};
+}
 }  // namespace
 
 SensorStates sensorStatesAt(const Scenario& s, TimeUs t) {
@@ -74,6 +85,7 @@ std::string checkScenario(const Scenario& s) {
   for (std::size_t i = 1; i < s.ownShip.schedule.size(); ++i)
     if (s.ownShip.schedule[i].timeUs <= s.ownShip.schedule[i - 1].timeUs)
       return "own_ship.schedule: times must increase";
+  if (std::string p = checkMotion(s.ownShip); !p.empty()) return "own_ship." + p;
   if (s.gps.fitted &&
       (!positive(s.gps.rateHz) || !positive(s.gps.positionVarM2) || !positive(s.gps.velocityVarM2PerS2)))
     return "sensors.gps: rate and variances must be positive";
@@ -93,6 +105,8 @@ std::string checkScenario(const Scenario& s) {
     for (std::size_t j = 0; j < i; ++j)
       if (s.targets[j].id == t.id) return "targets: id " + std::to_string(t.id) + " used twice";
     if (!nonNegative(t.motion.maxAccelerationMps2)) return "targets: max_acceleration_mps2 must be >= 0";
+    if (t.appearUs < 0) return "targets: appear_s must be >= 0";
+    if (std::string p = checkMotion(t.motion); !p.empty()) return "targets: " + p;
     if (t.motion.randomAcceleration && !t.motion.randomAcceleration->valid())
       return "targets: random_acceleration sigma must be >= 0 and beta > 0";
     for (std::size_t k = 1; k < t.motion.schedule.size(); ++k)

@@ -15,11 +15,20 @@
 
 namespace reckoner::sim {
 
-/// A change of the own-ship kinematics at a time (seed 000 Table II).
+/// A helm order: the ship turns towards the heading at no more than the vessel's turn-rate limit and
+/// changes speed at no more than its acceleration limit (what a watch officer orders from the bridge).
+struct HelmOrder {
+  double headingRad = 0.0;  ///< grid heading through the water, [0, 2 pi)
+  double speedMps = 0.0;    ///< speed through the water, >= 0
+  friend bool operator==(const HelmOrder&, const HelmOrder&) = default;
+};
+
+/// A change of the own-ship kinematics at a time (seed 000 Table II), or a helm order.
 struct KinematicEvent {
   TimeUs timeUs = 0;
   std::optional<std::array<double, 2>> setVelocityMps;  ///< commanded velocity through water, grid (vx, vy)
   std::optional<double> turnRateRadPerS;                ///< rotation of the velocity, clockwise positive
+  std::optional<HelmOrder> order;  ///< exclusive with the two above; ends at the next event
 };
 
 struct VesselMotionSpec {
@@ -29,6 +38,8 @@ struct VesselMotionSpec {
   std::vector<KinematicEvent> schedule;        ///< increasing time
   /// > 0: a commanded velocity is reached at this acceleration; 0: instantly (as Table II prints it).
   double maxAccelerationMps2 = 0.0;
+  /// > 0: helm orders turn the ship at no more than this rate; 0: helm orders turn instantly.
+  double maxTurnRateRadPerS = 0.0;
   /// Optional Gauss-Markov acceleration added to the scheduled motion (truth drawn from the filter's
   /// own model for consistency tests).
   std::optional<est::GaussMarkov> randomAcceleration;
@@ -38,6 +49,9 @@ struct VesselMotionSpec {
 struct TargetSpec {
   int id = 0;  ///< unique, >= 0
   std::string name;
+  /// The target exists (moves, echoes) from this time on; its motion starts here from the initial
+  /// position (targets added during a run).
+  TimeUs appearUs = 0;
   VesselMotionSpec motion;
 };
 

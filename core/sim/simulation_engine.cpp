@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/angles.h"
+
 namespace reckoner::sim {
 namespace {
 using namespace est::drkf;
@@ -55,6 +57,7 @@ est::ttkf::State trueTrackState(const VesselTruth& own, const VesselTruth& targe
 
 SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
     : scenario_(checked(scenario)),
+      seed_(seed),
       frame_(scenario.origin.latDeg, scenario.origin.lonDeg),
       truth_(scenario.ownShip, scenario.current, Rng(seed, kStreamTruth)),
       gps_(scenario.gps, Rng(seed, kStreamGps)),
@@ -84,7 +87,8 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
   const est::GaussMarkov noCurrent{0.0, 1.0};
   targets_.reserve(scenario.targets.size());
   for (std::size_t i = 0; i < scenario.targets.size(); ++i)
-    targets_.emplace_back(scenario.targets[i].motion, noCurrent, Rng(seed, kStreamTargetBase + i));
+    targets_.emplace_back(scenario.targets[i].motion, noCurrent, Rng(seed, kStreamTargetBase + i),
+                          scenario.targets[i].appearUs);
   manager_.emplace(trackManagerConfigFor(scenario.tracker, scenario.radar.sweepPeriodS));
   nextSweepUs_ = scenario.radar.fitted ? 0 : kNever;
 }
@@ -163,7 +167,7 @@ void SimulationEngine::ownShipEpoch(TimeUs t, SimFrame& frame) {
       case SensorId::Speedlog:
         frame.measurements.emplace_back(speedlog_.measure(t, std::hypot(tr.groundVxMps(), tr.groundVyMps()),
                                                           std::hypot(tr.waterVxMps, tr.waterVyMps),
-                                                          truthGrid()));
+                                                          on.speedlogMode, truthGrid()));
         break;
       case SensorId::Gyro:
         frame.measurements.emplace_back(gyro_.measure(t, tr.headingRad, truthGrid()));
@@ -193,6 +197,7 @@ void SimulationEngine::startSweep(TimeUs t, SimFrame& frame) {
   const double gamma = truthGrid().convergenceRad;
   std::vector<PendingPlot> sweep;
   for (std::size_t i = 0; i < targets_.size(); ++i) {
+    if (scenario_.targets[i].appearUs > t) continue;
     const auto& p = targets_[i].state().position;
     const double trueBearing = bearingOf(p.xM - own.position.xM, p.yM - own.position.yM) + gamma;
     sweep.push_back({radar_.beamTime(t, trueBearing), i, std::nullopt});
@@ -262,7 +267,11 @@ SimFrame SimulationEngine::step() {
   frame.trueState = trueState();
   frame.estimate = drkf_->belief();
   frame.sensors = sensorStatesAt(scenario_, end);
-  for (const auto& m : targets_) frame.targets.push_back(m.state());
+  frame.order = truth_.order();
+  for (std::size_t i = 0; i < targets_.size(); ++i) {
+    frame.targets.push_back(targets_[i].state());
+    frame.targetPresent.push_back(scenario_.targets[i].appearUs <= end ? 1 : 0);
+  }
   if (!manager_->tracks().empty()) {
     const double convergence = ownShipInput().convergenceRad;
     for (const auto& t : manager_->tracks()) frame.tracks.push_back(snapshotOf(t, end, convergence));
@@ -270,6 +279,72 @@ SimFrame SimulationEngine::step() {
   frame.trackEvents = manager_->takeEvents();
   frame.capacityWarning = manager_->capacityWarning();
   return frame;
+}
+
+void SimulationEngine::orderOwnShip(const HelmOrder& order) {
+  KinematicEvent e;
+  e.timeUs = commandTimeUs();
+  e.order = HelmOrder{wrapTwoPi(order.headingRad), std::max(0.0, order.speedMps)};
+  if (!std::isfinite(e.order->headingRad) || !std::isfinite(e.order->speedMps)) return;
+  if (!truth_.overrideFrom(e)) return;
+  auto& events = scenario_.ownShip.schedule;
+  while (!events.empty() && events.back().timeUs >= e.timeUs) events.pop_back();
+  events.push_back(e);
+}
+
+void SimulationEngine::setSensorPower(SensorId id, bool on) {
+  const TimeUs t = commandTimeUs();
+  switch (id) {
+    case SensorId::Gps:
+      if (scenario_.gps.fitted) scenario_.gps.power.overrideFrom(t, on);
+      break;
+    case SensorId::LoranC:
+      if (scenario_.loran.fitted) scenario_.loran.power.overrideFrom(t, on);
+      break;
+    case SensorId::Speedlog:
+      if (scenario_.speedlog.fitted) scenario_.speedlog.power.overrideFrom(t, on);
+      break;
+    case SensorId::Gyro:
+      if (scenario_.gyro.fitted) scenario_.gyro.power.overrideFrom(t, on);
+      break;
+  }
+}
+
+void SimulationEngine::setSpeedlogMode(sensors::SpeedlogMode mode) {
+  if (scenario_.speedlog.fitted) scenario_.speedlog.mode.overrideFrom(commandTimeUs(), mode);
+}
+
+void SimulationEngine::setRadarPower(bool on) {
+  if (scenario_.radar.fitted) scenario_.radar.power.overrideFrom(commandTimeUs(), on);
+}
+
+std::optional<int> SimulationEngine::addTarget(TargetSpec target) {
+  const auto taken = [this](int id) {
+    return std::any_of(scenario_.targets.begin(), scenario_.targets.end(),
+                       [id](const TargetSpec& t) { return t.id == id; });
+  };
+  if (target.id < 0 || taken(target.id)) {
+    target.id = 1;
+    for (const auto& t : scenario_.targets) target.id = std::max(target.id, t.id + 1);
+  }
+  if (target.name.empty()) target.name = "target " + std::to_string(target.id);
+  target.appearUs = commandTimeUs();
+  const auto& m = target.motion;
+  if (!std::isfinite(m.initialPosition.xM) || !std::isfinite(m.initialPosition.yM) ||
+      !std::isfinite(m.initialVelocityMps[0]) || !std::isfinite(m.initialVelocityMps[1]) ||
+      !m.schedule.empty())
+    return std::nullopt;
+  const std::size_t index = scenario_.targets.size();
+  targets_.emplace_back(m, est::GaussMarkov{0.0, 1.0}, Rng(seed_, kStreamTargetBase + index),
+                        target.appearUs);
+  scenario_.targets.push_back(std::move(target));
+  return scenario_.targets.back().id;
+}
+
+bool SimulationEngine::extendTo(TimeUs t) {
+  if (t <= timeUs_) return false;
+  scenario_.durationUs = std::max(scenario_.durationUs, t);
+  return true;
 }
 
 }  // namespace reckoner::sim

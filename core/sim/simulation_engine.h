@@ -45,11 +45,13 @@ struct SimFrame {
   std::vector<sensors::OwnShipSample> measurements;  ///< taken during this cycle
   std::vector<nav::DrkfUpdateReport> updates;        ///< one per measurement epoch of this cycle
   SensorStates sensors;
-  std::vector<VesselTruth> targets;       ///< in scenario order
-  std::vector<sensors::RadarPlot> plots;  ///< radar plots of this cycle
-  std::vector<int> plotSources;           ///< target id of each plot (-1: clutter); not given to trackers
-  std::vector<TrackSnapshot> tracks;      ///< at timeUs
-  std::vector<SweepSnapshot> sweeps;      ///< sweeps that ended during this cycle
+  std::optional<HelmOrder> order;           ///< own ship's helm order in force, if any
+  std::vector<VesselTruth> targets;         ///< in scenario order
+  std::vector<std::uint8_t> targetPresent;  ///< per target: 1 once it has appeared (appear_s)
+  std::vector<sensors::RadarPlot> plots;    ///< radar plots of this cycle
+  std::vector<int> plotSources;             ///< target id of each plot (-1: clutter); not given to trackers
+  std::vector<TrackSnapshot> tracks;        ///< at timeUs
+  std::vector<SweepSnapshot> sweeps;        ///< sweeps that ended during this cycle
   std::vector<track::TrackEvent> trackEvents;
   bool capacityWarning = false;
 };
@@ -77,6 +79,24 @@ class SimulationEngine {
   bool cancelTrack(int id) { return manager_->cancel(id); }
   void cancelAllTracks() { manager_->cancelAll(); }
 
+  // Operator changes to the scenario itself, effective one microsecond after the current time (the
+  // epoch at the current time has been processed). Each is written into scenario() (replacing what
+  // the script had planned from then on), so the edited scenario, saved and run again with the same
+  // seed, reproduces this run.
+  /// A helm order for own ship (grid heading through the water, speed through the water >= 0).
+  void orderOwnShip(const HelmOrder& order);
+  /// Powers an own-ship sensor on or off (ignored for a sensor that is not fitted).
+  void setSensorPower(sensors::SensorId id, bool on);
+  void setSpeedlogMode(sensors::SpeedlogMode mode);
+  void setRadarPower(bool on);
+  /// Adds a target that appears now at its spec's initial position; its id is replaced by a free one
+  /// when negative or taken. Returns the id, or nullopt if the spec is invalid.
+  std::optional<int> addTarget(TargetSpec target);
+  /// Makes the run last at least until t (> now; never shortens it); returns false otherwise.
+  bool extendTo(TimeUs t);
+  /// The time from which operator changes take effect.
+  [[nodiscard]] TimeUs commandTimeUs() const { return timeUs_ + 1; }
+
  private:
   struct Clock {
     bool fitted = false;
@@ -99,6 +119,7 @@ class SimulationEngine {
   [[nodiscard]] track::OwnShipInput ownShipInput() const;
 
   Scenario scenario_;
+  std::uint64_t seed_;
   geo::LocalFrame frame_;
   VesselMotionModel truth_;
   sensors::GpsSimulator gps_;

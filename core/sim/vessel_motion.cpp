@@ -25,7 +25,8 @@ double initialHeading(const VesselMotionSpec& spec) {
 }
 }  // namespace
 
-VesselMotionModel::VesselMotionModel(const VesselMotionSpec& spec, const est::GaussMarkov& current, Rng rng)
+VesselMotionModel::VesselMotionModel(const VesselMotionSpec& spec, const est::GaussMarkov& current, Rng rng,
+                                     TimeUs startUs)
     : spec_(spec),
       current_(current),
       randomAccel_(spec.randomAcceleration.value_or(est::GaussMarkov{0.0, 1.0})),
@@ -40,6 +41,10 @@ VesselMotionModel::VesselMotionModel(const VesselMotionSpec& spec, const est::Ga
     r[3] = rng_.normal(0.0, randomAccel_.sigma);  // so is the random acceleration
   }
   committed_.headingRad = initialHeading(spec);
+  committed_.timeUs = startUs;
+  while (committed_.nextEvent < spec_.schedule.size() &&
+         spec_.schedule[committed_.nextEvent].timeUs < startUs)
+    ++committed_.nextEvent;  // events before the motion starts do not apply
   applyDueEvents(committed_);
   refreshOutputs(committed_);
 }
@@ -84,6 +89,11 @@ void VesselMotionModel::applyDueEvents(Motion& m) const {
   const auto& events = spec_.schedule;
   while (m.nextEvent < events.size() && events[m.nextEvent].timeUs <= m.timeUs) {
     const KinematicEvent& e = events[m.nextEvent++];
+    m.order = e.order;  // an order holds until the next event
+    if (e.order) {
+      m.turnRateRadPerS = 0.0;
+      continue;
+    }
     if (e.setVelocityMps) m.commanded = *e.setVelocityMps;
     if (e.turnRateRadPerS) m.turnRateRadPerS = *e.turnRateRadPerS;
     if (spec_.maxAccelerationMps2 <= 0.0) m.scheduledVel = m.commanded;
@@ -100,7 +110,24 @@ void VesselMotionModel::substep(Motion& m, TimeUs dtUs, bool noisy) {
       *v = {c * (*v)[0] + s * (*v)[1], c * (*v)[1] - s * (*v)[0]};
   }
   m.rampAccel = {0.0, 0.0};
-  if (spec_.maxAccelerationMps2 > 0.0) {
+  if (m.order) {
+    // Helm order: turn towards the ordered heading at the turn-rate limit, change speed at the
+    // acceleration limit (either instantly when its limit is 0). The ramp acceleration is the exact
+    // mean acceleration of the substep, so the truth's acceleration output stays consistent.
+    const double speed = std::hypot(m.scheduledVel[0], m.scheduledVel[1]);
+    const double heading =
+        speed > kHeadingMinSpeedMps ? bearingOf(m.scheduledVel[0], m.scheduledVel[1]) : m.headingRad;
+    const double turn = angleDiff(m.order->headingRad, heading);
+    const double maxTurn = spec_.maxTurnRateRadPerS * dt;
+    const double newHeading =
+        heading + (spec_.maxTurnRateRadPerS > 0.0 ? std::clamp(turn, -maxTurn, maxTurn) : turn);
+    const double dv = m.order->speedMps - speed;
+    const double maxDv = spec_.maxAccelerationMps2 * dt;
+    const double newSpeed = speed + (spec_.maxAccelerationMps2 > 0.0 ? std::clamp(dv, -maxDv, maxDv) : dv);
+    const std::array<double, 2> next{newSpeed * std::sin(newHeading), newSpeed * std::cos(newHeading)};
+    if (dt > 0.0) m.rampAccel = {(next[0] - before[0]) / dt, (next[1] - before[1]) / dt};
+    m.scheduledVel = m.commanded = next;
+  } else if (spec_.maxAccelerationMps2 > 0.0) {
     const double dx = m.commanded[0] - m.scheduledVel[0], dy = m.commanded[1] - m.scheduledVel[1];
     const double gap = std::hypot(dx, dy);
     const double reach = spec_.maxAccelerationMps2 * dt;
@@ -162,6 +189,15 @@ void VesselMotionModel::refreshOutputs(const Motion& m) {
   truth_.accelXMps2 = m.turnRateRadPerS * m.scheduledVel[1] + m.rampAccel[0] + m.random[0][3];
   truth_.accelYMps2 = -m.turnRateRadPerS * m.scheduledVel[0] + m.rampAccel[1] + m.random[1][3];
   truth_.headingRad = m.headingRad;
+  order_ = m.order;
+}
+
+bool VesselMotionModel::overrideFrom(const KinematicEvent& e) {
+  if (e.timeUs <= committed_.timeUs) return false;
+  auto& events = spec_.schedule;
+  while (events.size() > committed_.nextEvent && events.back().timeUs >= e.timeUs) events.pop_back();
+  events.push_back(e);
+  return true;
 }
 
 }  // namespace reckoner::sim

@@ -5,6 +5,7 @@
 // are propagated with the exact discretisation of the filters' own models, so a scenario without a
 // schedule is a matched-model test.
 #include <array>
+#include <optional>
 
 #include "common/rng.h"
 #include "estimation/gaussian.h"
@@ -26,8 +27,10 @@ struct VesselTruth {
 
 class VesselMotionModel {
  public:
-  /// Throws std::invalid_argument for invalid Gauss-Markov parameters.
-  VesselMotionModel(const VesselMotionSpec& spec, const est::GaussMarkov& current, Rng rng);
+  /// Throws std::invalid_argument for invalid Gauss-Markov parameters. The motion starts at startUs
+  /// (a target that appears during the run) from the spec's initial position and velocity.
+  VesselMotionModel(const VesselMotionSpec& spec, const est::GaussMarkov& current, Rng rng,
+                    TimeUs startUs = 0);
 
   /// Advances to t (>= the last time asked for). The random sample path is drawn on a fixed grid
   /// (multiples of kGridUs, plus the scenario's own event times), so it does not depend on when the
@@ -35,6 +38,12 @@ class VesselMotionModel {
   /// noise over < 0.1 s is ~1e-5 m for the accelerations used here).
   void advanceTo(TimeUs t);
   [[nodiscard]] const VesselTruth& state() const { return truth_; }
+  /// The helm order in force at the last time asked for, if any.
+  [[nodiscard]] const std::optional<HelmOrder>& order() const { return order_; }
+
+  /// An operator's event (time after every committed one): drops the scheduled events at or after its
+  /// time and appends it, so the schedule records what happened. Returns false if the time is too early.
+  bool overrideFrom(const KinematicEvent& e);
 
   static constexpr TimeUs kGridUs = 100'000;
 
@@ -47,6 +56,7 @@ class VesselMotionModel {
     std::array<double, 2> scheduledVel{};
     std::array<double, 2> rampAccel{};  // acceleration of the last substep's speed ramp
     double turnRateRadPerS = 0.0;
+    std::optional<HelmOrder> order;
     std::array<double, 2> scheduledDisplacement{};
     // Random part per axis: [displacement from current and random velocity, current, random
     // velocity, random acceleration] (the DRKF's per-axis block).
@@ -72,6 +82,7 @@ class VesselMotionModel {
   std::array<AxisDiscretisation, 4> cache_{};
   std::size_t cacheNext_ = 0;
   VesselTruth truth_;
+  std::optional<HelmOrder> order_;
 };
 
 }  // namespace reckoner::sim

@@ -72,13 +72,11 @@ class TestOwnShipSensors : public QObject {
     SpeedlogSpec spec;
     spec.error = {0.0, 0.5};
     spec.whiteVarM2PerS2 = 1e-12;
-    spec.mode = StepSchedule<SpeedlogMode>(SpeedlogMode::GroundLock);
-    spec.mode.addChange(10, SpeedlogMode::BottomLock);
     SpeedlogSimulator log(spec, Rng(4, kStreamSpeedlog), 0);
-    const auto g = log.measure(5, 7.0, 6.0, {0.0, 0.9996});
+    const auto g = log.measure(5, 7.0, 6.0, SpeedlogMode::GroundLock, {0.0, 0.9996});
     QCOMPARE(g.mode, SpeedlogMode::GroundLock);
     QVERIFY(std::abs(g.speedMps - 7.0 / 0.9996) < 1e-5);
-    const auto b = log.measure(10, 7.0, 6.0, {0.0, 0.9996});
+    const auto b = log.measure(10, 7.0, 6.0, SpeedlogMode::BottomLock, {0.0, 0.9996});
     QCOMPARE(b.mode, SpeedlogMode::BottomLock);
     QVERIFY(std::abs(b.speedMps - 6.0 / 0.9996) < 1e-5);
   }

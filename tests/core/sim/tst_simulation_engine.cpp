@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <map>
 
+#include "common/angles.h"
+#include "io/scenario_json.h"
+#include "navigation/dr_horizon.h"
+#include "resources/embedded.h"
 #include "sim/scenario_run.h"
 #include "sim/simulation_engine.h"
 #include "support/drkf_fixtures.h"
@@ -10,6 +14,59 @@
 using namespace reckoner;
 using namespace reckoner::sim;
 using sensors::SensorId;
+
+namespace {
+/// Largest difference between two runs' frames (truth, estimate, covariance, tracks); infinity when
+/// they differ in shape.
+double runDifference(const std::vector<SimFrame>& a, const std::vector<SimFrame>& b) {
+  if (a.size() != b.size()) {
+    qWarning("runs differ in length: %zu and %zu frames", a.size(), b.size());
+    return std::numeric_limits<double>::infinity();
+  }
+  double worst = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const SimFrame &fa = a[k], &fb = b[k];
+    // (A target added during a run is in the frames from then on; in the saved scenario's run it is
+    // listed from the start, not yet present.)
+    const auto present = [](const SimFrame& f) {
+      return std::count(f.targetPresent.begin(), f.targetPresent.end(), 1);
+    };
+    if (fa.timeUs != fb.timeUs || fa.tracks.size() != fb.tracks.size() || present(fa) != present(fb) ||
+        fa.measurements.size() != fb.measurements.size() || fa.plots.size() != fb.plots.size()) {
+      qWarning(
+          "frames differ at t = %g s: tracks %zu/%zu, targets %td/%td, measurements %zu/%zu, plots %zu/%zu",
+          toSeconds(fa.timeUs), fa.tracks.size(), fb.tracks.size(), present(fa), present(fb),
+          fa.measurements.size(), fb.measurements.size(), fa.plots.size(), fb.plots.size());
+      return std::numeric_limits<double>::infinity();
+    }
+    worst = std::max(worst, std::hypot(fa.truth.position.xM - fb.truth.position.xM,
+                                       fa.truth.position.yM - fb.truth.position.yM));
+    worst = std::max(worst, (fa.estimate.x - fb.estimate.x).cwiseAbs().maxCoeff());
+    worst = std::max(worst, (fa.estimate.P - fb.estimate.P).cwiseAbs().maxCoeff());
+    for (std::size_t i = 0; i < fa.tracks.size(); ++i)
+      worst = std::max(worst, (fa.tracks[i].estimate.x - fb.tracks[i].estimate.x).cwiseAbs().maxCoeff());
+    for (std::size_t i = 0; i < fa.targets.size(); ++i) {
+      if (!fa.targetPresent[i]) continue;
+      worst = std::max(worst, std::hypot(fa.targets[i].position.xM - fb.targets[i].position.xM,
+                                         fa.targets[i].position.yM - fb.targets[i].position.yM));
+    }
+    if (worst > 1e-6) {
+      qWarning("runs part at t = %g s (truth %g, estimate %g, targets)", toSeconds(fa.timeUs),
+               std::hypot(fa.truth.position.xM - fb.truth.position.xM,
+                          fa.truth.position.yM - fb.truth.position.yM),
+               (fa.estimate.x - fb.estimate.x).cwiseAbs().maxCoeff());
+      return worst;
+    }
+  }
+  return worst;
+}
+
+std::vector<SimFrame> runAll(SimulationEngine& e) {
+  std::vector<SimFrame> frames;
+  while (!e.finished()) frames.push_back(e.step());
+  return frames;
+}
+}  // namespace
 
 class TestSimulationEngine : public QObject {
   Q_OBJECT
@@ -88,6 +145,105 @@ class TestSimulationEngine : public QObject {
                                        [](const auto& m) { return sensors::sensorOf(m) == SensorId::Gps; });
       QCOMPARE(gpsSeen, gpsExpected);
     }
+  }
+  void operatorCommandsAreRecordedSoTheSavedScenarioRepeatsTheRun() {
+    // GIVEN the default scenario WHEN an operator orders a new course, switches GPS off, the log to
+    // bottom lock, the radar off and on, adds a target and extends the run THEN the scenario written
+    // afterwards, read back and run with the same seed, gives the same run.
+    const Scenario original = test::builtinScenario("default");
+    SimulationEngine live(original, original.seed);
+    std::vector<SimFrame> liveFrames;
+    const auto stepTo = [&](double tS) {
+      while (!live.finished() && toSeconds(live.timeUs()) < tS) liveFrames.push_back(live.step());
+    };
+    stepTo(60);
+    live.orderOwnShip(HelmOrder{degToRad(200.0), 4.0});
+    stepTo(90);
+    live.setSensorPower(SensorId::Gps, false);
+    live.setSpeedlogMode(sensors::SpeedlogMode::BottomLock);
+    TargetSpec added;
+    added.id = -1;
+    added.motion.initialPosition = {liveFrames.back().truth.position.xM + 1500.0,
+                                    liveFrames.back().truth.position.yM - 800.0};
+    added.motion.initialVelocityMps = {-3.0, 1.0};
+    const std::optional<int> id = live.addTarget(added);
+    QVERIFY(id.has_value());
+    stepTo(120);
+    live.setRadarPower(false);
+    stepTo(130);
+    live.setRadarPower(true);
+    live.orderOwnShip(HelmOrder{degToRad(90.0), 6.0});
+    stepTo(1800);
+    QVERIFY(live.finished());
+    QVERIFY(live.extendTo(1850 * kMicrosPerSecond));
+    stepTo(1850);
+    QCOMPARE(liveFrames.size(), std::size_t(1850));
+    // The added target was tracked.
+    QVERIFY(std::any_of(liveFrames.back().tracks.begin(), liveFrames.back().tracks.end(),
+                        [&](const TrackSnapshot& t) { return t.targetId == *id; }));
+    QVERIFY(liveFrames[200].order.has_value());
+
+    const std::string text = io::writeScenario(live.scenario());
+    const Scenario reopened = io::parseScenario(text, "saved.json");
+    QCOMPARE(reopened.durationUs, 1850 * kMicrosPerSecond);
+    QCOMPARE(reopened.targets.size(), original.targets.size() + 1);
+    QCOMPARE(reopened.gps.power.at(fromSeconds(90.0)), true);  // the epoch at 90 s had GPS
+    QCOMPARE(reopened.gps.power.at(fromSeconds(91.0)), false);
+    SimulationEngine again(reopened, reopened.seed);
+    const std::vector<SimFrame> againFrames = runAll(again);
+    const double diff = runDifference(liveFrames, againFrames);
+    QVERIFY2(diff < 1e-6, qPrintable(QString("largest difference %1").arg(diff)));
+  }
+  void everyBuiltinScenarioSurvivesWriteAndRead() {
+    for (const auto& f : resources::scenarios()) {
+      const Scenario s = io::parseScenario(f.text, std::string(f.name));
+      const Scenario back = io::parseScenario(io::writeScenario(s), std::string(f.name) + " (written)");
+      QCOMPARE(back.durationUs, s.durationUs);
+      QCOMPARE(back.targets.size(), s.targets.size());
+      QCOMPARE(back.ownShip.schedule.size(), s.ownShip.schedule.size());
+      SimulationEngine a(s, 5), b(back, 5);
+      std::vector<SimFrame> fa, fb;
+      for (int k = 0; k < 120 && !a.finished(); ++k) {
+        fa.push_back(a.step());
+        fb.push_back(b.step());
+      }
+      const double diff = runDifference(fa, fb);
+      QVERIFY2(
+          diff < 1e-6,
+          qPrintable(QString("%1: %2").arg(QString::fromUtf8(f.name.data(), int(f.name.size()))).arg(diff)));
+    }
+  }
+  void deadReckoningHorizonFromTheCovariance() {
+    // GIVEN the default scenario's filter after 5 min WHEN GPS and Loran-C are gone THEN the 95% error
+    // reaches a limit in finite time, later for a larger limit, and sooner without the log.
+    Scenario s = test::builtinScenario("default");
+    SimulationEngine e(s, 1);
+    while (toSeconds(e.timeUs()) < 300) e.step();
+    nav::DeadReckoningAids aids;
+    aids.speedlog = aids.gyro = true;
+    aids.speedlogVarM2PerS2 = s.speedlog.whiteVarM2PerS2;
+    aids.gyroVarRad2 = s.gyro.sdRad * s.gyro.sdRad;
+    const double now = nav::positionError95M(e.drkf().belief());
+    QVERIFY(now > 0.0 && now < 50.0);
+    const auto t100 = nav::timeToPositionLimitS(e.drkf(), aids, 100.0, 7200.0);
+    const auto t200 = nav::timeToPositionLimitS(e.drkf(), aids, 200.0, 7200.0);
+    QVERIFY(t100 && t200);
+    QVERIFY2(*t100 > 10.0 && *t200 > *t100, qPrintable(QString("%1 %2").arg(*t100).arg(*t200)));
+    aids.speedlog = false;
+    const auto noLog = nav::timeToPositionLimitS(e.drkf(), aids, 100.0, 7200.0);
+    QVERIFY(noLog && *noLog < *t100);
+    QCOMPARE(*nav::timeToPositionLimitS(e.drkf(), aids, now * 0.5, 7200.0), 0.0);
+    QVERIFY(!nav::timeToPositionLimitS(e.drkf(), aids, 1e7, 600.0).has_value());
+    // THEN the horizon agrees with what the filter really does when GPS and Loran-C go off.
+    e.setSensorPower(SensorId::Gps, false);
+    e.setSensorPower(SensorId::LoranC, false);
+    aids.speedlog = true;
+    const double start = toSeconds(e.timeUs());
+    const double predicted = *nav::timeToPositionLimitS(e.drkf(), aids, 100.0, 7200.0);
+    while (!e.finished() && nav::positionError95M(e.drkf().belief()) < 100.0) e.step();
+    const double actual = toSeconds(e.timeUs()) - start;
+    QVERIFY2(predicted <= actual * 1.05 + 5.0 && predicted >= actual * 0.5,
+             qPrintable(QString("predicted %1 s, filter %2 s").arg(predicted).arg(actual)));
   }
   void invalidScenarioIsRefused() {
     Scenario s = test::builtinScenario("matched-model");

@@ -18,7 +18,7 @@ class TestVesselTruth : public QObject {
     // kept and the heading increases by the rate.
     VesselMotionSpec spec;
     spec.initialVelocityMps = {7.0, 7.0};
-    spec.schedule.push_back({80 * kMicrosPerSecond, std::nullopt, degToRad(4.01)});
+    spec.schedule.push_back({80 * kMicrosPerSecond, std::nullopt, degToRad(4.01), std::nullopt});
     VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(80 * kMicrosPerSecond);
     QVERIFY(std::abs(m.state().position.xM - 560.0) < 1e-6);  // straight at 7 m/s for 80 s
@@ -40,7 +40,7 @@ class TestVesselTruth : public QObject {
     // Table II footnote: Vx' = cos(w d) Vx + sin(w d) Vy, Vy' = cos(w d) Vy - sin(w d) Vx.
     VesselMotionSpec spec;
     spec.initialVelocityMps = {3.0, -2.0};
-    spec.schedule.push_back({0, std::nullopt, 0.05});
+    spec.schedule.push_back({0, std::nullopt, 0.05, std::nullopt});
     VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(kMicrosPerSecond);
     const double c = std::cos(0.05), s = std::sin(0.05);
@@ -51,7 +51,8 @@ class TestVesselTruth : public QObject {
     VesselMotionSpec spec;
     spec.initialHeadingRad = degToRad(45.0);
     spec.maxAccelerationMps2 = 0.5;
-    spec.schedule.push_back({104 * kMicrosPerSecond, std::array<double, 2>{5.0, 5.0}, std::nullopt});
+    spec.schedule.push_back(
+        {104 * kMicrosPerSecond, std::array<double, 2>{5.0, 5.0}, std::nullopt, std::nullopt});
     VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(104 * kMicrosPerSecond);
     QCOMPARE(m.state().waterVxMps, 0.0);
@@ -63,9 +64,69 @@ class TestVesselTruth : public QObject {
     QVERIFY(std::abs(m.state().waterVxMps - 5.0) < 1e-12);
     QCOMPARE(m.state().accelXMps2, 0.0);
   }
+  void helmOrderTurnsAtTheRateLimitAndRampsTheSpeed() {
+    // GIVEN a ship at 5 m/s heading 000 with a 0.5 deg/s turn and 0.05 m/s^2 speed limit WHEN ordered to
+    // 090 at 8 m/s at 10 s THEN the heading changes by 0.5 deg/s, the speed by 0.05 m/s^2, both settle
+    // on the order, and the acceleration output is the derivative of the velocity.
+    VesselMotionSpec spec;
+    spec.initialVelocityMps = {0.0, 5.0};
+    spec.maxAccelerationMps2 = 0.05;
+    spec.maxTurnRateRadPerS = degToRad(0.5);
+    KinematicEvent e;
+    e.timeUs = 10 * kMicrosPerSecond;
+    e.order = HelmOrder{degToRad(90.0), 8.0};
+    spec.schedule.push_back(e);
+    VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    m.advanceTo(10 * kMicrosPerSecond);
+    QVERIFY(m.order().has_value());
+    m.advanceTo(50 * kMicrosPerSecond);
+    const auto& s = m.state();
+    QVERIFY2(std::abs(radToDeg(s.headingRad) - 20.0) < 1e-6,
+             qPrintable(QString::number(radToDeg(s.headingRad))));
+    QVERIFY(std::abs(std::hypot(s.waterVxMps, s.waterVyMps) - 7.0) < 1e-9);
+    const double vx = s.waterVxMps, vy = s.waterVyMps;
+    m.advanceTo(fromSeconds(50.1));
+    QVERIFY(std::abs((m.state().waterVxMps - vx) / 0.1 - m.state().accelXMps2) < 1e-9);
+    QVERIFY(std::abs((m.state().waterVyMps - vy) / 0.1 - m.state().accelYMps2) < 1e-9);
+    m.advanceTo(200 * kMicrosPerSecond);  // 180 s of turning needs 180 s; speed settled after 60 s
+    QVERIFY(std::abs(angleDiff(m.state().headingRad, degToRad(90.0))) < 1e-9);
+    QVERIFY(std::abs(m.state().waterVxMps - 8.0) < 1e-9);
+    QCOMPARE(m.state().accelXMps2, 0.0);
+  }
+  void helmOrderTakesTheShorterWayRound() {
+    // 350 -> 010 turns starboard through north (the 359 -> 1 degree crossing).
+    VesselMotionSpec spec;
+    spec.initialVelocityMps = {5.0 * std::sin(degToRad(350.0)), 5.0 * std::cos(degToRad(350.0))};
+    spec.maxTurnRateRadPerS = degToRad(1.0);
+    KinematicEvent e;
+    e.order = HelmOrder{degToRad(10.0), 5.0};
+    spec.schedule.push_back(e);
+    VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    m.advanceTo(5 * kMicrosPerSecond);
+    QVERIFY(std::abs(angleDiff(m.state().headingRad, degToRad(355.0))) < 1e-9);
+    m.advanceTo(15 * kMicrosPerSecond);
+    QVERIFY(std::abs(angleDiff(m.state().headingRad, degToRad(5.0))) < 1e-9);
+  }
+  void operatorOverrideReplacesTheRestOfTheScript() {
+    VesselMotionSpec spec;
+    spec.initialVelocityMps = {0.0, 5.0};
+    spec.schedule.push_back({100 * kMicrosPerSecond, std::nullopt, degToRad(1.0), std::nullopt});
+    VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
+    m.advanceTo(50 * kMicrosPerSecond);
+    KinematicEvent e;
+    e.timeUs = 20 * kMicrosPerSecond;
+    QVERIFY(!m.overrideFrom(e));  // in the past
+    e.timeUs = 50 * kMicrosPerSecond + 1;
+    e.order = HelmOrder{0.0, 3.0};
+    QVERIFY(m.overrideFrom(e));
+    m.advanceTo(150 * kMicrosPerSecond);
+    QVERIFY(std::abs(m.state().headingRad) < 1e-9);  // the scripted turn at 100 s is gone
+    QVERIFY(std::abs(m.state().waterVyMps - 3.0) < 1e-9);
+  }
   void instantaneousWhenNoLimit() {
     VesselMotionSpec spec;
-    spec.schedule.push_back({10 * kMicrosPerSecond, std::array<double, 2>{1.0, 2.0}, std::nullopt});
+    spec.schedule.push_back(
+        {10 * kMicrosPerSecond, std::array<double, 2>{1.0, 2.0}, std::nullopt, std::nullopt});
     VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(10 * kMicrosPerSecond);
     QCOMPARE(m.state().waterVxMps, 1.0);

@@ -1,0 +1,303 @@
+// The ECDIS window on the offscreen platform, driven as a user would: mouse drags on the ordered-vector
+// handle, the sensor check boxes, the context menu, file save and reopen. Screenshots (day and night)
+// go to screenshots/ in the test's working directory for a person to look at.
+#include <QAction>
+#include <QCheckBox>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QMenu>
+#include <QScopeGuard>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <cmath>
+
+#include "common/angles.h"
+#include "io/scenario_json.h"
+#include "resources/embedded.h"
+#include "sim/simulation_engine.h"
+#include "ui/main_window.h"
+#include "ui/panels/own_ship_panel.h"
+#include "ui/panels/sensor_panel.h"
+#include "ui/panels/target_table_model.h"
+#include "ui/plots/error_plots.h"
+
+using namespace reckoner;
+using namespace reckoner::ui;
+
+namespace {
+constexpr int kTimeoutMs = 30000;
+
+double simTime(const MainWindow& w) {
+  return toSeconds(w.history().latest().frame.timeUs);
+}
+
+/// Runs as fast as possible to the simulated time tS, where the worker pauses.
+void runUntil(MainWindow& w, double tS) {
+  QElapsedTimer clock;
+  clock.start();
+  const auto done = qScopeGuard([&] { qInfo("runUntil %g: %lld ms", tS, clock.elapsed()); });
+  w.controller()->runTo(tS, -1.0);
+  QTRY_VERIFY_WITH_TIMEOUT(simTime(w) >= tS - 1e-9 && !w.history().latest().running, kTimeoutMs);
+}
+
+MainWindowOptions freshOptions() {
+  MainWindowOptions o;
+  o.restoreSession = false;
+  return o;
+}
+
+void waitReady(MainWindow& w) {
+  QTRY_VERIFY_WITH_TIMEOUT(!w.history().empty(), kTimeoutMs);
+  QTRY_VERIFY_WITH_TIMEOUT(!w.chart()->cells().empty(), kTimeoutMs);
+  QTRY_VERIFY_WITH_TIMEOUT(w.chart()->renderedGeneration() == w.chart()->requestedGeneration(), kTimeoutMs);
+}
+
+void saveShot(QWidget& w, const QString& name) {
+  QDir().mkpath(QStringLiteral("screenshots"));
+  const QString path = QStringLiteral("screenshots/%1.png").arg(name);
+  QVERIFY(w.grab().save(path));
+  qInfo("screenshot: %s", qPrintable(QDir::current().absoluteFilePath(path)));
+}
+}  // namespace
+
+class TestMainWindow : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("ReckonerTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_main_window"));
+    QSettings().clear();
+  }
+
+  void opensWithTheDefaultScenarioAndChart() {
+    MainWindow w(freshOptions());
+    w.resize(1400, 900);
+    w.show();
+    waitReady(w);
+    const auto* def = resources::findScenario(resources::kDefaultScenario);
+    const sim::Scenario expected = io::parseScenario(def->text, "default");
+    QCOMPARE(w.controller()->scenario().name, expected.name);
+    QCOMPARE(w.controller()->scenario().targets.size(), std::size_t(3));
+    QCOMPARE(w.chart()->cells().front()->info().name, std::string(resources::kDefaultChart));
+    // Own ship is on screen, where the view centred.
+    const auto& x = w.history().latest().frame.estimate.x;
+    const QPointF own = w.chart()->gridToWidget(x[est::drkf::kPosX], x[est::drkf::kPosY]);
+    QVERIFY(w.chart()->rect().contains(own.toPoint()));
+    QVERIFY(w.lastError().isEmpty());
+  }
+
+  void draggingTheHandleOrdersCourseAndSpeedAndTheShipTurns() {
+    // GIVEN the default scenario heading about 113 deg at 10 kn WHEN the user drags the handle of the
+    // ordered vector to 045 deg, 8 kn THEN the order is 045/8 kn and the ship turns towards it at no
+    // more than its 1 deg/s turn-rate limit.
+    MainWindow w(freshOptions());
+    w.resize(1400, 900);
+    w.show();
+    waitReady(w);
+    runUntil(w, 20.0);
+    EcdisView* v = w.chart();
+    const auto handle = v->handlePosition();
+    QVERIFY(handle.has_value());
+    const auto& f = w.history().latest().frame;
+    const double ox = f.estimate.x[est::drkf::kPosX], oy = f.estimate.x[est::drkf::kPosY];
+    const geo::GridInfo gi = v->frame()->gridInfo({ox, oy});
+    const double wantCourse = degToRad(45.0), wantSpeed = 8.0 * 1852.0 / 3600.0;
+    const double len = wantSpeed * v->overlay().vectorMinutes * 60.0 * gi.scale;
+    const double g = wantCourse - gi.convergenceRad;
+    const QPointF target = v->gridToWidget(ox + len * std::sin(g), oy + len * std::cos(g));
+    const double headingBefore = f.truth.headingRad;
+    QTest::mousePress(v, Qt::LeftButton, {}, handle->toPoint());
+    QTest::mouseMove(v, ((*handle + target) / 2).toPoint());
+    QTest::mouseMove(v, target.toPoint());
+    QTest::mouseRelease(v, Qt::LeftButton, {}, target.toPoint());
+    w.controller()->stepOnce();
+    QTRY_VERIFY_WITH_TIMEOUT(w.history().latest().frame.order.has_value(), kTimeoutMs);
+    const sim::HelmOrder order = *w.history().latest().frame.order;
+    const double orderedTrue = wrapTwoPi(order.headingRad + gi.convergenceRad);
+    QVERIFY2(std::abs(radToDeg(angleDiff(orderedTrue, wantCourse))) < 1.0,
+             qPrintable(QString("ordered %1 deg").arg(radToDeg(orderedTrue))));
+    QVERIFY2(std::abs(order.speedMps - wantSpeed) < 0.1,
+             qPrintable(QString("ordered %1 m/s").arg(order.speedMps)));
+    // The turn: after 20 s the heading has moved towards 045 by at most 20 deg (plus the Gauss-Markov
+    // wander of the random part), and after 120 s more it is within a few degrees of the order.
+    const double t0 = simTime(w);
+    runUntil(w, t0 + 20.0);
+    const double turned = radToDeg(angleDiff(headingBefore, w.history().latest().frame.truth.headingRad));
+    QVERIFY2(turned > 5.0 && turned < 25.0, qPrintable(QString("turned %1 deg in 20 s").arg(turned)));
+    runUntil(w, t0 + 140.0);
+    const double left = radToDeg(angleDiff(w.history().latest().frame.truth.headingRad, order.headingRad));
+    QVERIFY2(std::abs(left) < 5.0, qPrintable(QString("%1 deg from the order").arg(left)));
+    const auto& tr = w.history().latest().frame.truth;
+    QVERIFY(std::abs(std::hypot(tr.waterVxMps, tr.waterVyMps) - wantSpeed) < 0.3);
+  }
+
+  void gpsOffGrowsTheEllipseAndShowsDeadReckoning() {
+    MainWindow w(freshOptions());
+    w.resize(1400, 900);
+    w.show();
+    waitReady(w);
+    runUntil(w, 60.0);
+    const double before = w.history().latest().error95M;
+    QVERIFY(!w.ownShipPanel()->drShown());
+    // (click(): a mouse click at the centre of a wide check box may miss its indicator and label)
+    w.sensorPanel()->box(sensors::SensorId::Gps)->click();
+    w.sensorPanel()->box(sensors::SensorId::LoranC)->click();
+    runUntil(w, 360.0);
+    QTRY_VERIFY_WITH_TIMEOUT(w.ownShipPanel()->drShown(), kTimeoutMs);
+    const double after = w.history().latest().error95M;
+    QVERIFY2(after > 3.0 * before, qPrintable(QString("95%% error %1 m -> %2 m").arg(before).arg(after)));
+    QVERIFY(w.ownShipPanel()->drText().contains(QStringLiteral("DR")));
+    QVERIFY(w.history().latest().drHorizonS.has_value());
+    QVERIFY(!w.sensorPanel()->box(sensors::SensorId::Gps)->isChecked());
+    // The ellipse on screen grew with it (pixels of the ellipse's fill colour around own ship).
+    saveShot(w, QStringLiteral("dead-reckoning"));
+    w.sensorPanel()->box(sensors::SensorId::Gps)->click();
+    runUntil(w, 380.0);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.ownShipPanel()->drShown(), kTimeoutMs);
+  }
+
+  void contextMenuAddsATargetThatIsTrackedWithinThreeSweeps() {
+    MainWindow w(freshOptions());
+    w.resize(1400, 900);
+    w.show();
+    waitReady(w);
+    runUntil(w, 10.0);
+    EcdisView* v = w.chart();
+    const auto& f = w.history().latest().frame;
+    const double ox = f.estimate.x[est::drkf::kPosX], oy = f.estimate.x[est::drkf::kPosY];
+    const QPointF at = v->gridToWidget(ox + 1200.0, oy + 900.0);
+    QMenu* menu = v->buildContextMenu(at);
+    QAction* add = menu->findChild<QAction*>(QStringLiteral("addTarget"));
+    QVERIFY(add);
+    add->trigger();
+    delete menu;
+    QVERIFY(v->addingTarget());
+    // Its vector: drag towards the south-west, a click places it.
+    const QPointF to = v->gridToWidget(ox + 1200.0 - 600.0, oy + 900.0 - 600.0);
+    QTest::mouseMove(v, to.toPoint());
+    QTest::mousePress(v, Qt::LeftButton, {}, to.toPoint());
+    QTest::mouseRelease(v, Qt::LeftButton, {}, to.toPoint());
+    QVERIFY(!v->addingTarget());
+    const double addedAt = simTime(w);
+    const int newId = 4;  // the default scenario has targets 1 to 3
+    const double sweep = w.controller()->scenario().radar.sweepPeriodS;
+    w.setRate(5.0);
+    QTRY_VERIFY_WITH_TIMEOUT(simTime(w) > addedAt + 4.0 * sweep, kTimeoutMs);
+    w.setRate(0.0);
+    // The first track on the new target, from the sweep-end history.
+    double firstSeen = -1.0;
+    for (const auto& [id, samples] : w.history().tracks())
+      for (const auto& s : samples)
+        if (s.targetId == newId && (firstSeen < 0 || s.tS < firstSeen)) firstSeen = s.tS;
+    QVERIFY2(firstSeen > 0.0, "no track on the added target");
+    QVERIFY2(firstSeen - addedAt <= 3.0 * sweep + 1e-9,
+             qPrintable(QString("first track %1 s after adding").arg(firstSeen - addedAt)));
+  }
+
+  void plotsReceiveDataAndExport() {
+    MainWindow w(freshOptions());
+    w.resize(1400, 900);
+    w.show();
+    waitReady(w);
+    runUntil(w, 120.0);
+    QTRY_VERIFY_WITH_TIMEOUT(w.ownPlots()->pointCount() > 200, kTimeoutMs);
+    QVERIFY(!w.history().latest().frame.tracks.empty());
+    // Selecting a row of the target table selects the target in the chart and the plots.
+    QTableView* table = w.targetTable();
+    QTRY_VERIFY_WITH_TIMEOUT(table->model()->rowCount() > 0, kTimeoutMs);
+    table->selectRow(0);
+    table->setCurrentIndex(table->model()->index(0, 0));
+    QTRY_VERIFY_WITH_TIMEOUT(w.chart()->selectedTrack().has_value(), kTimeoutMs);
+    runUntil(w, 140.0);
+    QTRY_VERIFY_WITH_TIMEOUT(w.targetPlots()->pointCount() > 5, kTimeoutMs);
+    QTemporaryDir dir;
+    QVERIFY(w.ownPlots()->exportPng(dir.filePath("own.png")));
+    QVERIFY(w.ownPlots()->exportCsv(dir.filePath("own.csv")));
+    QFile csv(dir.filePath("own.csv"));
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = csv.readAll().split('\n');
+    QVERIFY2(lines.size() >= 140, qPrintable(QString::number(lines.size())));
+    QCOMPARE(lines.front(), QByteArray("t_s,estimate,truth,error,sd,nees"));
+    saveShot(*w.ownPlots(), QStringLiteral("own-ship-plots"));
+  }
+
+  void savingAndReopeningTheScenarioGivesTheSameRun() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("edited.json");
+    std::vector<OwnSample> first;
+    {
+      MainWindow w(freshOptions());
+      w.resize(1400, 900);
+      w.show();
+      waitReady(w);
+      runUntil(w, 30.0);
+      w.controller()->orderOwnShip(degToRad(200.0), 4.0);
+      w.controller()->setSensorPower(sensors::SensorId::Gps, false);
+      w.controller()->addTarget(2000.0, 3000.0, -2.0, 1.0);
+      runUntil(w, 90.0);
+      QVERIFY(w.saveScenario(path));
+      first = w.history().own();
+    }
+    const sim::Scenario reread = io::loadScenarioFile(path.toStdString());
+    QCOMPARE(reread.targets.size(), std::size_t(4));
+    MainWindow w(freshOptions());
+    w.resize(1400, 900);
+    w.show();
+    QVERIFY(w.openScenario(path));
+    waitReady(w);
+    runUntil(w, 90.0);
+    const auto& second = w.history().own();
+    QVERIFY(second.size() >= 90 && first.size() >= 90);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < 90; ++i) {
+      QCOMPARE(first[i].tS, second[i].tS);
+      worst = std::max({worst, std::abs(first[i].estPos[0] - second[i].estPos[0]),
+                        std::abs(first[i].estPos[1] - second[i].estPos[1]),
+                        std::abs(first[i].truePos[0] - second[i].truePos[0])});
+    }
+    QVERIFY2(worst < 1e-6, qPrintable(QString("largest difference %1 m").arg(worst)));
+    QVERIFY(w.lastError().isEmpty());
+  }
+
+  void badScenarioFileGivesAClearMessage() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("bad.json");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "reckoner-scenario/1", "origin": {"lat_deg": 95, "lon_deg": 0}})");
+    f.close();
+    MainWindow w(freshOptions());
+    waitReady(w);
+    QVERIFY(!w.openScenario(path));
+    QVERIFY2(w.lastError().contains(path) && w.lastError().contains(QStringLiteral("lat_deg")),
+             qPrintable(w.lastError()));
+    QVERIFY(!w.openScenario(dir.filePath("missing.json")));
+    QVERIFY(w.lastError().contains(QStringLiteral("missing.json")));
+  }
+
+  void screenshotsDayAndNight() {
+    MainWindow w(freshOptions());
+    w.resize(1600, 1000);
+    w.show();
+    waitReady(w);
+    OverlaySettings o = w.chart()->overlay();
+    o.showPlots = true;
+    w.chart()->setOverlay(o);
+    runUntil(w, 900.0);  // GPS is off from 840 s: the ellipse is growing
+    QTRY_VERIFY_WITH_TIMEOUT(w.ownPlots()->pointCount() > 500, kTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(w.chart()->renderedGeneration() == w.chart()->requestedGeneration(), kTimeoutMs);
+    saveShot(w, QStringLiteral("main-window-day"));
+    w.setPalette(charts::Palette::Night);
+    QTRY_VERIFY_WITH_TIMEOUT(w.chart()->renderedGeneration() == w.chart()->requestedGeneration(), kTimeoutMs);
+    QTest::qWait(100);
+    saveShot(w, QStringLiteral("main-window-night"));
+  }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_main_window.moc"

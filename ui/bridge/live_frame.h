@@ -1,0 +1,91 @@
+#pragma once
+// What the simulation worker sends to the GUI: one value per emitted frame (queued signal, at most one
+// in flight). It carries the latest engine frame and, because frames are decimated at high rates, the
+// compact history samples of every step and sweep since the previous emitted frame, so plots miss
+// nothing. Plain values only: no pointers into the worker's state.
+#include <QMetaType>
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "sim/scenario.h"
+#include "sim/simulation_engine.h"
+
+namespace reckoner::ui {
+
+/// Own ship at one output step: truth and DRKF estimate in the grid frame, with standard deviations.
+struct OwnSample {
+  double tS = 0.0;
+  std::array<double, 2> truePos{}, estPos{};  ///< grid m
+  std::array<double, 2> trueVel{}, estVel{};  ///< over ground, grid m/s
+  std::array<double, 2> sdPos{}, sdVel{};
+  std::array<double, 2> trueCurrent{}, estCurrent{};
+  std::array<double, 2> trueLoran{}, estLoran{};  ///< Loran-C Gauss-Markov error, m
+  std::array<double, 2> sdCurrent{}, sdLoran{};
+  double trueLogBias = 0.0, estLogBias = 0.0;  ///< speedlog error, m/s
+  double sdLogBias = 0.0;
+  double nees = 0.0;      ///< 11-state NEES against the truth
+  double nees2 = 0.0;     ///< position-only NEES (2 dof)
+  double error95M = 0.0;  ///< semi-major axis of the 95% position ellipse
+};
+
+/// A track at the end of a sweep, with the truth of the target it follows (when it follows one).
+struct TrackSample {
+  double tS = 0.0;
+  int trackId = 0;
+  int targetId = -1;
+  bool hasTruth = false;
+  std::array<double, 2> estPos{}, estVel{}, sdPos{}, sdVel{};  ///< grid, target absolute
+  std::array<double, 2> truePos{}, trueVel{};
+  double nees = 0.0;  ///< 4 dof: target position and velocity
+};
+
+/// A radar plot placed on the chart (relative to the estimated own-ship position, as a radar does).
+struct ShownPlot {
+  double tS = 0.0;
+  double xM = 0.0, yM = 0.0;  ///< grid
+  int sweep = 0;              ///< sweep counter (the display fades older sweeps)
+};
+
+struct LastFix {
+  bool valid = false;
+  double tS = 0.0;
+  double xM = 0.0, yM = 0.0;
+  bool accepted = false;
+};
+
+/// The last update of one DRKF measurement block.
+struct BlockStatus {
+  bool seen = false;
+  double tS = 0.0;
+  double nis = 0.0;
+  int dim = 0;
+  bool accepted = false;
+};
+
+struct LiveFrame {
+  quint64 sequence = 0;
+  quint64 loadGeneration = 0;             ///< which load() the frame belongs to (older ones are dropped)
+  sim::SimFrame frame;                    ///< the latest step (sweeps moved into trackHistory)
+  std::vector<OwnSample> ownHistory;      ///< every step since the previous emitted frame
+  std::vector<TrackSample> trackHistory;  ///< every track at every sweep end since then
+  std::vector<ShownPlot> recentPlots;     ///< plots of the last few sweeps
+  std::vector<track::TrackEvent> events;  ///< track events since the previous emitted frame
+  std::array<LastFix, 2> lastFix{};       ///< GPS, Loran-C
+  std::array<BlockStatus, 5> blocks{};    ///< per nav::DrkfBlock
+  bool positionFixUsed = true;            ///< a GPS or Loran-C position was applied recently
+  std::optional<double> drHorizonS;       ///< time until the 95% error exceeds the limit (DR only)
+  double drLimitM = 0.0;
+  double error95M = 0.0;
+  double rate = 0.0;          ///< requested rate (0: paused, < 0: as fast as possible)
+  double achievedRate = 0.0;  ///< simulated seconds per wall second, measured
+  bool radarOn = false;
+  bool running = false;
+  bool finished = false;
+  double durationS = 0.0;
+};
+
+}  // namespace reckoner::ui
+
+Q_DECLARE_METATYPE(reckoner::ui::LiveFrame)
+Q_DECLARE_METATYPE(reckoner::sim::Scenario)

@@ -1,0 +1,53 @@
+#include "ui/bridge/sim_history.h"
+
+#include <algorithm>
+
+namespace reckoner::ui {
+
+QString Alarm::text() const {
+  const QString what =
+      kind == Kind::Dangerous ? QStringLiteral("DANGEROUS TARGET") : QStringLiteral("LOST TARGET");
+  return QStringLiteral("%1  track %2").arg(what).arg(trackId);
+}
+
+void SimHistory::clear() {
+  latest_ = LiveFrame{};
+  own_.clear();
+  tracks_.clear();
+  alarms_.clear();
+}
+
+void SimHistory::append(const LiveFrame& frame) {
+  latest_ = frame;
+  own_.insert(own_.end(), frame.ownHistory.begin(), frame.ownHistory.end());
+  for (const TrackSample& s : frame.trackHistory) tracks_[s.trackId].push_back(s);
+  for (const auto& e : frame.events) {
+    using K = track::TrackEvent::Kind;
+    const double t = toSeconds(e.timeUs);
+    if (e.kind == K::Dangerous) alarms_.insert({Alarm::Kind::Dangerous, e.trackId, t});
+    if (e.kind == K::Lost) alarms_.insert({Alarm::Kind::Lost, e.trackId, t});
+    if (e.kind == K::Removed || e.kind == K::Cancelled || e.kind == K::Dropped) {
+      alarms_.erase({Alarm::Kind::Dangerous, e.trackId, 0.0});
+      alarms_.erase({Alarm::Kind::Lost, e.trackId, 0.0});
+    }
+  }
+}
+
+const std::vector<TrackSample>& SimHistory::track(int trackId) const {
+  static const std::vector<TrackSample> kNone;
+  const auto it = tracks_.find(trackId);
+  return it == tracks_.end() ? kNone : it->second;
+}
+
+const sim::TrackSnapshot* SimHistory::trackNow(int trackId) const {
+  const auto& tracks = latest_.frame.tracks;
+  const auto it =
+      std::find_if(tracks.begin(), tracks.end(), [trackId](const auto& t) { return t.trackId == trackId; });
+  return it == tracks.end() ? nullptr : &*it;
+}
+
+bool SimHistory::unacknowledged(Alarm::Kind kind, int trackId) const {
+  return alarms_.count({kind, trackId, 0.0}) > 0;
+}
+
+}  // namespace reckoner::ui

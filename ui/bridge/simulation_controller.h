@@ -1,0 +1,60 @@
+#pragma once
+// The GUI side of the simulation: owns the worker's thread, forwards commands as queued calls (the GUI
+// never waits on the worker), keeps the latest LiveFrame and acknowledges each one so that at most one
+// is in flight.
+#include <QObject>
+#include <QThread>
+
+#include "ui/bridge/simulation_worker.h"
+
+namespace reckoner::ui {
+
+class SimulationController : public QObject {
+  Q_OBJECT
+ public:
+  explicit SimulationController(QObject* parent = nullptr);
+  ~SimulationController() override;
+
+  void load(const sim::Scenario& scenario);
+  void setRate(double rate);  ///< 0 pauses; < 0 as fast as possible
+  void stepOnce();
+  /// Runs at `rate` (< 0: as fast as possible) until the simulated time tS, then pauses there.
+  void runTo(double tS, double rate);
+  void orderOwnShip(double trueHeadingRad, double speedMps);
+  void setSensorPower(sensors::SensorId id, bool on);
+  void setSpeedlogMode(sensors::SpeedlogMode mode);
+  void setRadarPower(bool on);
+  void addTarget(double xM, double yM, double vxMps, double vyMps);
+  void acquireAt(double xM, double yM);
+  void cancelTrack(int trackId);
+  void setDrLimit(double metres);
+  /// Asks for the edited scenario; scenarioReady() answers.
+  void requestScenario();
+
+  [[nodiscard]] const LiveFrame& latest() const { return latest_; }
+  [[nodiscard]] bool hasFrame() const { return latest_.sequence > 0; }
+  /// The scenario as loaded (the worker's copy is edited by commands; requestScenario() gets it).
+  [[nodiscard]] const sim::Scenario& scenario() const { return scenario_; }
+  [[nodiscard]] quint64 framesReceived() const { return framesReceived_; }
+
+ signals:
+  /// A new frame is stored in latest(); `frame` also carries the history batch of the steps since.
+  void frameArrived(const reckoner::ui::LiveFrame& frame);
+  void loaded(const reckoner::sim::Scenario& scenario);
+  void scenarioReady(const reckoner::sim::Scenario& scenario);
+  void failed(const QString& message);
+
+ private:
+  template <class F>
+  void post(F&& f);
+  void onFrame(const LiveFrame& frame);
+
+  QThread thread_;
+  SimulationWorker* worker_ = nullptr;  // lives in thread_
+  LiveFrame latest_;
+  sim::Scenario scenario_;
+  quint64 framesReceived_ = 0;
+  quint64 generation_ = 0;
+};
+
+}  // namespace reckoner::ui

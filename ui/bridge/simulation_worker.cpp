@@ -1,0 +1,367 @@
+#include "ui/bridge/simulation_worker.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include "common/angles.h"
+#include "navigation/dr_horizon.h"
+
+namespace reckoner::ui {
+namespace {
+constexpr qint64 kTickMs = 10;
+constexpr qint64 kStepBudgetNs = 8'000'000;        // per tick: the worker stays responsive to commands
+constexpr qint64 kMinEmitIntervalNs = 33'000'000;  // <= 30 frames per second
+constexpr double kMaxBacklogS = 2.0;               // wall seconds of simulated time the clock may run ahead
+constexpr double kFixRecentS = 3.0;                // a position fix this recent means "not dead reckoning"
+constexpr int kSweepsShown = 6;
+constexpr double kDrHorizonMaxS = 4.0 * 3600.0;
+
+/// NEES of a Gaussian error e with covariance P (LDLT solve; NaN when P is not positive definite).
+template <int N>
+double neesOf(const est::Vec<N>& e, const est::Mat<N>& P) {
+  const Eigen::LDLT<est::Mat<N>> ldlt(P);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return std::nan("");
+  return e.dot(ldlt.solve(e));
+}
+
+OwnSample ownSampleOf(const sim::SimFrame& f) {
+  using namespace est::drkf;
+  const State& x = f.estimate.x;
+  const Covariance& P = f.estimate.P;
+  const State& t = f.trueState;
+  OwnSample s;
+  s.tS = toSeconds(f.timeUs);
+  s.truePos = {t[kPosX], t[kPosY]};
+  s.estPos = {x[kPosX], x[kPosY]};
+  s.trueVel = {t[kVelX] + t[kCurX], t[kVelY] + t[kCurY]};
+  s.estVel = {x[kVelX] + x[kCurX], x[kVelY] + x[kCurY]};
+  s.sdPos = {std::sqrt(P(kPosX, kPosX)), std::sqrt(P(kPosY, kPosY))};
+  const est::Mat<4> g = nav::groundCovarianceOf(f.estimate);
+  s.sdVel = {std::sqrt(g(2, 2)), std::sqrt(g(3, 3))};
+  s.trueCurrent = {t[kCurX], t[kCurY]};
+  s.estCurrent = {x[kCurX], x[kCurY]};
+  s.trueLoran = {t[kLoranX], t[kLoranY]};
+  s.estLoran = {x[kLoranX], x[kLoranY]};
+  s.sdCurrent = {std::sqrt(P(kCurX, kCurX)), std::sqrt(P(kCurY, kCurY))};
+  s.sdLoran = {std::sqrt(P(kLoranX, kLoranX)), std::sqrt(P(kLoranY, kLoranY))};
+  s.sdLogBias = std::sqrt(P(kLogBias, kLogBias));
+  s.trueLogBias = t[kLogBias];
+  s.estLogBias = x[kLogBias];
+  const State e = x - t;
+  s.nees = neesOf<kStateDim>(e, P);
+  est::Mat<2> Pp;
+  Pp << P(kPosX, kPosX), P(kPosX, kPosY), P(kPosY, kPosX), P(kPosY, kPosY);
+  s.nees2 = neesOf<2>(est::Vec<2>(e[kPosX], e[kPosY]), Pp);
+  s.error95M = nav::positionError95M(f.estimate);
+  return s;
+}
+
+TrackSample trackSampleOf(const sim::TrackSnapshot& t, const sim::SweepSnapshot& sweep,
+                          const std::vector<sim::TargetSpec>& targets) {
+  namespace tk = est::ttkf;
+  TrackSample s;
+  s.tS = toSeconds(sweep.timeUs);
+  s.trackId = t.trackId;
+  s.targetId = t.targetId;
+  const auto& x = t.estimate.x;
+  const auto& P = t.estimate.P;
+  s.estPos = {x[tk::kTgtX], x[tk::kTgtY]};
+  s.estVel = {x[tk::kTgtVx], x[tk::kTgtVy]};
+  s.sdPos = {std::sqrt(P(tk::kTgtX, tk::kTgtX)), std::sqrt(P(tk::kTgtY, tk::kTgtY))};
+  s.sdVel = {std::sqrt(P(tk::kTgtVx, tk::kTgtVx)), std::sqrt(P(tk::kTgtVy, tk::kTgtVy))};
+  for (std::size_t i = 0; i < targets.size() && i < sweep.targets.size(); ++i) {
+    if (targets[i].id != t.targetId) continue;
+    const sim::VesselTruth& v = sweep.targets[i];
+    s.hasTruth = true;
+    s.truePos = {v.position.xM, v.position.yM};
+    s.trueVel = {v.groundVxMps(), v.groundVyMps()};
+    const std::array<int, 4> idx{tk::kTgtX, tk::kTgtY, tk::kTgtVx, tk::kTgtVy};
+    est::Vec<4> e(s.estPos[0] - s.truePos[0], s.estPos[1] - s.truePos[1], s.estVel[0] - s.trueVel[0],
+                  s.estVel[1] - s.trueVel[1]);
+    est::Mat<4> Ps;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) Ps(r, c) = P(idx[r], idx[c]);
+    s.nees = neesOf<4>(e, Ps);
+  }
+  return s;
+}
+}  // namespace
+
+SimulationWorker::SimulationWorker(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
+  timer_->setTimerType(Qt::PreciseTimer);
+  timer_->setInterval(static_cast<int>(kTickMs));
+  connect(timer_, &QTimer::timeout, this, &SimulationWorker::tick);
+  wall_.start();
+}
+
+SimulationWorker::~SimulationWorker() = default;
+
+void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
+  generation_ = generation;
+  stopAtS_.reset();
+  try {
+    engine_ = std::make_unique<sim::SimulationEngine>(scenario, scenario.seed);
+  } catch (const std::exception& e) {
+    emit failed(QString::fromStdString(std::string("cannot start the scenario: ") + e.what()));
+    return;
+  }
+  rate_ = 0.0;
+  timer_->stop();
+  targetS_ = 0.0;
+  inFlight_ = false;
+  pending_ = LiveFrame{};
+  plots_.clear();
+  rateWindow_.clear();
+  sweepCounter_ = 0;
+  drComputedAtS_ = -1e9;
+  emit loaded(engine_->scenario());
+  stepRequested_ = false;
+  // The first frame shows the state at t = 0 + one step, so the picture is never empty.
+  stepEngine();
+  maybeEmit(true);
+}
+
+void SimulationWorker::setRate(double rate) {
+  if (!engine_) return;
+  if (rate == 0.0 && rate_ == 0.0 && !timer_->isActive()) {
+    dirty_ = true;  // already paused: still answer with a frame, so the GUI sees "paused"
+    maybeEmit(true);
+    return;
+  }
+  if (rate != 0.0 && engine_->finished()) engine_->extendTo(engine_->timeUs() + 1800 * kMicrosPerSecond);
+  rate_ = std::isfinite(rate) ? rate : -1.0;
+  targetS_ = toSeconds(engine_->timeUs());
+  lastTickNs_ = wall_.nsecsElapsed();
+  rateWindow_.clear();
+  if (rate_ != 0.0)
+    timer_->start();
+  else
+    timer_->stop();
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::runTo(double tS, double rate) {
+  if (!engine_ || !std::isfinite(tS)) return;
+  if (tS <= toSeconds(engine_->timeUs())) {
+    setRate(0.0);
+    return;
+  }
+  if (fromSeconds(tS) > engine_->scenario().durationUs) engine_->extendTo(fromSeconds(tS));
+  stopAtS_ = tS;
+  setRate(rate);
+}
+
+void SimulationWorker::stepOnce() {
+  if (!engine_) return;
+  setRate(0.0);
+  if (engine_->finished()) engine_->extendTo(engine_->timeUs() + 1800 * kMicrosPerSecond);
+  stepEngine();
+  maybeEmit(true);
+}
+
+void SimulationWorker::frameConsumed() {
+  inFlight_ = false;
+  if (dirty_ && rate_ == 0.0) maybeEmit(true);
+}
+
+void SimulationWorker::tick() {
+  if (!engine_) return;
+  const qint64 now = wall_.nsecsElapsed();
+  const double wallDt = static_cast<double>(now - lastTickNs_) * 1e-9;
+  lastTickNs_ = now;
+  const double simNow = toSeconds(engine_->timeUs());
+  if (rate_ > 0.0) targetS_ = std::min(targetS_ + rate_ * wallDt, simNow + rate_ * kMaxBacklogS);
+  while (!engine_->finished() && wall_.nsecsElapsed() - now < kStepBudgetNs &&
+         (rate_ < 0.0 || toSeconds(engine_->timeUs()) < targetS_) &&
+         !(stopAtS_ && toSeconds(engine_->timeUs()) >= *stopAtS_))
+    stepEngine();
+  if (stopAtS_ && toSeconds(engine_->timeUs()) >= *stopAtS_) {
+    stopAtS_.reset();
+    setRate(0.0);
+    return;
+  }
+  rateWindow_.emplace_back(now, toSeconds(engine_->timeUs()));
+  while (rateWindow_.size() > 2 && now - rateWindow_.front().first > 1'000'000'000) rateWindow_.pop_front();
+  if (engine_->finished()) {
+    rate_ = 0.0;
+    timer_->stop();
+    maybeEmit(true);
+    return;
+  }
+  maybeEmit(false);
+}
+
+void SimulationWorker::stepEngine() {
+  absorb(engine_->step());
+  dirty_ = true;
+}
+
+void SimulationWorker::absorb(sim::SimFrame&& f) {
+  const auto& scenario = engine_->scenario();
+  pending_.ownHistory.push_back(ownSampleOf(f));
+  for (const auto& sweep : f.sweeps) {
+    ++sweepCounter_;
+    for (const auto& t : sweep.tracks)
+      pending_.trackHistory.push_back(trackSampleOf(t, sweep, scenario.targets));
+  }
+  // Radar plots drawn where the radar puts them: relative to the estimated own-ship position.
+  const double cx = f.estimate.x[est::drkf::kPosX], cy = f.estimate.x[est::drkf::kPosY];
+  const double gamma = engine_->frame().gridInfo({cx, cy}).convergenceRad;
+  for (const auto& p : f.plots) {
+    const double gridBearing = p.bearingRad - gamma;
+    plots_.push_back({toSeconds(p.timeUs), cx + p.rangeM * std::sin(gridBearing),
+                      cy + p.rangeM * std::cos(gridBearing), sweepCounter_});
+  }
+  while (!plots_.empty() && plots_.front().sweep < sweepCounter_ - kSweepsShown) plots_.pop_front();
+  // Last fixes and the last report per measurement block.
+  for (const auto& m : f.measurements) {
+    if (const auto* g = std::get_if<sensors::GpsSample>(&m))
+      pending_.lastFix[0] = {true, toSeconds(g->timeUs), g->position.xM, g->position.yM, false};
+    else if (const auto* l = std::get_if<sensors::LoranSample>(&m))
+      pending_.lastFix[1] = {true, toSeconds(l->timeUs), l->position.xM, l->position.yM, false};
+  }
+  for (const auto& u : f.updates) {
+    for (int b = 0; b < nav::kDrkfBlockCount; ++b) {
+      const est::BlockReport* r = u.block(static_cast<nav::DrkfBlock>(b));
+      if (!r) continue;
+      BlockStatus& s = pending_.blocks[static_cast<std::size_t>(b)];
+      s = {true, toSeconds(u.timeUs), r->nis, r->dim,
+           r->status == est::UpdateStatus::Accepted || r->status == est::UpdateStatus::AcceptedForced};
+      if (b == nav::kGpsPosition && pending_.lastFix[0].valid) pending_.lastFix[0].accepted = s.accepted;
+      if (b == nav::kLoranPosition && pending_.lastFix[1].valid) pending_.lastFix[1].accepted = s.accepted;
+    }
+  }
+  pending_.events.insert(pending_.events.end(), f.trackEvents.begin(), f.trackEvents.end());
+  f.sweeps.clear();
+  pending_.frame = std::move(f);
+}
+
+void SimulationWorker::updateDeadReckoning() {
+  const sim::SimFrame& f = pending_.frame;
+  const double t = toSeconds(f.timeUs);
+  const auto recentAccepted = [&](nav::DrkfBlock b) {
+    const BlockStatus& s = pending_.blocks[static_cast<std::size_t>(b)];
+    return s.seen && s.accepted && t - s.tS <= kFixRecentS;
+  };
+  pending_.positionFixUsed = recentAccepted(nav::kGpsPosition) || recentAccepted(nav::kLoranPosition);
+  pending_.error95M = nav::positionError95M(f.estimate);
+  pending_.drLimitM = drLimitM_;
+  if (pending_.positionFixUsed) {
+    pending_.drHorizonS.reset();
+    drComputedAtS_ = -1e9;
+    return;
+  }
+  // The horizon is recomputed every 5 simulated seconds or when the aids change.
+  if (t - drComputedAtS_ < 5.0 && f.sensors == drSensors_ && pending_.drHorizonS) {
+    pending_.drHorizonS = std::max(0.0, *pending_.drHorizonS - (t - drComputedAtS_));
+    drComputedAtS_ = t;
+    return;
+  }
+  const auto& sc = engine_->scenario();
+  nav::DeadReckoningAids aids;
+  aids.speedlog = f.sensors.isOn(sensors::SensorId::Speedlog);
+  aids.speedlogMode = f.sensors.speedlogMode;
+  aids.speedlogVarM2PerS2 = sc.speedlog.whiteVarM2PerS2;
+  aids.gyro = f.sensors.isOn(sensors::SensorId::Gyro);
+  aids.gyroVarRad2 = sc.gyro.sdRad * sc.gyro.sdRad;
+  aids.periodS = 1.0 / std::max(1e-3, std::min(sc.speedlog.rateHz, sc.gyro.rateHz));
+  pending_.drHorizonS = nav::timeToPositionLimitS(engine_->drkf(), aids, drLimitM_, kDrHorizonMaxS);
+  if (!pending_.drHorizonS) pending_.drHorizonS = kDrHorizonMaxS;  // shown as "> 4 h"
+  drComputedAtS_ = t;
+  drSensors_ = f.sensors;
+}
+
+void SimulationWorker::maybeEmit(bool force) {
+  if (!engine_ || inFlight_ || !dirty_) return;
+  const qint64 now = wall_.nsecsElapsed();
+  if (!force && now - lastEmitNs_ < kMinEmitIntervalNs) return;
+  updateDeadReckoning();
+  pending_.sequence = ++sequence_;
+  pending_.loadGeneration = generation_;
+  pending_.recentPlots.assign(plots_.begin(), plots_.end());
+  pending_.rate = rate_;
+  pending_.radarOn =
+      engine_->scenario().radar.fitted && engine_->scenario().radar.power.at(engine_->timeUs());
+  pending_.running = rate_ != 0.0;
+  pending_.finished = engine_->finished();
+  pending_.durationS = toSeconds(engine_->scenario().durationUs);
+  if (rateWindow_.size() >= 2 && rate_ != 0.0) {
+    const auto& [n0, s0] = rateWindow_.front();
+    const auto& [n1, s1] = rateWindow_.back();
+    pending_.achievedRate = n1 > n0 ? (s1 - s0) / (static_cast<double>(n1 - n0) * 1e-9) : 0.0;
+  } else {
+    pending_.achievedRate = 0.0;
+  }
+  inFlight_ = true;
+  dirty_ = false;
+  lastEmitNs_ = now;
+  emit frameReady(pending_);
+  // Keep the state that persists between frames; clear the batches.
+  pending_.ownHistory.clear();
+  pending_.trackHistory.clear();
+  pending_.events.clear();
+}
+
+void SimulationWorker::orderOwnShip(double trueHeadingRad, double speedMps) {
+  if (!engine_) return;
+  const auto& p = pending_.frame.truth.position;
+  const double gamma = engine_->frame().gridInfo(p).convergenceRad;
+  engine_->orderOwnShip(sim::HelmOrder{wrapTwoPi(trueHeadingRad - gamma), std::max(0.0, speedMps)});
+}
+
+void SimulationWorker::setSensorPower(sensors::SensorId id, bool on) {
+  if (!engine_) return;
+  engine_->setSensorPower(id, on);
+  pending_.frame.sensors = sim::sensorStatesAt(engine_->scenario(), engine_->commandTimeUs());
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::setSpeedlogMode(sensors::SpeedlogMode mode) {
+  if (!engine_) return;
+  engine_->setSpeedlogMode(mode);
+  pending_.frame.sensors = sim::sensorStatesAt(engine_->scenario(), engine_->commandTimeUs());
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::setRadarPower(bool on) {
+  if (engine_) engine_->setRadarPower(on);
+}
+
+void SimulationWorker::addTarget(double xM, double yM, double vxMps, double vyMps) {
+  if (!engine_) return;
+  sim::TargetSpec t;
+  t.id = -1;
+  t.motion.initialPosition = {xM, yM};
+  t.motion.initialVelocityMps = {vxMps, vyMps};
+  if (!engine_->addTarget(t))
+    emit failed(QStringLiteral("the target could not be added (position or velocity not finite)"));
+}
+
+void SimulationWorker::acquireAt(double xM, double yM) {
+  if (engine_ && !engine_->acquireAt({xM, yM}))
+    emit failed(QStringLiteral("no radar plot near that point to acquire"));
+}
+
+void SimulationWorker::cancelTrack(int trackId) {
+  if (engine_) engine_->cancelTrack(trackId);
+}
+
+void SimulationWorker::setDrLimit(double metres) {
+  if (!(metres > 0.0) || !std::isfinite(metres)) return;
+  drLimitM_ = metres;
+  drComputedAtS_ = -1e9;
+  pending_.drHorizonS.reset();
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::requestScenario() {
+  if (engine_) emit scenarioSnapshot(engine_->scenario());
+}
+
+}  // namespace reckoner::ui

@@ -1,0 +1,83 @@
+#pragma once
+// The simulation in its own thread: a QObject living in a QThread that owns the SimulationEngine (plain
+// C++), steps it against the wall clock at the requested rate and sends LiveFrame values to the GUI
+// through a queued signal, at most one in flight (the GUI acknowledges each with frameConsumed()) and
+// at most ~30 per second; at high rates the steps in between are folded into the frame's history
+// batch. Commands arrive as queued calls (SimulationController) and are applied between steps.
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+#include <deque>
+#include <memory>
+#include <optional>
+
+#include "ui/bridge/live_frame.h"
+
+namespace reckoner::ui {
+
+class SimulationWorker : public QObject {
+  Q_OBJECT
+ public:
+  explicit SimulationWorker(QObject* parent = nullptr);
+  ~SimulationWorker() override;
+
+  // Called in the worker's thread (queued from the controller).
+  /// Replaces the simulation (paused at t = 0); emits loaded() or failed().
+  void load(const sim::Scenario& scenario, quint64 generation);
+  /// Simulated seconds per wall second: 0 pauses, a negative value runs as fast as possible.
+  void setRate(double rate);
+  /// One output step, then paused.
+  void stepOnce();
+  /// Runs at `rate` until the simulated time reaches tS, then pauses there exactly.
+  void runTo(double tS, double rate);
+  void frameConsumed();
+  /// Helm order: true heading (radians) and speed through the water (m/s).
+  void orderOwnShip(double trueHeadingRad, double speedMps);
+  void setSensorPower(sensors::SensorId id, bool on);
+  void setSpeedlogMode(sensors::SpeedlogMode mode);
+  void setRadarPower(bool on);
+  /// A target appearing now at a grid position with a velocity over ground (grid m/s).
+  void addTarget(double xM, double yM, double vxMps, double vyMps);
+  void acquireAt(double xM, double yM);
+  void cancelTrack(int trackId);
+  /// The 95% position error limit of the dead-reckoning indication, metres.
+  void setDrLimit(double metres);
+  /// Emits scenarioSnapshot() with the scenario as edited so far (for saving).
+  void requestScenario();
+
+ signals:
+  void frameReady(const reckoner::ui::LiveFrame& frame);
+  void loaded(const reckoner::sim::Scenario& scenario);
+  void scenarioSnapshot(const reckoner::sim::Scenario& scenario);
+  void failed(const QString& message);
+
+ private:
+  void tick();
+  void stepEngine();
+  void absorb(sim::SimFrame&& f);
+  void maybeEmit(bool force);
+  void updateDeadReckoning();
+
+  std::unique_ptr<sim::SimulationEngine> engine_;
+  QTimer* timer_ = nullptr;
+  QElapsedTimer wall_;
+  qint64 lastTickNs_ = 0;
+  qint64 lastEmitNs_ = 0;
+  double rate_ = 0.0;
+  double targetS_ = 0.0;  // simulated time the clock asks for
+  bool inFlight_ = false;
+  bool dirty_ = false;
+  bool stepRequested_ = false;
+  quint64 sequence_ = 0;
+  quint64 generation_ = 0;
+  std::optional<double> stopAtS_;
+  LiveFrame pending_;
+  std::deque<std::pair<qint64, double>> rateWindow_;  // (wall ns, sim s) for the achieved rate
+  int sweepCounter_ = 0;
+  std::deque<ShownPlot> plots_;
+  double drLimitM_ = 185.2;  // 0.1 NM
+  double drComputedAtS_ = -1e9;
+  sim::SensorStates drSensors_{};
+};
+
+}  // namespace reckoner::ui

@@ -1,0 +1,109 @@
+#pragma once
+// The ECDIS chart display: the chart (ChartView) with the navigation overlays painted on top at every
+// repaint from the GUI thread's SimHistory: own ship (estimated position with the own-ship symbol,
+// heading line, COG vector with minute marks, past track, 95% covariance ellipse, latest GPS and
+// Loran-C fixes, truth), radar targets (ARPA symbols by status, true or relative vectors, past
+// positions, 95% ellipses, labels, raw plots), range rings, one EBL and one VRM, a scale bar and the
+// cursor readout. Mouse: drag the handle at the tip of own ship's ordered vector to order course and
+// speed; Ctrl+click steers towards a point; click a target to select it; the right button opens the
+// context menu (add a target by dragging its vector, acquire, cancel a track, EBL/VRM, pick report).
+// Keys: left/right alter course 5 deg (1 with Shift), up/down speed 0.5 kn.
+#include <QMenu>
+#include <optional>
+
+#include "geo/local_frame.h"
+#include "ui/bridge/sim_history.h"
+#include "ui/map/chart_view.h"
+
+namespace reckoner::ui {
+
+struct OverlaySettings {
+  bool relativeVectors = false;
+  double vectorMinutes = 6.0;
+  bool showTruth = true;
+  bool showEllipses = true;
+  bool showPlots = false;
+  bool showPastTrack = true;
+  double pastTrackMinutes = 15.0;
+  double ringSpacingNm = 0.5;  ///< 0: no rings
+  int ringCount = 4;
+  std::optional<double> eblBearingRad;  ///< true bearing from own ship
+  std::optional<double> vrmRangeM;
+  double ownLengthM = 120.0, ownBeamM = 20.0;  ///< true-scale own-ship outline when larger than 6 mm
+  bool courseUp = false;
+  bool followOwnShip = true;
+};
+
+class EcdisView : public ChartView {
+  Q_OBJECT
+ public:
+  explicit EcdisView(QWidget* parent = nullptr);
+
+  /// The run to draw (owned by the caller, read at every repaint) and its local frame.
+  void setHistory(const SimHistory* history, const geo::LocalFrame& frame);
+  [[nodiscard]] const std::optional<geo::LocalFrame>& frame() const { return frame_; }
+  void setOverlay(const OverlaySettings& s);
+  [[nodiscard]] const OverlaySettings& overlay() const { return overlay_; }
+  void setSelectedTrack(std::optional<int> trackId);
+  [[nodiscard]] std::optional<int> selectedTrack() const { return selected_; }
+  /// After a new frame: follows own ship (true motion with reset, course-up) and repaints.
+  void frameUpdated();
+  /// Centres the view on own ship's estimated position.
+  void centreOnOwnShip();
+
+  // Geometry shared with the tests: widget pixels of a grid point, and back.
+  [[nodiscard]] QPointF gridToWidget(double xM, double yM) const;
+  [[nodiscard]] geo::GridPoint widgetToGrid(QPointF p) const;
+  /// Widget position of the ordered-vector handle (own ship's ordered course and speed).
+  [[nodiscard]] std::optional<QPointF> handlePosition() const;
+  /// The context menu for a widget point (tests trigger its actions).
+  QMenu* buildContextMenu(QPointF at);
+  [[nodiscard]] bool addingTarget() const { return addTargetFrom_.has_value(); }
+
+ signals:
+  /// Helm order from the mouse or keyboard: true heading, speed through the water.
+  void orderRequested(double trueHeadingRad, double speedMps);
+  void addTargetRequested(double xM, double yM, double vxMps, double vyMps);
+  void acquireRequested(double xM, double yM);
+  void cancelTrackRequested(int trackId);
+  void trackSelected(std::optional<int> trackId);
+  void pickRequested(QPointF widgetPoint);
+  void overlayChanged(const reckoner::ui::OverlaySettings& s);
+  void cursorReadout(const QString& text);
+
+ protected:
+  void paintOverlay(QPainter& painter, const charts::Viewport& view) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void contextMenuEvent(QContextMenuEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+
+ private:
+  struct Local;  // a grid point's screen position and local metres-to-pixels Jacobian
+  [[nodiscard]] Local localAt(double xM, double yM) const;
+  [[nodiscard]] QColor colour(const char* role) const;
+  [[nodiscard]] std::optional<int> trackNear(QPointF p, double tolPx = 14.0) const;
+  /// The ordered (or, without an order, the present) true course and speed through the water.
+  [[nodiscard]] std::pair<double, double> orderedCourseSpeed() const;
+  void paintRings(QPainter& p, const Local& own);
+  void paintOwnShip(QPainter& p);
+  void paintTargets(QPainter& p);
+  void paintPlots(QPainter& p);
+  void paintScaleBar(QPainter& p, const charts::Viewport& view);
+  void paintReadouts(QPainter& p);
+  [[nodiscard]] QString cursorText(QPointF p) const;
+
+  const SimHistory* history_ = nullptr;
+  std::optional<geo::LocalFrame> frame_;
+  OverlaySettings overlay_;
+  std::optional<int> selected_;
+  bool draggingHandle_ = false;
+  std::optional<QPointF> handleDrag_;            // where the handle is being dragged
+  std::optional<geo::GridPoint> addTargetFrom_;  // add-target mode: the target's start
+  std::optional<QPointF> addTargetTo_;
+  std::optional<QPointF> cursor_;
+  double appliedRotation_ = 0.0;
+};
+
+}  // namespace reckoner::ui

@@ -1,0 +1,132 @@
+#include "ui/panels/own_ship_panel.h"
+
+#include <QFormLayout>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "common/angles.h"
+#include "common/units.h"
+#include "navigation/drkf.h"
+
+namespace reckoner::ui {
+namespace {
+constexpr double kKnot = 1852.0 / 3600.0;
+
+QString latLon(const geo::GeoPoint& g) {
+  const auto part = [](double v, int width, char pos, char neg) {
+    const char h = v >= 0 ? pos : neg;
+    v = std::abs(v);
+    const int deg = static_cast<int>(v);
+    return QStringLiteral("%1°%2'%3")
+        .arg(deg, width, 10, QChar('0'))
+        .arg((v - deg) * 60.0, 6, 'f', 3, QChar('0'))
+        .arg(h);
+  };
+  return part(g.latDeg, 2, 'N', 'S') + QLatin1Char(' ') + part(g.lonDeg, 3, 'E', 'W');
+}
+
+QString courseSpeed(double vx, double vy, double gamma) {
+  return QStringLiteral("%1° %2 kn")
+      .arg(radToDeg(wrapTwoPi(bearingOf(vx, vy) + gamma)), 5, 'f', 1, QChar('0'))
+      .arg(std::hypot(vx, vy) / kKnot, 0, 'f', 2);
+}
+
+QString duration(double s) {
+  if (s >= 4.0 * 3600.0 - 1.0) return QStringLiteral("> 4 h");
+  const int m = static_cast<int>(s / 60.0);
+  return QStringLiteral("%1 min %2 s").arg(m).arg(static_cast<int>(s) % 60, 2, 10, QChar('0'));
+}
+}  // namespace
+
+OwnShipPanel::OwnShipPanel(QWidget* parent) : QWidget(parent) {
+  auto* v = new QVBoxLayout(this);
+  dr_ = new QLabel(this);
+  dr_->setObjectName(QStringLiteral("drIndication"));
+  dr_->setWordWrap(true);
+  dr_->setStyleSheet(
+      QStringLiteral("QLabel { background: #c62828; color: white; font-weight: bold; padding: 4px; }"));
+  dr_->hide();
+  v->addWidget(dr_);
+  form_ = new QWidget(this);
+  auto* f = new QFormLayout(form_);
+  f->setContentsMargins(0, 0, 0, 0);
+  v->addWidget(form_);
+  v->addStretch(1);
+  estPos_ = add(tr("Position (DRKF)"));
+  truePos_ = add(tr("Position (truth)"));
+  error_ = add(tr("Error / 95% radius"));
+  estCog_ = add(tr("COG/SOG (DRKF)"));
+  trueCog_ = add(tr("COG/SOG (truth)"));
+  heading_ = add(tr("Heading est / true"));
+  current_ = add(tr("Current est / true"));
+  log_ = add(tr("Log error est / true"));
+  loran_ = add(tr("Loran-C error est / true"));
+  sensors_ = add(tr("Sensors"));
+  static const char* const kBlocks[] = {"NIS GPS position", "NIS GPS velocity", "NIS Loran-C", "NIS speedlog",
+                                        "NIS gyro"};
+  for (std::size_t i = 0; i < nis_.size(); ++i) nis_[i] = add(tr(kBlocks[i]));
+}
+
+QLabel* OwnShipPanel::add(const QString& name) {
+  auto* l = new QLabel(QStringLiteral("–"), form_);
+  l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  static_cast<QFormLayout*>(form_->layout())->addRow(name, l);
+  return l;
+}
+
+void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame) {
+  namespace dk = est::drkf;
+  const sim::SimFrame& f = live.frame;
+  const auto& x = f.estimate.x;
+  const auto& t = f.trueState;
+  const double gamma = frame.gridInfo({x[dk::kPosX], x[dk::kPosY]}).convergenceRad;
+  estPos_->setText(latLon(frame.toGeodetic({x[dk::kPosX], x[dk::kPosY]})));
+  truePos_->setText(latLon(frame.toGeodetic(f.truth.position)));
+  error_->setText(QStringLiteral("%1 m / %2 m")
+                      .arg(std::hypot(x[dk::kPosX] - t[dk::kPosX], x[dk::kPosY] - t[dk::kPosY]), 0, 'f', 1)
+                      .arg(live.error95M, 0, 'f', 1));
+  estCog_->setText(courseSpeed(x[dk::kVelX] + x[dk::kCurX], x[dk::kVelY] + x[dk::kCurY], gamma));
+  trueCog_->setText(courseSpeed(f.truth.groundVxMps(), f.truth.groundVyMps(), gamma));
+  heading_->setText(
+      QStringLiteral("%1° / %2°")
+          .arg(radToDeg(wrapTwoPi(bearingOf(x[dk::kVelX], x[dk::kVelY]) + gamma)), 5, 'f', 1, QChar('0'))
+          .arg(radToDeg(wrapTwoPi(f.truth.headingRad + gamma)), 5, 'f', 1, QChar('0')));
+  current_->setText(QStringLiteral("%1 / %2 kn @ %3° / %4°")
+                        .arg(std::hypot(x[dk::kCurX], x[dk::kCurY]) / kKnot, 0, 'f', 2)
+                        .arg(std::hypot(t[dk::kCurX], t[dk::kCurY]) / kKnot, 0, 'f', 2)
+                        .arg(radToDeg(wrapTwoPi(bearingOf(x[dk::kCurX], x[dk::kCurY]) + gamma)), 0, 'f', 0)
+                        .arg(radToDeg(wrapTwoPi(bearingOf(t[dk::kCurX], t[dk::kCurY]) + gamma)), 0, 'f', 0));
+  log_->setText(
+      QStringLiteral("%1 / %2 m/s").arg(x[dk::kLogBias], 0, 'f', 3).arg(t[dk::kLogBias], 0, 'f', 3));
+  loran_->setText(QStringLiteral("(%1, %2) / (%3, %4) m")
+                      .arg(x[dk::kLoranX], 0, 'f', 1)
+                      .arg(x[dk::kLoranY], 0, 'f', 1)
+                      .arg(t[dk::kLoranX], 0, 'f', 1)
+                      .arg(t[dk::kLoranY], 0, 'f', 1));
+  sensors_->setText(QString::fromStdString(sim::sensorLabel(f.sensors)));
+  const double now = toSeconds(f.timeUs);
+  for (std::size_t i = 0; i < nis_.size(); ++i) {
+    const BlockStatus& b = live.blocks[i];
+    if (!b.seen || now - b.tS > 5.0) {
+      nis_[i]->setText(QStringLiteral("–"));
+      continue;
+    }
+    nis_[i]->setText(QStringLiteral("%1 (%2 dof)%3")
+                         .arg(b.nis, 0, 'f', 2)
+                         .arg(b.dim)
+                         .arg(b.accepted ? QString() : tr(" rejected")));
+  }
+  if (live.positionFixUsed) {
+    dr_->hide();
+  } else {
+    QString text = tr("DR — no position fix. 95% error %1 m").arg(live.error95M, 0, 'f', 0);
+    if (live.drHorizonS)
+      text += *live.drHorizonS <= 0.0
+                  ? tr(", past the %1 m limit").arg(live.drLimitM, 0, 'f', 0)
+                  : tr(", %1 m limit in %2").arg(live.drLimitM, 0, 'f', 0).arg(duration(*live.drHorizonS));
+    dr_->setText(text);
+    dr_->show();
+  }
+}
+
+}  // namespace reckoner::ui

@@ -1,0 +1,31 @@
+#pragma once
+// Own-ship panel: estimated and true position, course and speed, the current, the speedlog and Loran-C
+// error estimates against the truth, the active sensors, the NIS of each sensor's last update and the
+// dead-reckoning indication.
+#include <QLabel>
+#include <QWidget>
+#include <array>
+
+#include "geo/local_frame.h"
+#include "ui/bridge/live_frame.h"
+
+namespace reckoner::ui {
+
+class OwnShipPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit OwnShipPanel(QWidget* parent = nullptr);
+  void setFrame(const LiveFrame& frame, const geo::LocalFrame& localFrame);
+  /// The dead-reckoning banner (tests read it).
+  [[nodiscard]] QString drText() const { return dr_->text(); }
+  [[nodiscard]] bool drShown() const { return dr_->isVisibleTo(this); }
+
+ private:
+  QLabel* add(const QString& name);
+  QLabel* dr_;
+  QLabel *estPos_, *truePos_, *estCog_, *trueCog_, *heading_, *current_, *log_, *loran_, *sensors_, *error_;
+  std::array<QLabel*, 5> nis_{};
+  QWidget* form_;
+};
+
+}  // namespace reckoner::ui

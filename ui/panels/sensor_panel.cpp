@@ -1,0 +1,67 @@
+#include "ui/panels/sensor_panel.h"
+
+#include <QFormLayout>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace reckoner::ui {
+
+SensorPanel::SensorPanel(QWidget* parent) : QWidget(parent) {
+  auto* v = new QVBoxLayout(this);
+  static const char* const kNames[] = {"GPS", "Loran-C", "Speedlog", "Gyro"};
+  static const char* const kObjects[] = {"gps", "loranC", "speedlog", "gyro"};
+  for (int i = 0; i < sensors::kOwnShipSensorCount; ++i) {
+    auto* b = new QCheckBox(tr(kNames[i]), this);
+    b->setObjectName(QString::fromLatin1(kObjects[i]));
+    boxes_[static_cast<std::size_t>(i)] = b;
+    v->addWidget(b);
+    const auto id = static_cast<sensors::SensorId>(i);
+    connect(b, &QCheckBox::toggled, this, [this, id](bool on) { emit sensorToggled(id, on); });
+  }
+  logMode_ = new QComboBox(this);
+  logMode_->setObjectName(QStringLiteral("speedlogMode"));
+  logMode_->addItem(tr("Ground lock (over ground)"));
+  logMode_->addItem(tr("Bottom lock (through water)"));
+  connect(logMode_, &QComboBox::activated, this, [this](int i) {
+    emit speedlogModeChosen(i == 0 ? sensors::SpeedlogMode::GroundLock : sensors::SpeedlogMode::BottomLock);
+  });
+  v->insertWidget(3, logMode_);
+  radar_ = new QCheckBox(tr("Radar"), this);
+  radar_->setObjectName(QStringLiteral("radar"));
+  connect(radar_, &QCheckBox::toggled, this, &SensorPanel::radarToggled);
+  v->addWidget(radar_);
+  auto* form = new QFormLayout;
+  drLimit_ = new QDoubleSpinBox(this);
+  drLimit_->setObjectName(QStringLiteral("drLimit"));
+  drLimit_->setRange(10.0, 20000.0);
+  drLimit_->setDecimals(0);
+  drLimit_->setSuffix(QStringLiteral(" m"));
+  drLimit_->setValue(185.0);
+  connect(drLimit_, &QDoubleSpinBox::valueChanged, this, &SensorPanel::drLimitChanged);
+  form->addRow(tr("DR limit (95%)"), drLimit_);
+  v->addLayout(form);
+  v->addStretch(1);
+}
+
+void SensorPanel::setFitted(const sim::Scenario& s) {
+  const std::array<bool, 4> fitted{s.gps.fitted, s.loran.fitted, s.speedlog.fitted, s.gyro.fitted};
+  for (std::size_t i = 0; i < boxes_.size(); ++i) {
+    boxes_[i]->setEnabled(fitted[i]);
+    if (!fitted[i]) boxes_[i]->setToolTip(tr("not fitted in this scenario"));
+  }
+  logMode_->setEnabled(s.speedlog.fitted);
+  radar_->setEnabled(s.radar.fitted);
+}
+
+void SensorPanel::setStates(const sim::SensorStates& states, bool radarOn) {
+  for (std::size_t i = 0; i < boxes_.size(); ++i) {
+    const QSignalBlocker block(boxes_[i]);
+    boxes_[i]->setChecked(states.on[i]);
+  }
+  const QSignalBlocker b1(logMode_);
+  logMode_->setCurrentIndex(states.speedlogMode == sensors::SpeedlogMode::GroundLock ? 0 : 1);
+  const QSignalBlocker b2(radar_);
+  radar_->setChecked(radarOn);
+}
+
+}  // namespace reckoner::ui

@@ -1,0 +1,39 @@
+#pragma once
+// Sensor panel: switch GPS, Loran-C, speedlog, gyro and radar on and off while the simulation runs,
+// choose the speedlog's ground or bottom lock, and set the dead-reckoning alarm limit. The boxes follow
+// the simulation's own schedule too (a scripted outage unticks the box).
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QWidget>
+#include <array>
+
+#include "sim/scenario.h"
+
+namespace reckoner::ui {
+
+class SensorPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit SensorPanel(QWidget* parent = nullptr);
+  /// Which sensors the scenario has (others are disabled).
+  void setFitted(const sim::Scenario& s);
+  void setStates(const sim::SensorStates& states, bool radarOn);
+  [[nodiscard]] QCheckBox* box(sensors::SensorId id) const { return boxes_[static_cast<std::size_t>(id)]; }
+  [[nodiscard]] QCheckBox* radarBox() const { return radar_; }
+  [[nodiscard]] QComboBox* logMode() const { return logMode_; }
+
+ signals:
+  void sensorToggled(reckoner::sensors::SensorId id, bool on);
+  void radarToggled(bool on);
+  void speedlogModeChosen(reckoner::sensors::SpeedlogMode mode);
+  void drLimitChanged(double metres);
+
+ private:
+  std::array<QCheckBox*, sensors::kOwnShipSensorCount> boxes_{};
+  QCheckBox* radar_;
+  QComboBox* logMode_;
+  QDoubleSpinBox* drLimit_;
+};
+
+}  // namespace reckoner::ui

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Install what is missing (Debian 12 packages), build, and run the main job or the test suite.
 #
-#   scripts/bootstrap.sh run    # install, build, run the main job on the embedded default scenario
+#   scripts/bootstrap.sh run    # install, build, open the ECDIS window on the embedded chart and scenario
 #   scripts/bootstrap.sh test   # install, build, run the whole test suite (ctest, Qt on offscreen)
 #   scripts/bootstrap.sh deps   # only install the Debian packages
 #   scripts/bootstrap.sh build  # install and build
@@ -48,8 +48,12 @@ case "$action" in
   build) install_deps; build ;;
   run)
     install_deps; build
-    out="$here/out/default"
-    "build/$preset/app/reckoner-cli" run builtin:default --out "$out"
+    if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ] || [ -n "${QT_QPA_PLATFORM:-}" ]; then
+      exec "build/$preset/app/reckoner" --scenario builtin:default --enc builtin:default --run
+    fi
+    # No display to open a window on: the same scenario headless, with its summary and files.
+    echo "bootstrap: no display (DISPLAY/WAYLAND_DISPLAY unset); running the default scenario headless"
+    "build/$preset/app/reckoner-cli" run builtin:default --out "$here/out/default"
     ;;
   test)
     install_deps; build

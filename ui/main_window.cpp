@@ -515,6 +515,8 @@ void MainWindow::setPalette(charts::Palette palette) {
   }
   QMainWindow::setPalette(pal);
   for (QWidget* w : findChildren<QWidget*>()) w->setPalette(pal);
+  ownPlots_->setDark(palette != charts::Palette::Day);
+  targetPlots_->setDark(palette != charts::Palette::Day);
   for (auto* combo : findChildren<QComboBox*>(QStringLiteral("palette")))
     combo->setCurrentIndex(static_cast<int>(palette));
 }
@@ -525,6 +527,7 @@ void MainWindow::onFrame(const LiveFrame& frame) {
   history_.append(frame);
   frameDirty_ = true;
   plotsDirty_ = true;
+  if (!frame.running) QTimer::singleShot(0, this, &MainWindow::refreshPlots);  // paused: show all now
   if (firstFrame_ && localFrame_) {
     firstFrame_ = false;
     view_->centreOnOwnShip();
@@ -561,9 +564,12 @@ void MainWindow::repaintTick() {
 
 void MainWindow::refreshPlots() {
   if (!plotsDirty_) return;
+  QElapsedTimer t;
+  t.start();
   plotsDirty_ = false;
   ownPlots_->refresh();
   targetPlots_->refresh();
+  frameTimesMs_.push_back(static_cast<double>(t.nsecsElapsed()) * 1e-6);
 }
 
 void MainWindow::updateClock() {

@@ -71,7 +71,8 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] bool chartsLoading() const { return loading_ != nullptr; }
   [[nodiscard]] QString lastError() const { return lastError_; }
   void setPalette(charts::Palette palette);
-  /// Repaint timings of the GUI thread (frame handling + overlay paint), milliseconds.
+  /// GUI-thread times, milliseconds: each frame arrival, each repaint (panels, table, chart with
+  /// overlays) and each plot refresh.
   [[nodiscard]] const std::vector<double>& frameTimesMs() const { return frameTimesMs_; }
   void clearFrameTimes() { frameTimesMs_.clear(); }
 

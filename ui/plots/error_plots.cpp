@@ -103,6 +103,8 @@ ErrorPlots::ErrorPlots(Subject subject, QWidget* parent) : QWidget(parent), subj
   nees_ = addSeries(neesChart_, tr("NEES"), QColor(0, 90, 200));
   neesLo_ = addSeries(neesChart_, tr("2.5%"), QColor(0, 140, 0), Qt::DashLine);
   neesHi_ = addSeries(neesChart_, tr("97.5%"), QColor(0, 140, 0), Qt::DashLine);
+  for (QLineSeries* s : {est_, truth_, error_, plus2_, minus2_, nees_, neesLo_, neesHi_})
+    pens_.emplace_back(s, s->pen());
   for (QChart* c : {valueChart_, errorChart_, neesChart_}) {
     auto* ax = new QValueAxis;
     ax->setTitleText(tr("time s"));
@@ -128,6 +130,18 @@ QChartView* ErrorPlots::makeChart(const QString& title, QChart*& chart) {
   view->setRenderHint(QPainter::Antialiasing);
   view->setMinimumHeight(120);
   return view;
+}
+
+void ErrorPlots::setDark(bool dark) {
+  for (QChart* c : {valueChart_, errorChart_, neesChart_}) {
+    c->setTheme(dark ? QChart::ChartThemeDark : QChart::ChartThemeLight);
+    c->setMargins(QMargins(2, 2, 2, 2));
+  }
+  for (auto& [series, pen] : pens_) {
+    QPen p = pen;
+    if (dark) p.setColor(p.color().lighter(130));
+    series->setPen(p);
+  }
 }
 
 void ErrorPlots::setTrack(std::optional<int> trackId) {

@@ -33,6 +33,8 @@ class ErrorPlots : public QWidget {
   /// Rebuilds the series from the history (call at a modest rate, e.g. 2 Hz).
   void refresh();
 
+  /// Dark chart theme for the dusk and night palettes.
+  void setDark(bool dark);
   /// Number of points in the estimate, error and NEES series (tests).
   [[nodiscard]] int pointCount() const;
   bool exportPng(const QString& path) const;
@@ -56,6 +58,7 @@ class ErrorPlots : public QWidget {
   QChart *valueChart_ = nullptr, *errorChart_ = nullptr, *neesChart_ = nullptr;
   QChartView *valueView_ = nullptr, *errorView_ = nullptr, *neesView_ = nullptr;
   QLineSeries *est_, *truth_, *error_, *plus2_, *minus2_, *nees_, *neesLo_, *neesHi_;
+  std::vector<std::pair<QLineSeries*, QPen>> pens_;  // re-applied after a theme change
 };
 
 }  // namespace reckoner::ui

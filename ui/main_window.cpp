@@ -103,7 +103,6 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
   plotTimer_.setInterval(kPlotMs);
   connect(&plotTimer_, &QTimer::timeout, this, &MainWindow::refreshPlots);
   plotTimer_.start();
-  frameClock_.start();
 
   readSettings();
   QSettings settings;
@@ -532,7 +531,7 @@ void MainWindow::onFrame(const LiveFrame& frame) {
     firstFrame_ = false;
     view_->centreOnOwnShip();
   }
-  frameTimesMs_.push_back(static_cast<double>(t.nsecsElapsed()) * 1e-6);
+  guiTimings_.push_back({GuiTiming::Kind::Frame, static_cast<double>(t.nsecsElapsed()) * 1e-6});
 }
 
 void MainWindow::repaintTick() {
@@ -559,7 +558,7 @@ void MainWindow::repaintTick() {
   updateAlarms();
   view_->frameUpdated();
   view_->repaint();
-  frameTimesMs_.push_back(static_cast<double>(t.nsecsElapsed()) * 1e-6);
+  guiTimings_.push_back({GuiTiming::Kind::Repaint, static_cast<double>(t.nsecsElapsed()) * 1e-6});
 }
 
 void MainWindow::refreshPlots() {
@@ -569,7 +568,7 @@ void MainWindow::refreshPlots() {
   plotsDirty_ = false;
   ownPlots_->refresh();
   targetPlots_->refresh();
-  frameTimesMs_.push_back(static_cast<double>(t.nsecsElapsed()) * 1e-6);
+  guiTimings_.push_back({GuiTiming::Kind::Plots, static_cast<double>(t.nsecsElapsed()) * 1e-6});
 }
 
 void MainWindow::updateClock() {

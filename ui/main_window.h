@@ -71,10 +71,15 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] bool chartsLoading() const { return loading_ != nullptr; }
   [[nodiscard]] QString lastError() const { return lastError_; }
   void setPalette(charts::Palette palette);
-  /// GUI-thread times, milliseconds: each frame arrival, each repaint (panels, table, chart with
-  /// overlays) and each plot refresh.
-  [[nodiscard]] const std::vector<double>& frameTimesMs() const { return frameTimesMs_; }
-  void clearFrameTimes() { frameTimesMs_.clear(); }
+  /// GUI-thread work, timed: each frame arrival, each repaint (panels, table, chart with overlays)
+  /// and each plot refresh.
+  struct GuiTiming {
+    enum class Kind { Frame, Repaint, Plots };
+    Kind kind;
+    double ms;
+  };
+  [[nodiscard]] const std::vector<GuiTiming>& guiTimings() const { return guiTimings_; }
+  void clearGuiTimings() { guiTimings_.clear(); }
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -125,8 +130,7 @@ class MainWindow : public QMainWindow {
   QString chartSource_;
   QString lastError_;
   double lastRunRate_ = 10.0;
-  std::vector<double> frameTimesMs_;
-  QElapsedTimer frameClock_;
+  std::vector<GuiTiming> guiTimings_;
   struct Loading;
   std::unique_ptr<Loading> loading_;
 };

@@ -215,6 +215,12 @@ class TestMainWindow : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(w.chart()->selectedTrack().has_value(), kTimeoutMs);
     runUntil(w, 140.0);
     QTRY_VERIFY_WITH_TIMEOUT(w.targetPlots()->pointCount() > 5, kTimeoutMs);
+    // A rolling window shows fewer points than the whole run.
+    const int whole = w.ownPlots()->pointCount();
+    w.ownPlots()->windowBox()->setCurrentIndex(0);  // last 5 min of 140 s: all of it
+    QCOMPARE(w.ownPlots()->pointCount(), whole);
+    w.ownPlots()->quantityBox()->setCurrentIndex(8);  // speedlog error
+    QCOMPARE(w.ownPlots()->pointCount(), whole);
     QTemporaryDir dir;
     QVERIFY(w.ownPlots()->exportPng(dir.filePath("own.png")));
     QVERIFY(w.ownPlots()->exportCsv(dir.filePath("own.csv")));
@@ -262,6 +268,52 @@ class TestMainWindow : public QObject {
     }
     QVERIFY2(worst < 1e-6, qPrintable(QString("largest difference %1 m").arg(worst)));
     QVERIFY(w.lastError().isEmpty());
+  }
+
+  void arrowKeysAlterTheOrderedCourseAndSpeed() {
+    MainWindow w(freshOptions());
+    w.resize(1400, 900);
+    w.show();
+    waitReady(w);
+    runUntil(w, 5.0);
+    const sim::SimFrame f = w.history().latest().frame;  // a copy: latest() moves on
+    QVERIFY(!f.order.has_value());  // the default scenario's first order is at 610 s
+    const double course = bearingOf(f.estimate.x[est::drkf::kVelX], f.estimate.x[est::drkf::kVelY]);
+    w.chart()->setFocus();
+    QTest::keyClick(w.chart(), Qt::Key_Right);
+    runUntil(w, 6.0);
+    QVERIFY(w.history().latest().frame.order.has_value());
+    const double first = w.history().latest().frame.order->headingRad;
+    QVERIFY2(std::abs(radToDeg(angleDiff(first, course)) - 5.0) < 0.5,
+             qPrintable(QString("%1 -> %2").arg(radToDeg(course)).arg(radToDeg(first))));
+    QTest::keyClick(w.chart(), Qt::Key_Left, Qt::ShiftModifier);
+    QTest::keyClick(w.chart(), Qt::Key_Up);
+    runUntil(w, 7.0);
+    const sim::HelmOrder o = *w.history().latest().frame.order;
+    QVERIFY(std::abs(radToDeg(angleDiff(o.headingRad, first)) + 1.0) < 1e-6);
+    const double speed = std::hypot(f.estimate.x[est::drkf::kVelX], f.estimate.x[est::drkf::kVelY]);
+    QVERIFY2(std::abs(o.speedMps - speed - 0.5 * 1852.0 / 3600.0) < 0.05,
+             qPrintable(QString::number(o.speedMps)));
+  }
+
+  void chartFoldersLoadInTheBackgroundAndBadCellsAreReported() {
+    MainWindow w(freshOptions());
+    waitReady(w);
+    QTemporaryDir dir;
+    const QString bad = dir.filePath("XX5BROKE.000");
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("this is not an ISO 8211 file");
+    f.close();
+    w.openCharts(bad);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.chartsLoading(), kTimeoutMs);
+    QVERIFY2(w.lastError().contains(QStringLiteral("XX5BROKE.000")), qPrintable(w.lastError()));
+    QCOMPARE(w.chart()->cells().front()->info().name, std::string(resources::kDefaultChart));  // kept
+    const QString enc = QStringLiteral(RECKONER_SHARED_DIR "/data/enc");
+    if (!QDir(enc).exists()) QSKIP("../shared/data/enc is not here");
+    w.openCharts(enc);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.chartsLoading(), kTimeoutMs);
+    QVERIFY2(w.chart()->cells().size() >= 4, qPrintable(w.lastError()));
   }
 
   void badScenarioFileGivesAClearMessage() {

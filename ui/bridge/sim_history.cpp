@@ -39,13 +39,6 @@ const std::vector<TrackSample>& SimHistory::track(int trackId) const {
   return it == tracks_.end() ? kNone : it->second;
 }
 
-const sim::TrackSnapshot* SimHistory::trackNow(int trackId) const {
-  const auto& tracks = latest_.frame.tracks;
-  const auto it =
-      std::find_if(tracks.begin(), tracks.end(), [trackId](const auto& t) { return t.trackId == trackId; });
-  return it == tracks.end() ? nullptr : &*it;
-}
-
 bool SimHistory::unacknowledged(Alarm::Kind kind, int trackId) const {
   return alarms_.count({kind, trackId, 0.0}) > 0;
 }

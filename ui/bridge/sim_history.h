@@ -34,8 +34,6 @@ class SimHistory {
   /// Sweep-end samples of one track, oldest first (empty if unknown).
   [[nodiscard]] const std::vector<TrackSample>& track(int trackId) const;
   [[nodiscard]] const std::map<int, std::vector<TrackSample>>& tracks() const { return tracks_; }
-  /// The latest snapshot of a track, or nullptr.
-  [[nodiscard]] const sim::TrackSnapshot* trackNow(int trackId) const;
 
   [[nodiscard]] const std::set<Alarm>& alarms() const { return alarms_; }
   [[nodiscard]] bool unacknowledged(Alarm::Kind kind, int trackId) const;

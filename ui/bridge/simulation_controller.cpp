@@ -41,7 +41,6 @@ void SimulationController::onFrame(const LiveFrame& frame) {
     return;
   }
   latest_ = frame;
-  ++framesReceived_;
   emit frameArrived(frame);
   post([w = worker_] { w->frameConsumed(); });
 }

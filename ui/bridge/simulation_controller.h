@@ -35,7 +35,6 @@ class SimulationController : public QObject {
   [[nodiscard]] bool hasFrame() const { return latest_.sequence > 0; }
   /// The scenario as loaded (the worker's copy is edited by commands; requestScenario() gets it).
   [[nodiscard]] const sim::Scenario& scenario() const { return scenario_; }
-  [[nodiscard]] quint64 framesReceived() const { return framesReceived_; }
 
  signals:
   /// A new frame is stored in latest(); `frame` also carries the history batch of the steps since.
@@ -53,7 +52,6 @@ class SimulationController : public QObject {
   SimulationWorker* worker_ = nullptr;  // lives in thread_
   LiveFrame latest_;
   sim::Scenario scenario_;
-  quint64 framesReceived_ = 0;
   quint64 generation_ = 0;
 };
 

@@ -137,6 +137,7 @@ QColor EcdisView::colour(const char* role) const {
 }
 
 std::pair<double, double> EcdisView::orderedCourseSpeed() const {
+  if (pendingOrder_) return {pendingOrder_->course, pendingOrder_->speed};
   if (!history_ || history_->empty() || !frame_) return {0.0, 0.0};
   const sim::SimFrame& f = history_->latest().frame;
   const double gamma = frame_->gridInfo(f.truth.position).convergenceRad;
@@ -144,6 +145,13 @@ std::pair<double, double> EcdisView::orderedCourseSpeed() const {
   const auto& x = f.estimate.x;
   const double vx = x[est::drkf::kVelX], vy = x[est::drkf::kVelY];
   return {wrapTwoPi(bearingOf(vx, vy) + gamma), std::hypot(vx, vy)};
+}
+
+void EcdisView::requestOrder(double trueCourseRad, double speedMps) {
+  pendingOrder_ = PendingOrder{wrapTwoPi(trueCourseRad), std::max(0.0, speedMps),
+                               history_ && !history_->empty() ? history_->latest().sequence : 0};
+  emit orderRequested(pendingOrder_->course, pendingOrder_->speed);
+  update();
 }
 
 std::optional<QPointF> EcdisView::handlePosition() const {
@@ -173,6 +181,17 @@ std::optional<int> EcdisView::trackNear(QPointF p, double tolPx) const {
 }
 
 void EcdisView::frameUpdated() {
+  if (pendingOrder_ && history_ && !history_->empty() && frame_) {
+    // An order given here shows at once; the frames take over once one carries it (commands reach
+    // the worker before its next step), or a few frames later in any case.
+    const LiveFrame& live = history_->latest();
+    const sim::SimFrame& f = live.frame;
+    const double gamma = frame_->gridInfo(f.truth.position).convergenceRad;
+    const bool carried = f.order &&
+                         std::abs(angleDiff(f.order->headingRad + gamma, pendingOrder_->course)) < 1e-3 &&
+                         std::abs(f.order->speedMps - pendingOrder_->speed) < 1e-6;
+    if (carried || live.sequence > pendingOrder_->sequence + 5) pendingOrder_.reset();
+  }
   if (history_ && !history_->empty() && frame_) {
     const auto& x = history_->latest().frame.estimate.x;
     const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
@@ -641,7 +660,7 @@ void EcdisView::mousePressEvent(QMouseEvent* e) {
         const geo::GridPoint g = widgetToGrid(e->position());
         const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
         const double gamma = frame_->gridInfo({ox, oy}).convergenceRad;
-        emit orderRequested(wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gamma), orderedCourseSpeed().second);
+        requestOrder(wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gamma), orderedCourseSpeed().second);
       }
       return;
     }
@@ -674,7 +693,7 @@ void EcdisView::mouseReleaseEvent(QMouseEvent* e) {
       const geo::GridInfo gi = frame_->gridInfo({ox, oy});
       const double course = wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gi.convergenceRad);
       const double speed = std::hypot(g.xM - ox, g.yM - oy) / gi.scale / (overlay_.vectorMinutes * 60.0);
-      emit orderRequested(course, speed);
+      requestOrder(course, speed);
     }
     update();
     return;
@@ -708,7 +727,7 @@ QMenu* EcdisView::buildContextMenu(QPointF at) {
     const auto& x = history_->latest().frame.estimate.x;
     const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
     const double gamma = frame_->gridInfo({ox, oy}).convergenceRad;
-    emit orderRequested(wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gamma), orderedCourseSpeed().second);
+    requestOrder(wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gamma), orderedCourseSpeed().second);
   });
   menu->addAction(tr("EBL and VRM to here"), this,
                   [this, g] {
@@ -769,7 +788,7 @@ void EcdisView::keyPressEvent(QKeyEvent* e) {
       ChartView::keyPressEvent(e);
       return;
   }
-  emit orderRequested(course, speed);
+  requestOrder(course, speed);
 }
 
 }  // namespace reckoner::ui

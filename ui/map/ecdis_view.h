@@ -86,6 +86,8 @@ class EcdisView : public ChartView {
   [[nodiscard]] std::optional<int> trackNear(QPointF p, double tolPx = 14.0) const;
   /// The ordered (or, without an order, the present) true course and speed through the water.
   [[nodiscard]] std::pair<double, double> orderedCourseSpeed() const;
+  /// Emits orderRequested and remembers the order until a frame carries it.
+  void requestOrder(double trueCourseRad, double speedMps);
   void paintRings(QPainter& p, const Local& own);
   void paintOwnShip(QPainter& p);
   void paintTargets(QPainter& p);
@@ -104,6 +106,11 @@ class EcdisView : public ChartView {
   std::optional<QPointF> addTargetTo_;
   std::optional<QPointF> cursor_;
   double appliedRotation_ = 0.0;
+  struct PendingOrder {
+    double course, speed;  // true course, speed through the water
+    quint64 sequence;      // the latest frame when it was given
+  };
+  std::optional<PendingOrder> pendingOrder_;
 };
 
 }  // namespace reckoner::ui

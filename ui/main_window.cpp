@@ -221,26 +221,20 @@ void MainWindow::buildActions() {
   });
   recentMenu_ = file->addMenu(tr("Recent files"));
   file->addSeparator();
-  file->addAction(tr("Export own-ship plots (PNG)…"), this, [this] {
-    const QString p = QFileDialog::getSaveFileName(this, tr("Export plots"), QStringLiteral("ownship.png"),
-                                                   tr("PNG (*.png)"));
-    if (!p.isEmpty() && !ownPlots_->exportPng(p)) reportError(tr("%1: cannot write the image").arg(p));
-  });
-  file->addAction(tr("Export own-ship plot data (CSV)…"), this, [this] {
-    const QString p = QFileDialog::getSaveFileName(this, tr("Export plot data"),
-                                                   QStringLiteral("ownship.csv"), tr("CSV (*.csv)"));
-    if (!p.isEmpty() && !ownPlots_->exportCsv(p)) reportError(tr("%1: cannot write the file").arg(p));
-  });
-  file->addAction(tr("Export target plots (PNG)…"), this, [this] {
-    const QString p = QFileDialog::getSaveFileName(this, tr("Export plots"), QStringLiteral("target.png"),
-                                                   tr("PNG (*.png)"));
-    if (!p.isEmpty() && !targetPlots_->exportPng(p)) reportError(tr("%1: cannot write the image").arg(p));
-  });
-  file->addAction(tr("Export target plot data (CSV)…"), this, [this] {
-    const QString p = QFileDialog::getSaveFileName(this, tr("Export plot data"), QStringLiteral("target.csv"),
-                                                   tr("CSV (*.csv)"));
-    if (!p.isEmpty() && !targetPlots_->exportCsv(p)) reportError(tr("%1: cannot write the file").arg(p));
-  });
+  for (ErrorPlots* plots : {ownPlots_, targetPlots_}) {
+    const QString who = plots == ownPlots_ ? tr("own-ship") : tr("target");
+    const QString stem = plots == ownPlots_ ? QStringLiteral("ownship") : QStringLiteral("target");
+    file->addAction(tr("Export %1 plots (PNG)…").arg(who), this, [this, plots, stem] {
+      const QString p =
+          QFileDialog::getSaveFileName(this, tr("Export plots"), stem + ".png", tr("PNG (*.png)"));
+      if (!p.isEmpty() && !plots->exportPng(p)) reportError(tr("%1: cannot write the image").arg(p));
+    });
+    file->addAction(tr("Export %1 plot data (CSV)…").arg(who), this, [this, plots, stem] {
+      const QString p =
+          QFileDialog::getSaveFileName(this, tr("Export plot data"), stem + ".csv", tr("CSV (*.csv)"));
+      if (!p.isEmpty() && !plots->exportCsv(p)) reportError(tr("%1: cannot write the file").arg(p));
+    });
+  }
   file->addSeparator();
   file->addAction(tr("Quit"), QKeySequence::Quit, this, &QWidget::close);
 

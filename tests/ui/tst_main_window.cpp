@@ -56,6 +56,12 @@ void waitReady(MainWindow& w) {
   QTRY_VERIFY_WITH_TIMEOUT(w.chart()->renderedGeneration() == w.chart()->requestedGeneration(), kTimeoutMs);
 }
 
+void showAndWait(MainWindow& w, QSize size = {1400, 900}) {
+  w.resize(size);
+  w.show();
+  waitReady(w);
+}
+
 void saveShot(QWidget& w, const QString& name) {
   QDir().mkpath(QStringLiteral("screenshots"));
   const QString path = QStringLiteral("screenshots/%1.png").arg(name);
@@ -76,9 +82,7 @@ class TestMainWindow : public QObject {
 
   void opensWithTheDefaultScenarioAndChart() {
     MainWindow w(freshOptions());
-    w.resize(1400, 900);
-    w.show();
-    waitReady(w);
+    showAndWait(w);
     const auto* def = resources::findScenario(resources::kDefaultScenario);
     const sim::Scenario expected = io::parseScenario(def->text, "default");
     QCOMPARE(w.controller()->scenario().name, expected.name);
@@ -96,9 +100,7 @@ class TestMainWindow : public QObject {
     // ordered vector to 045 deg, 8 kn THEN the order is 045/8 kn and the ship turns towards it at no
     // more than its 1 deg/s turn-rate limit.
     MainWindow w(freshOptions());
-    w.resize(1400, 900);
-    w.show();
-    waitReady(w);
+    showAndWait(w);
     runUntil(w, 20.0);
     EcdisView* v = w.chart();
     const auto handle = v->handlePosition();
@@ -138,9 +140,7 @@ class TestMainWindow : public QObject {
 
   void gpsOffGrowsTheEllipseAndShowsDeadReckoning() {
     MainWindow w(freshOptions());
-    w.resize(1400, 900);
-    w.show();
-    waitReady(w);
+    showAndWait(w);
     runUntil(w, 60.0);
     const double before = w.history().latest().error95M;
     QVERIFY(!w.ownShipPanel()->drShown());
@@ -163,9 +163,7 @@ class TestMainWindow : public QObject {
 
   void contextMenuAddsATargetThatIsTrackedWithinThreeSweeps() {
     MainWindow w(freshOptions());
-    w.resize(1400, 900);
-    w.show();
-    waitReady(w);
+    showAndWait(w);
     runUntil(w, 10.0);
     EcdisView* v = w.chart();
     const auto& f = w.history().latest().frame;
@@ -201,9 +199,7 @@ class TestMainWindow : public QObject {
 
   void plotsReceiveDataAndExport() {
     MainWindow w(freshOptions());
-    w.resize(1400, 900);
-    w.show();
-    waitReady(w);
+    showAndWait(w);
     runUntil(w, 120.0);
     QTRY_VERIFY_WITH_TIMEOUT(w.ownPlots()->pointCount() > 200, kTimeoutMs);
     QVERIFY(!w.history().latest().frame.tracks.empty());
@@ -272,12 +268,10 @@ class TestMainWindow : public QObject {
 
   void arrowKeysAlterTheOrderedCourseAndSpeed() {
     MainWindow w(freshOptions());
-    w.resize(1400, 900);
-    w.show();
-    waitReady(w);
+    showAndWait(w);
     runUntil(w, 5.0);
     const sim::SimFrame f = w.history().latest().frame;  // a copy: latest() moves on
-    QVERIFY(!f.order.has_value());  // the default scenario's first order is at 610 s
+    QVERIFY(!f.order.has_value());                       // the default scenario's first order is at 610 s
     const double course = bearingOf(f.estimate.x[est::drkf::kVelX], f.estimate.x[est::drkf::kVelY]);
     w.chart()->setFocus();
     QTest::keyClick(w.chart(), Qt::Key_Right);

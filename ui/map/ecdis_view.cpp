@@ -54,6 +54,22 @@ struct EcdisView::Local {
   [[nodiscard]] double pxPerMetre() const { return std::sqrt(std::abs(a * d - b * c)); }
 };
 
+QPolygonF EcdisView::ellipse95(const Local& at, double pxx, double pxy, double pyy, int points) {
+  est::Mat<2> P;
+  P << pxx, pxy, pxy, pyy;
+  const Eigen::SelfAdjointEigenSolver<est::Mat<2>> eig(P);
+  const double k = chi2Scale95();
+  const double a = k * std::sqrt(std::max(0.0, eig.eigenvalues()[0]));
+  const double b = k * std::sqrt(std::max(0.0, eig.eigenvalues()[1]));
+  QPolygonF poly;
+  for (int i = 0; i <= points; ++i) {
+    const double th = 2.0 * M_PI * i / points;
+    const est::Vec<2> u = eig.eigenvectors() * est::Vec<2>(a * std::cos(th), b * std::sin(th));
+    poly << at.offset(u[0], u[1]);
+  }
+  return poly;
+}
+
 EcdisView::EcdisView(QWidget* parent) : ChartView(parent) {
   setFocusPolicy(Qt::StrongFocus);
   setMouseTracking(true);
@@ -339,19 +355,9 @@ void EcdisView::paintOwnShip(QPainter& p) {
 
   // 95% position ellipse of the DRKF.
   if (overlay_.showEllipses) {
-    est::Mat<2> P;
-    P << f.estimate.P(dk::kPosX, dk::kPosX), f.estimate.P(dk::kPosX, dk::kPosY),
-        f.estimate.P(dk::kPosY, dk::kPosX), f.estimate.P(dk::kPosY, dk::kPosY);
-    const Eigen::SelfAdjointEigenSolver<est::Mat<2>> eig(P);
-    QPolygonF poly;
-    const double k = chi2Scale95();
-    for (int i = 0; i <= 48; ++i) {
-      const double th = 2.0 * M_PI * i / 48.0;
-      const est::Vec<2> u =
-          eig.eigenvectors() * est::Vec<2>(k * std::sqrt(std::max(0.0, eig.eigenvalues()[0])) * std::cos(th),
-                                           k * std::sqrt(std::max(0.0, eig.eigenvalues()[1])) * std::sin(th));
-      poly << own.offset(u[0], u[1]);
-    }
+    const auto& P = f.estimate.P;
+    const QPolygonF poly =
+        ellipse95(own, P(dk::kPosX, dk::kPosX), P(dk::kPosX, dk::kPosY), P(dk::kPosY, dk::kPosY), 48);
     QColor fill = colour("ellipse");
     fill.setAlpha(live.positionFixUsed ? 40 : 70);
     p.setPen(QPen(colour("ellipse"), live.positionFixUsed ? 1.2 : 2.0));
@@ -467,19 +473,9 @@ void EcdisView::paintTargets(QPainter& p) {
 
     // 95% position ellipse.
     if (overlay_.showEllipses && t.status != track::TrackStatus::Lost) {
-      est::Mat<2> P;
-      P << t.estimate.P(tk::kTgtX, tk::kTgtX), t.estimate.P(tk::kTgtX, tk::kTgtY),
-          t.estimate.P(tk::kTgtY, tk::kTgtX), t.estimate.P(tk::kTgtY, tk::kTgtY);
-      const Eigen::SelfAdjointEigenSolver<est::Mat<2>> eig(P);
-      QPolygonF poly;
-      const double k = chi2Scale95();
-      for (int i = 0; i <= 36; ++i) {
-        const double th = 2.0 * M_PI * i / 36.0;
-        const est::Vec<2> u = eig.eigenvectors() *
-                              est::Vec<2>(k * std::sqrt(std::max(0.0, eig.eigenvalues()[0])) * std::cos(th),
-                                          k * std::sqrt(std::max(0.0, eig.eigenvalues()[1])) * std::sin(th));
-        poly << at.offset(u[0], u[1]);
-      }
+      const auto& P = t.estimate.P;
+      const QPolygonF poly =
+          ellipse95(at, P(tk::kTgtX, tk::kTgtX), P(tk::kTgtX, tk::kTgtY), P(tk::kTgtY, tk::kTgtY), 36);
       QColor fill = c;
       fill.setAlpha(30);
       p.setPen(QPen(c, 0.8));

@@ -82,6 +82,8 @@ class EcdisView : public ChartView {
  private:
   struct Local;  // a grid point's screen position and local metres-to-pixels Jacobian
   [[nodiscard]] Local localAt(double xM, double yM) const;
+  /// The 95% ellipse of a grid position covariance (m^2) around a point, in widget pixels.
+  static QPolygonF ellipse95(const Local& at, double pxx, double pxy, double pyy, int points);
   [[nodiscard]] QColor colour(const char* role) const;
   [[nodiscard]] std::optional<int> trackNear(QPointF p, double tolPx = 14.0) const;
   /// The ordered (or, without an order, the present) true course and speed through the water.

@@ -35,6 +35,18 @@ const Quantity kTargetQuantities[] = {
     {"Target velocity y", "m/s"},
 };
 
+/// Calls f for the samples (with a member tS, in time order) from time t0 on, every stride-th one when
+/// decimating so that about kMaxPoints remain; the last sample is always included.
+template <class Sample, class F>
+void forWindow(const std::vector<Sample>& samples, double t0, bool decimate, F&& f) {
+  auto it = std::lower_bound(samples.begin(), samples.end(), t0,
+                             [](const Sample& s, double t) { return s.tS < t; });
+  const std::size_t n = static_cast<std::size_t>(samples.end() - it);
+  const std::size_t stride = decimate ? std::max<std::size_t>(1, (n + kMaxPoints - 1) / kMaxPoints) : 1;
+  for (std::size_t i = 0; i < n; i += stride) f(it[static_cast<std::ptrdiff_t>(i)]);
+  if (n > 0 && (n - 1) % stride != 0) f(samples.back());
+}
+
 void fitAxes(QChart* chart, const std::vector<QLineSeries*>& series) {
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (const QLineSeries* s : series)
@@ -157,14 +169,7 @@ std::vector<ErrorPlots::Row> ErrorPlots::rows(std::vector<double>* nees, bool de
   if (subject_ == Subject::OwnShip) {
     const auto& own = history_->own();
     const double t0 = window > 0.0 && !own.empty() ? own.back().tS - window : -1e300;
-    auto first =
-        std::lower_bound(own.begin(), own.end(), t0, [](const OwnSample& s, double t) { return s.tS < t; });
-    const std::size_t n = static_cast<std::size_t>(own.end() - first);
-    const std::size_t stride =
-        decimate ? std::max<std::size_t>(1, n / kMaxPoints + (n % kMaxPoints ? 1 : 0)) : 1;
-    for (auto it = first; it < own.end(); it += static_cast<std::ptrdiff_t>(std::min<std::size_t>(
-                                              stride, static_cast<std::size_t>(own.end() - it)))) {
-      const OwnSample& s = *it;
+    forWindow(own, t0, decimate, [&](const OwnSample& s) {
       Row r{s.tS, 0, 0, 0};
       switch (q) {
         case 0:
@@ -197,20 +202,13 @@ std::vector<ErrorPlots::Row> ErrorPlots::rows(std::vector<double>* nees, bool de
       }
       out.push_back(r);
       if (nees) nees->push_back(s.nees);
-    }
+    });
     return out;
   }
   if (!track_) return out;
   const auto& hist = history_->track(*track_);
   const double t0 = window > 0.0 && !hist.empty() ? hist.back().tS - window : -1e300;
-  auto first =
-      std::lower_bound(hist.begin(), hist.end(), t0, [](const TrackSample& s, double t) { return s.tS < t; });
-  const std::size_t n = static_cast<std::size_t>(hist.end() - first);
-  const std::size_t stride =
-      decimate ? std::max<std::size_t>(1, n / kMaxPoints + (n % kMaxPoints ? 1 : 0)) : 1;
-  for (auto it = first; it < hist.end(); it += static_cast<std::ptrdiff_t>(std::min<std::size_t>(
-                                             stride, static_cast<std::size_t>(hist.end() - it)))) {
-    const TrackSample& s = *it;
+  forWindow(hist, t0, decimate, [&](const TrackSample& s) {
     const double nan = std::nan("");
     Row r{s.tS, 0, 0, 0};
     switch (q) {
@@ -229,7 +227,7 @@ std::vector<ErrorPlots::Row> ErrorPlots::rows(std::vector<double>* nees, bool de
     }
     out.push_back(r);
     if (nees) nees->push_back(s.hasTruth ? s.nees : nan);
-  }
+  });
   return out;
 }
 

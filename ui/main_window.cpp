@@ -55,12 +55,19 @@ QString escape(const std::string& s) {
 }
 }  // namespace
 
+/// One chart load in its thread. Destroying it cancels the load, waits for the thread and removes the
+/// progress bar; a result that arrives for a load that is no longer current is dropped (its id).
 struct MainWindow::Loading {
-  QThread* thread = nullptr;
+  quint64 id = 0;
+  std::unique_ptr<QThread> thread;
   std::atomic<bool> cancel{false};
   std::atomic<int> done{0}, total{0};
-  QProgressBar* bar = nullptr;
+  std::unique_ptr<QProgressBar> bar;
   QTimer poll;
+  ~Loading() {
+    cancel = true;
+    if (thread) thread->wait();
+  }
 };
 
 MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
@@ -120,12 +127,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
                            : enc);
 }
 
-MainWindow::~MainWindow() {
-  if (loading_) {
-    loading_->cancel = true;
-    loading_->thread->wait();
-  }
-}
+MainWindow::~MainWindow() = default;
 
 void MainWindow::buildDocks() {
   const auto dock = [this](const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {
@@ -394,21 +396,16 @@ void MainWindow::loadScenario(const sim::Scenario& scenario, const QString& sour
 }
 
 void MainWindow::openCharts(const QString& path) {
-  if (loading_) {
-    loading_->cancel = true;
-    loading_->thread->wait();
-    statusBar()->removeWidget(loading_->bar);
-    delete loading_->bar;
-    loading_.reset();
-  }
+  loading_.reset();  // cancels and waits for a load still running
   loading_ = std::make_unique<Loading>();
   Loading* l = loading_.get();
-  l->bar = new QProgressBar(this);
+  l->id = ++chartLoads_;
+  l->bar = std::make_unique<QProgressBar>();
   l->bar->setMaximumWidth(200);
   l->bar->setFormat(tr("charts %v/%m"));
-  statusBar()->addPermanentWidget(l->bar);
+  statusBar()->addPermanentWidget(l->bar.get());
   const std::string p = path.toStdString();
-  l->thread = QThread::create([this, l, p, path] {
+  l->thread.reset(QThread::create([this, l, p, path, id = l->id] {
     charts::LoadResult result;
     QString problem;
     try {
@@ -424,13 +421,9 @@ void MainWindow::openCharts(const QString& path) {
     }
     QMetaObject::invokeMethod(
         this,
-        [this, result = std::move(result), problem, path] {
-          if (loading_) {
-            loading_->thread->wait();
-            statusBar()->removeWidget(loading_->bar);
-            loading_->bar->deleteLater();
-            loading_.reset();
-          }
+        [this, result = std::move(result), problem, path, id] {
+          if (!loading_ || loading_->id != id) return;  // superseded by a newer load
+          loading_.reset();
           if (!problem.isEmpty()) {
             reportError(problem);
             return;
@@ -446,7 +439,7 @@ void MainWindow::openCharts(const QString& path) {
           if (!path.startsWith(kBuiltinPrefix)) addRecent(QStringLiteral("recent/charts"), path);
         },
         Qt::QueuedConnection);
-  });
+  }));
   connect(&l->poll, &QTimer::timeout, this, [l] {
     l->bar->setMaximum(std::max(1, l->total.load()));
     l->bar->setValue(l->done.load());

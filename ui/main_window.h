@@ -133,6 +133,7 @@ class MainWindow : public QMainWindow {
   std::vector<GuiTiming> guiTimings_;
   struct Loading;
   std::unique_ptr<Loading> loading_;
+  quint64 chartLoads_ = 0;
 };
 
 }  // namespace reckoner::ui

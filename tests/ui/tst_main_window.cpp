@@ -308,6 +308,13 @@ class TestMainWindow : public QObject {
     w.openCharts(enc);
     QTRY_VERIFY_WITH_TIMEOUT(!w.chartsLoading(), kTimeoutMs);
     QVERIFY2(w.chart()->cells().size() >= 4, qPrintable(w.lastError()));
+    // A load superseded by another before it finishes leaves no trace.
+    w.openCharts(enc);
+    w.openCharts(QStringLiteral("builtin:default"));
+    QTRY_VERIFY_WITH_TIMEOUT(!w.chartsLoading(), kTimeoutMs);
+    QTest::qWait(200);
+    QCOMPARE(w.chart()->cells().size(), std::size_t(1));
+    QCOMPARE(w.chart()->cells().front()->info().name, std::string(resources::kDefaultChart));
   }
 
   void badScenarioFileGivesAClearMessage() {

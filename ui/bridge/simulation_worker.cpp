@@ -117,7 +117,6 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
   sweepCounter_ = 0;
   drComputedAtS_ = -1e9;
   emit loaded(engine_->scenario());
-  stepRequested_ = false;
   // The first frame shows the state at t = 0 + one step, so the picture is never empty.
   stepEngine();
   maybeEmit(true);

@@ -67,7 +67,6 @@ class SimulationWorker : public QObject {
   double targetS_ = 0.0;  // simulated time the clock asks for
   bool inFlight_ = false;
   bool dirty_ = false;
-  bool stepRequested_ = false;
   quint64 sequence_ = 0;
   quint64 generation_ = 0;
   std::optional<double> stopAtS_;

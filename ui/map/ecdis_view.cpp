@@ -300,15 +300,15 @@ void EcdisView::paintOwnShip(QPainter& p) {
 
   // Past track: estimated positions, a dot every minute, the last pastTrackMinutes.
   if (overlay_.showPastTrack) {
-    const auto& own_ = history_->own();
+    const auto& ownHistory = history_->own();
     const double t0 = toSeconds(f.timeUs) - overlay_.pastTrackMinutes * 60.0;
     QPainterPath path;
     bool started = false;
     std::vector<QPointF> marks;
     double nextMark = std::ceil(std::max(0.0, t0) / 60.0) * 60.0;
-    for (auto it = std::lower_bound(own_.begin(), own_.end(), t0,
+    for (auto it = std::lower_bound(ownHistory.begin(), ownHistory.end(), t0,
                                     [](const OwnSample&s, double t) { return s.tS < t; });
-         it != own_.end(); ++it) {
+         it != ownHistory.end(); ++it) {
       const QPointF q = gridToWidget(it->estPos[0], it->estPos[1]);
       if (!started)
         path.moveTo(q);
@@ -414,9 +414,11 @@ void EcdisView::paintOwnShip(QPainter& p) {
 
   // Own-ship symbol: true-scale outline when it is larger than 6 mm, else two concentric circles;
   // the heading line runs to the edge of the screen.
-  const double heading = f.truth.headingRad;  // gyro heading (grid); the display uses the filter's
+  // The heading is the filter's: the direction of its velocity through the water (what the gyro
+  // measures), kept from the last time the ship was moving clearly enough to have one.
   const double hx = x[dk::kVelX], hy = x[dk::kVelY];
-  const double hdg = std::hypot(hx, hy) > 0.3 ? bearingOf(hx, hy) : heading;
+  if (std::hypot(hx, hy) > 0.3) lastHeadingRad_ = bearingOf(hx, hy);
+  const double hdg = lastHeadingRad_;
   const double lengthPx = overlay_.ownLengthM * pxm;
   p.setPen(QPen(ownColour, 2.0));
   p.setBrush(Qt::NoBrush);

@@ -108,6 +108,7 @@ class EcdisView : public ChartView {
   std::optional<QPointF> addTargetTo_;
   std::optional<QPointF> cursor_;
   double appliedRotation_ = 0.0;
+  double lastHeadingRad_ = 0.0;  // grid
   struct PendingOrder {
     double course, speed;  // true course, speed through the water
     quint64 sequence;      // the latest frame when it was given

@@ -62,6 +62,15 @@ void showAndWait(MainWindow& w, QSize size = {1400, 900}) {
   waitReady(w);
 }
 
+void saveShot(QWidget& w, const QString& name);
+
+/// A screenshot of the window once the chart render for the current view has arrived.
+void saveWindowShot(MainWindow& w, const QString& name) {
+  QTRY_VERIFY_WITH_TIMEOUT(w.chart()->renderedGeneration() == w.chart()->requestedGeneration(), kTimeoutMs);
+  QTest::qWait(50);
+  saveShot(w, name);
+}
+
 void saveShot(QWidget& w, const QString& name) {
   QDir().mkpath(QStringLiteral("screenshots"));
   const QString path = QStringLiteral("screenshots/%1.png").arg(name);
@@ -155,7 +164,7 @@ class TestMainWindow : public QObject {
     QVERIFY(w.history().latest().drHorizonS.has_value());
     QVERIFY(!w.sensorPanel()->box(sensors::SensorId::Gps)->isChecked());
     // The ellipse on screen grew with it (pixels of the ellipse's fill colour around own ship).
-    saveShot(w, QStringLiteral("dead-reckoning"));
+    saveWindowShot(w, QStringLiteral("dead-reckoning"));
     w.sensorPanel()->box(sensors::SensorId::Gps)->click();
     runUntil(w, 380.0);
     QTRY_VERIFY_WITH_TIMEOUT(!w.ownShipPanel()->drShown(), kTimeoutMs);
@@ -343,12 +352,9 @@ class TestMainWindow : public QObject {
     w.chart()->setOverlay(o);
     runUntil(w, 900.0);  // GPS is off from 840 s: the ellipse is growing
     QTRY_VERIFY_WITH_TIMEOUT(w.ownPlots()->pointCount() > 500, kTimeoutMs);
-    QTRY_VERIFY_WITH_TIMEOUT(w.chart()->renderedGeneration() == w.chart()->requestedGeneration(), kTimeoutMs);
-    saveShot(w, QStringLiteral("main-window-day"));
+    saveWindowShot(w, QStringLiteral("main-window-day"));
     w.setPalette(charts::Palette::Night);
-    QTRY_VERIFY_WITH_TIMEOUT(w.chart()->renderedGeneration() == w.chart()->requestedGeneration(), kTimeoutMs);
-    QTest::qWait(100);
-    saveShot(w, QStringLiteral("main-window-night"));
+    saveWindowShot(w, QStringLiteral("main-window-night"));
   }
 };
 

@@ -438,6 +438,15 @@ void EcdisView::paintOwnShip(QPainter& p) {
     p.drawEllipse(own.p, r, r);
     p.drawEllipse(own.p, r / 2.0, r / 2.0);
   }
+  // Positioning mode beside the symbol: DR when no position fix is being used.
+  if (!live.positionFixUsed) {
+    QFont font = p.font();
+    font.setPointSizeF(10.0);
+    font.setBold(true);
+    p.setFont(font);
+    p.setPen(colour("danger"));
+    p.drawText(own.p + QPointF(-kSymbolMm * mmPx - 22.0, -kSymbolMm * mmPx / 2.0), QStringLiteral("DR"));
+  }
 }
 
 void EcdisView::paintTargets(QPainter& p) {

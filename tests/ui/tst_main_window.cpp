@@ -142,6 +142,8 @@ class TestMainWindow : public QObject {
     QVERIFY2(turned > 5.0 && turned < 25.0, qPrintable(QString("turned %1 deg in 20 s").arg(turned)));
     runUntil(w, t0 + 140.0);
     const double left = radToDeg(angleDiff(w.history().latest().frame.truth.headingRad, order.headingRad));
+    qInfo("ordered %.2f deg %.3f m/s; turned %.1f deg in the first 20 s; %.2f deg from the order after 140 s",
+          radToDeg(orderedTrue), order.speedMps, turned, left);
     QVERIFY2(std::abs(left) < 5.0, qPrintable(QString("%1 deg from the order").arg(left)));
     const auto& tr = w.history().latest().frame.truth;
     QVERIFY(std::abs(std::hypot(tr.waterVxMps, tr.waterVyMps) - wantSpeed) < 0.3);
@@ -159,6 +161,8 @@ class TestMainWindow : public QObject {
     runUntil(w, 360.0);
     QTRY_VERIFY_WITH_TIMEOUT(w.ownShipPanel()->drShown(), kTimeoutMs);
     const double after = w.history().latest().error95M;
+    qInfo("95%% position error %.1f m with fixes, %.1f m after 300 s without; DR banner: %s", before, after,
+          qPrintable(w.ownShipPanel()->drText()));
     QVERIFY2(after > 3.0 * before, qPrintable(QString("95%% error %1 m -> %2 m").arg(before).arg(after)));
     QVERIFY(w.ownShipPanel()->drText().contains(QStringLiteral("DR")));
     QVERIFY(w.history().latest().drHorizonS.has_value());
@@ -202,6 +206,8 @@ class TestMainWindow : public QObject {
       for (const auto& s : samples)
         if (s.targetId == newId && (firstSeen < 0 || s.tS < firstSeen)) firstSeen = s.tS;
     QVERIFY2(firstSeen > 0.0, "no track on the added target");
+    qInfo("first track on the added target %.1f s (%.1f sweeps) after it was added", firstSeen - addedAt,
+          (firstSeen - addedAt) / sweep);
     QVERIFY2(firstSeen - addedAt <= 3.0 * sweep + 1e-9,
              qPrintable(QString("first track %1 s after adding").arg(firstSeen - addedAt)));
   }
@@ -272,6 +278,7 @@ class TestMainWindow : public QObject {
                         std::abs(first[i].truePos[0] - second[i].truePos[0])});
     }
     QVERIFY2(worst < 1e-6, qPrintable(QString("largest difference %1 m").arg(worst)));
+    qInfo("saved and reopened: largest position difference over 90 s %.3g m", worst);
     QVERIFY(w.lastError().isEmpty());
   }
 

@@ -48,6 +48,7 @@
 #include "sim/nmea_export.h"
 #include "sim/replay.h"
 #include "sim/scenario_run.h"
+#include "sim/seed001.h"
 
 namespace {
 
@@ -67,6 +68,9 @@ constexpr const char* kUsage =
     "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
     "  reckoner-cli compare SCENARIO [--runs N] [--targets 1,2,5,10,20] [--threads K] [--seed N] --out DIR\n"
     "  reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]\n"
+    "  reckoner-cli seed001 [--runs N] [--turn] [--seed N] [--window S] [--pfa P] [--q Q] [--bearing-sd "
+    "DEG]\n"
+    "               [--init paper|two-point]   (seed 001: input-estimation EKF, Monte Carlo per sample)\n"
     "  reckoner-cli validate SCENARIO...\n"
     "  reckoner-cli scenarios\n"
     "SCENARIO is a JSON file (docs/scenarios.md) or builtin:NAME.\n";
@@ -291,6 +295,80 @@ int cmdImo(int argc, char** argv) {
   }
   std::printf("\n%s\n", all ? "all cells pass" : "SOME CELLS FAIL");
   return all ? 0 : 1;
+}
+
+double parseReal(const std::string& option, const std::string& text, double min, double max) {
+  std::size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || used == 0 || !std::isfinite(v) || v < min || v > max)
+    throw UsageError("--" + option + ": expected a number in [" + std::to_string(min) + ", " +
+                     std::to_string(max) + "], got '" + text + "'");
+  return v;
+}
+
+int cmdSeed001(int argc, char** argv) {
+  // --turn is a flag: taken out before the valued options are parsed.
+  bool turn = false;
+  std::vector<char*> rest;
+  for (int i = 0; i < argc; ++i) {
+    if (i >= 2 && std::string(argv[i]) == "--turn")
+      turn = true;
+    else
+      rest.push_back(argv[i]);
+  }
+  const Args a = parseArgs(static_cast<int>(rest.size()), rest.data(), 2,
+                           {"runs", "seed", "window", "pfa", "q", "bearing-sd", "init"});
+  if (!a.positional.empty()) throw UsageError("seed001: unexpected argument '" + a.positional.front() + "'");
+  const auto opt = [&a](const std::string& k) { return a.options.count(k) > 0; };
+  const int runs = opt("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 100;
+  const std::uint64_t seed = opt("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : 1;
+  track::InputEstimationConfig cfg;
+  if (opt("window")) cfg.window = static_cast<int>(parseCount("window", a.options.at("window"), 1, 50));
+  if (opt("pfa")) cfg.falseAlarmProbability = parseReal("pfa", a.options.at("pfa"), 1e-12, 0.5);
+  if (opt("q")) cfg.processNoiseQ = parseReal("q", a.options.at("q"), 0.0, 100.0);
+  if (opt("bearing-sd"))
+    cfg.bearingSdRad = degToRad(parseReal("bearing-sd", a.options.at("bearing-sd"), 1e-6, 30.0));
+  if (opt("init")) {
+    const std::string& i = a.options.at("init");
+    if (i != "paper" && i != "two-point")
+      throw UsageError("--init: expected paper or two-point, got '" + i + "'");
+    cfg.paperInitialCovariance = i == "paper";
+  }
+  sim::Seed001Scenario sc;
+  if (turn) sc.turn = sim::Seed001Scenario::Turn{};
+  std::vector<std::vector<sim::Seed001Sample>> all;
+  for (int r = 0; r < runs; ++r)
+    all.push_back(sim::runSeed001(sc, cfg, seed + static_cast<std::uint64_t>(r)));
+  const auto stats = sim::summariseSeed001(all);
+  std::printf(
+      "seed 001: %d runs, bearing sd %.2f deg, range sd %.0f m, window %d, Pfa %.3g (threshold %.2f), q "
+      "%.3g, "
+      "init %s%s\n",
+      runs, radToDeg(cfg.bearingSdRad), cfg.rangeSdM, cfg.window, cfg.falseAlarmProbability,
+      track::InputEstimationEkf(cfg).threshold(), cfg.processNoiseQ,
+      cfg.paperInitialCovariance ? "paper (eq. 32)" : "two-point",
+      turn ? ", target turns 100->180 deg at 540 s" : "");
+  std::printf("  %-3s %7s %16s %16s %16s %7s %8s %8s %6s\n", "k", "t (s)", "range err % m/r",
+              "course deg m/r", "speed m/s m/r", "within", "mean d", "max d", "det");
+  for (const auto& s : stats)
+    std::printf("  %-3d %7.0f %7.2f %8.2f %7.2f %8.2f %7.2f %8.2f %6.0f%% %8.2f %8.2f %6d\n", s.index,
+                s.meanTS, s.meanRangeErrorPct, s.rmsRangeErrorPct, s.meanCourseErrorDeg, s.rmsCourseErrorDeg,
+                s.meanSpeedErrorMps, s.rmsSpeedErrorMps, 100.0 * s.withinLimits, s.meanD, s.maxD,
+                s.detections);
+  if (turn) {
+    const auto first = sim::firstDetections(all, sc.turn->startS);
+    std::map<int, int> hist;
+    for (int f : first) ++hist[f];
+    std::printf("  first detection at or after 540 s, by sample (0: never):");
+    for (const auto& [k, n] : hist) std::printf(" %d:%d", k, n);
+    std::printf("\n");
+  }
+  return 0;
 }
 
 std::vector<int> parseTargetCounts(const std::string& text) {
@@ -691,6 +769,7 @@ int main(int argc, char** argv) {
     if (cmd == "export") return cmdExport(argc, argv);
     if (cmd == "chart") return cmdChart(argc, argv);
     if (cmd == "scenarios") return cmdScenarios();
+    if (cmd == "seed001") return cmdSeed001(argc, argv);
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {
     std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());

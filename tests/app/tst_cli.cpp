@@ -92,6 +92,13 @@ class TestCli : public QObject {
     QCOMPARE(bad.code, 2);
     QVERIFY(bad.err.contains("needs a radar and a target"));
   }
+  void seed001PrintsTheMonteCarloTable() {
+    const Result r = cli({"seed001", "--runs", "20", "--turn"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("threshold 9.21") && r.out.contains("first detection at or after 540 s"),
+             qPrintable(r.out));
+    QCOMPARE(r.out.count('\n'), 2 + 22 + 1);  // header, samples 2 to 23, detections
+  }
   void exportThenReplay() {
     // GIVEN a run exported as NMEA and radar CSV WHEN replayed THEN ownship.csv and targets.csv carry a
     // utc column and no truth, and summary.json counts the input; a missing file is exit code 2.
@@ -171,6 +178,9 @@ class TestCli : public QObject {
                                      << "unknown built-in scenario 'nope'";
     QTest::newRow("unknown option") << QStringList{"run", "builtin:default", "--fast"}
                                     << "unknown option --fast";
+    QTest::newRow("seed001 bad pfa") << QStringList{"seed001", "--pfa", "2"} << "--pfa: expected a number";
+    QTest::newRow("seed001 bad init")
+        << QStringList{"seed001", "--init", "guess"} << "--init: expected paper or two-point";
   }
   void badInputIsOneLineAndExitCode2() {
     QFETCH(QStringList, args);

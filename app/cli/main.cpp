@@ -49,6 +49,7 @@
 #include "sim/replay.h"
 #include "sim/scenario_run.h"
 #include "sim/seed001.h"
+#include "sim/seed003.h"
 
 namespace {
 
@@ -71,6 +72,8 @@ constexpr const char* kUsage =
     "  reckoner-cli seed001 [--runs N] [--turn] [--seed N] [--window S] [--pfa P] [--q Q] [--bearing-sd "
     "DEG]\n"
     "               [--init paper|two-point]   (seed 001: input-estimation EKF, Monte Carlo per sample)\n"
+    "  reckoner-cli seed003 [--runs N] [--alpha A] [--sweep S] [--noise M] [--seed N]   (alpha-beta-gamma "
+    "2drms)\n"
     "  reckoner-cli validate SCENARIO...\n"
     "  reckoner-cli scenarios\n"
     "SCENARIO is a JSON file (docs/scenarios.md) or builtin:NAME.\n";
@@ -367,6 +370,38 @@ int cmdSeed001(int argc, char** argv) {
     std::printf("  first detection at or after 540 s, by sample (0: never):");
     for (const auto& [k, n] : hist) std::printf(" %d:%d", k, n);
     std::printf("\n");
+  }
+  return 0;
+}
+
+int cmdSeed003(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"runs", "alpha", "sweep", "noise", "seed"});
+  if (!a.positional.empty()) throw UsageError("seed003: unexpected argument '" + a.positional.front() + "'");
+  const auto opt = [&a](const std::string& k) { return a.options.count(k) > 0; };
+  const int runs = opt("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 50;
+  const std::uint64_t seed = opt("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : 1;
+  track::AbgConfig cfg;
+  if (opt("alpha")) cfg.alpha = parseReal("alpha", a.options.at("alpha"), 1e-6, 0.6);
+  sim::Seed003Setup setup;
+  if (opt("sweep")) setup.sweepS = parseReal("sweep", a.options.at("sweep"), 0.1, 600.0);
+  if (opt("noise")) setup.plotSdM = parseReal("noise", a.options.at("noise"), 0.0, 10000.0);
+  const auto [beta, gamma] = track::abgGainsFromAlpha(cfg.alpha);
+  std::printf(
+      "seed 003: alpha %.3f (beta %.4f, gamma %.5f), %d positions every %.1f s, plot noise %.0f m per axis, "
+      "mean over %d runs\n",
+      cfg.alpha, beta, gamma, setup.positions, setup.sweepS, setup.plotSdM, runs);
+  std::printf("  %-26s %14s %14s %14s\n", "case", "observed 2drms", "smoothed 2drms", "predicted 2drms");
+  for (const auto c : {sim::Seed003Case::NoNoise, sim::Seed003Case::VaryingCourse,
+                       sim::Seed003Case::VaryingCourseAndSpeed}) {
+    sim::Seed003Result sum;
+    for (int r = 0; r < runs; ++r) {
+      const auto one = sim::runSeed003(c, setup, cfg, seed + static_cast<std::uint64_t>(r));
+      sum.observed2drmsM += one.observed2drmsM / runs;
+      sum.smoothed2drmsM += one.smoothed2drmsM / runs;
+      sum.predicted2drmsM += one.predicted2drmsM / runs;
+    }
+    std::printf("  %-26s %12.1f m %12.1f m %12.1f m\n", sim::seed003CaseName(c), sum.observed2drmsM,
+                sum.smoothed2drmsM, sum.predicted2drmsM);
   }
   return 0;
 }
@@ -770,6 +805,7 @@ int main(int argc, char** argv) {
     if (cmd == "chart") return cmdChart(argc, argv);
     if (cmd == "scenarios") return cmdScenarios();
     if (cmd == "seed001") return cmdSeed001(argc, argv);
+    if (cmd == "seed003") return cmdSeed003(argc, argv);
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {
     std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());

@@ -99,6 +99,15 @@ class TestCli : public QObject {
              qPrintable(r.out));
     QCOMPARE(r.out.count('\n'), 2 + 22 + 1);  // header, samples 2 to 23, detections
   }
+  void seed003PrintsThe2drmsTable() {
+    const Result r = cli({"seed003", "--runs", "3", "--alpha", "0.4"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("varying course and speed") && r.out.contains("predicted 2drms"),
+             qPrintable(r.out));
+    const Result bad = cli({"seed003", "--alpha", "0.9"});
+    QCOMPARE(bad.code, 2);
+    QVERIFY(bad.err.contains("--alpha: expected a number"));
+  }
   void exportThenReplay() {
     // GIVEN a run exported as NMEA and radar CSV WHEN replayed THEN ownship.csv and targets.csv carry a
     // utc column and no truth, and summary.json counts the input; a missing file is exit code 2.

@@ -1,0 +1,71 @@
+#include "sim/seed003.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/angles.h"
+#include "common/rng.h"
+
+namespace reckoner::sim {
+
+const char* seed003CaseName(Seed003Case c) {
+  switch (c) {
+    case Seed003Case::NoNoise:
+      return "no noise";
+    case Seed003Case::VaryingCourse:
+      return "varying course";
+    case Seed003Case::VaryingCourseAndSpeed:
+      return "varying course and speed";
+  }
+  return "?";
+}
+
+Seed003Result runSeed003(Seed003Case c, const Seed003Setup& s, const track::AbgConfig& filter,
+                         std::uint64_t seed) {
+  track::AlphaBetaGammaFilter abg(filter);
+  Rng rng(seed, 3);
+  const bool noisy = c != Seed003Case::NoNoise;
+  // Truth integrated in 0.1 s steps: course towards its ordered value at the turn rate, speed towards
+  // its ordered value at the acceleration limit.
+  double x = 0.0, y = 0.0, course = degToRad(200.0), speed = s.speedMps;
+  double orderedCourse = course, orderedSpeed = speed, nextLeg = s.legS;
+  constexpr double kDt = 0.1;
+  double t = 0.0;
+  double sumObs = 0.0, sumSmooth = 0.0, sumPred = 0.0;
+  int nPred = 0;
+  for (int n = 1; n <= s.positions; ++n) {
+    const double tPlot = (n - 1) * s.sweepS;
+    while (t < tPlot - 1e-9) {
+      if (c != Seed003Case::NoNoise && t >= nextLeg) {
+        const double change = degToRad(20.0 + 40.0 * rng.uniform()) * (rng.uniform() < 0.5 ? -1.0 : 1.0);
+        orderedCourse = wrapTwoPi(orderedCourse + change);
+        if (c == Seed003Case::VaryingCourseAndSpeed)
+          orderedSpeed = (6.0 + 12.0 * rng.uniform()) * 1852.0 / 3600.0;
+        nextLeg += s.legS;
+      }
+      const double dc = angleDiff(orderedCourse, course);
+      course = wrapTwoPi(course + std::clamp(dc, -s.turnRateRadPerS * kDt, s.turnRateRadPerS * kDt));
+      speed += std::clamp(orderedSpeed - speed, -s.accelerationMps2 * kDt, s.accelerationMps2 * kDt);
+      x += speed * kDt * std::sin(course);
+      y += speed * kDt * std::cos(course);
+      t += kDt;
+    }
+    const double ox = x + (noisy ? rng.normal(0.0, s.plotSdM) : 0.0);
+    const double oy = y + (noisy ? rng.normal(0.0, s.plotSdM) : 0.0);
+    abg.update(fromSeconds(tPlot), ox, oy);
+    const auto& e = abg.estimate();
+    sumObs += (ox - x) * (ox - x) + (oy - y) * (oy - y);
+    sumSmooth += std::pow(e.smoothedPos[0] - x, 2) + std::pow(e.smoothedPos[1] - y, 2);
+    if (n >= 3) {
+      sumPred += std::pow(e.predictedPos[0] - x, 2) + std::pow(e.predictedPos[1] - y, 2);
+      ++nPred;
+    }
+  }
+  Seed003Result r;
+  r.observed2drmsM = 2.0 * std::sqrt(sumObs / s.positions);
+  r.smoothed2drmsM = 2.0 * std::sqrt(sumSmooth / s.positions);
+  r.predicted2drmsM = nPred > 0 ? 2.0 * std::sqrt(sumPred / nPred) : 0.0;
+  return r;
+}
+
+}  // namespace reckoner::sim

@@ -45,6 +45,7 @@
 #include "metrics/track_stats.h"
 #include "resources/embedded.h"
 #include "sim/comparison.h"
+#include "sim/manoeuvre_trial.h"
 #include "sim/nmea_export.h"
 #include "sim/replay.h"
 #include "sim/scenario_run.h"
@@ -74,6 +75,8 @@ constexpr const char* kUsage =
     "               [--init paper|two-point]   (seed 001: input-estimation EKF, Monte Carlo per sample)\n"
     "  reckoner-cli seed003 [--runs N] [--alpha A] [--sweep S] [--noise M] [--seed N]   (alpha-beta-gamma "
     "2drms)\n"
+    "  reckoner-cli manoeuvre-trial [--runs N] [--turn DEG] [--speed-change KN] [--window S] [--pfa P]\n"
+    "               [--seed N]   (radar-rate detection delay and false alarms: input estimation and IMM)\n"
     "  reckoner-cli validate SCENARIO...\n"
     "  reckoner-cli scenarios\n"
     "SCENARIO is a JSON file (docs/scenarios.md) or builtin:NAME.\n";
@@ -403,6 +406,69 @@ int cmdSeed003(int argc, char** argv) {
     std::printf("  %-26s %12.1f m %12.1f m %12.1f m\n", sim::seed003CaseName(c), sum.observed2drmsM,
                 sum.smoothed2drmsM, sum.predicted2drmsM);
   }
+  return 0;
+}
+
+int cmdManoeuvreTrial(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"runs", "turn", "speed-change", "window", "pfa", "seed", "q"});
+  if (!a.positional.empty())
+    throw UsageError("manoeuvre-trial: unexpected argument '" + a.positional.front() + "'");
+  const auto opt = [&a](const std::string& k) { return a.options.count(k) > 0; };
+  const int runs = opt("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 100;
+  const std::uint64_t seed = opt("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : 1;
+  sim::ManoeuvreTrial trial;
+  if (opt("turn")) trial.turnRad = degToRad(parseReal("turn", a.options.at("turn"), -180.0, 180.0));
+  if (opt("speed-change"))
+    trial.speedChangeMps =
+        parseReal("speed-change", a.options.at("speed-change"), -30.0, 30.0) * 1852.0 / 3600.0;
+  track::InputEstimationConfig ie;
+  ie.bearingSdRad = trial.bearingSdRad;
+  ie.rangeSdM = trial.rangeSdM;
+  ie.window = 15;  // 30 s at 2 s sweeps (seed 001's s = 2 spans 160 s at its 80 s pings)
+  ie.processNoiseQ = 1e-4;
+  ie.falseAlarmProbability = 1e-4;  // tested every sweep: 1800 overlapping windows an hour
+  if (opt("window")) ie.window = static_cast<int>(parseCount("window", a.options.at("window"), 1, 50));
+  if (opt("pfa")) ie.falseAlarmProbability = parseReal("pfa", a.options.at("pfa"), 1e-12, 0.5);
+  if (opt("q")) ie.processNoiseQ = parseReal("q", a.options.at("q"), 0.0, 100.0);
+  track::ImmConfig imm;
+  imm.bearingSdRad = trial.bearingSdRad;
+  imm.rangeSdM = trial.rangeSdM;
+  const bool manoeuvres = trial.turnRad != 0.0 || trial.speedChangeMps != 0.0;
+  if (!manoeuvres) trial.durationS = 3600.0;
+  int ieWithin = 0, immWithin = 0, ieFalse = 0, immFalse = 0;
+  double ieDelay = 0.0, immDelay = 0.0, straightS = 0.0;
+  for (int r = 0; r < runs; ++r) {
+    const auto o = sim::runManoeuvreTrial(trial, ie, imm, seed + static_cast<std::uint64_t>(r));
+    ieFalse += o.ieFalseAlarms;
+    immFalse += o.immFalseAlarms;
+    straightS += o.straightS;
+    if (o.ieDelayS && *o.ieDelayS <= 60.0) {
+      ++ieWithin;
+      ieDelay += *o.ieDelayS;
+    }
+    if (o.immDelayS && *o.immDelayS <= 60.0) {
+      ++immWithin;
+      immDelay += *o.immDelayS;
+    }
+  }
+  std::printf("manoeuvre trial: %d runs, sweep %.1f s, range sd %.0f m, bearing sd %.2f deg; ", runs,
+              trial.sweepS, trial.rangeSdM, radToDeg(trial.bearingSdRad));
+  if (manoeuvres)
+    std::printf("turn %.0f deg at %.1f deg/s, speed change %.1f kn, from %.0f s\n", radToDeg(trial.turnRad),
+                radToDeg(trial.turnRateRadPerS), trial.speedChangeMps * 3600.0 / 1852.0,
+                trial.manoeuvreStartS);
+  else
+    std::printf("straight, %.0f h in all\n", straightS / 3600.0);
+  std::printf("  %-38s %16s %18s %16s\n", "tracker", "flagged <= 60 s", "mean delay (those)",
+              "false alarms/h");
+  const auto row = [&](const char* name, int within, double delay, int falseAlarms) {
+    std::printf("  %-38s %15.0f%% %16.1f s %16.2f\n", name, 100.0 * within / runs,
+                within ? delay / within : 0.0, falseAlarms / (straightS / 3600.0));
+  };
+  char ieName[64];
+  std::snprintf(ieName, sizeof ieName, "EKF + input estimation (s = %d)", ie.window);
+  row(ieName, ieWithin, ieDelay, ieFalse);
+  row("IMM (CV + CT)", immWithin, immDelay, immFalse);
   return 0;
 }
 
@@ -806,6 +872,7 @@ int main(int argc, char** argv) {
     if (cmd == "scenarios") return cmdScenarios();
     if (cmd == "seed001") return cmdSeed001(argc, argv);
     if (cmd == "seed003") return cmdSeed003(argc, argv);
+    if (cmd == "manoeuvre-trial") return cmdManoeuvreTrial(argc, argv);
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {
     std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());

@@ -108,6 +108,12 @@ class TestCli : public QObject {
     QCOMPARE(bad.code, 2);
     QVERIFY(bad.err.contains("--alpha: expected a number"));
   }
+  void manoeuvreTrialPrintsBothTrackers() {
+    const Result r = cli({"manoeuvre-trial", "--runs", "5", "--turn", "30"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.contains("EKF + input estimation (s = 15)") && r.out.contains("IMM (CV + CT)"),
+             qPrintable(r.out));
+  }
   void exportThenReplay() {
     // GIVEN a run exported as NMEA and radar CSV WHEN replayed THEN ownship.csv and targets.csv carry a
     // utc column and no truth, and summary.json counts the input; a missing file is exit code 2.

@@ -424,6 +424,20 @@ void readTracker(Fields& top, sim::Scenario& s) {
   tr.dangerCpaM =
       nmToMetres(f.numberOr("danger_cpa_nm", metresToNm(tr.dangerCpaM), Fields::Check::NonNegative));
   tr.dangerTcpaS = 60.0 * f.numberOr("danger_tcpa_min", tr.dangerTcpaS / 60.0, Fields::Check::NonNegative);
+  if (const JsonValue* ie = f.get("input_estimation")) {
+    Fields g(top.file(), *ie, f.pathOf("input_estimation"));
+    const JsonValue& w = g.require("window");
+    if (!w.isNumber() || w.number < 1 || w.number > 100 || std::floor(w.number) != w.number)
+      g.fail(w, g.pathOf("window"), "must be an integer in [1, 100] (radar updates)");
+    tr.inputEstimationWindow = static_cast<int>(w.number);
+    if (const JsonValue* p = g.get("false_alarm_probability")) {
+      tr.inputEstimationPfa =
+          g.checkedNumber(*p, g.pathOf("false_alarm_probability"), Fields::Check::Positive);
+      if (!(tr.inputEstimationPfa < 1.0))
+        g.fail(*p, g.pathOf("false_alarm_probability"), "must lie in (0, 1)");
+    }
+    g.finish();
+  }
   f.finish();
 }
 
@@ -752,6 +766,12 @@ std::string writeScenario(const sim::Scenario& s) {
   }
   w.key("danger_cpa_nm").value(metresToNm(t.dangerCpaM), kExact);
   w.key("danger_tcpa_min").value(t.dangerTcpaS / 60.0, kExact);
+  if (t.inputEstimationWindow > 0) {
+    w.key("input_estimation").beginObject();
+    w.key("window").value(t.inputEstimationWindow);
+    w.key("false_alarm_probability").value(t.inputEstimationPfa, kExact);
+    w.endObject();
+  }
   w.endObject();
   w.endObject();
   return w.str() + "\n";

@@ -68,6 +68,8 @@ track::TrackManagerConfig trackManagerConfigFor(const TrackerSpec& t, double swe
   c.sweepPeriodS = sweepPeriodS;
   c.dangerCpaM = t.dangerCpaM;
   c.dangerTcpaS = t.dangerTcpaS;
+  c.inputEstimationWindow = t.inputEstimationWindow;
+  c.inputEstimationPfa = t.inputEstimationPfa;
   return c;
 }
 

@@ -71,6 +71,8 @@ struct TrackerSpec {
   std::vector<track::AcquisitionZone> zones;  ///< empty: the whole picture
   double dangerCpaM = 1852.0;
   double dangerTcpaS = 720.0;
+  int inputEstimationWindow = 0;  ///< radar updates per input-estimation window; 0: off
+  double inputEstimationPfa = 1e-4;
 };
 
 /// The track manager configuration a scenario implies (sweep period from the radar).

@@ -136,6 +136,7 @@ TrackSnapshot SimulationEngine::snapshotOf(const track::Track& t, TimeUs time, d
   s.status = t.status;
   s.dangerous = t.dangerous;
   s.manual = t.manual;
+  s.manoeuvring = t.manoeuvring;
   s.initiatedUs = t.initiatedUs;
   s.estimate = manager_->beliefAt(t, time);
   s.kinematics = track::kinematicsOf(s.estimate, convergence);

@@ -22,6 +22,7 @@ struct TrackSnapshot {
   track::TrackStatus status = track::TrackStatus::Tentative;
   bool dangerous = false;
   bool manual = false;
+  bool manoeuvring = false;  ///< input estimation's manoeuvre flag (when enabled)
   TimeUs initiatedUs = 0;
   est::ttkf::Belief estimate;  ///< predicted to the snapshot time (lost: at its last plot)
   track::TrackKinematics kinematics;

@@ -35,7 +35,8 @@ std::string InputEstimationConfig::check() const {
   return {};
 }
 
-InputEstimationEkf::InputEstimationEkf(const InputEstimationConfig& config) : config_(config) {
+InputEstimationEkf::InputEstimationEkf(const InputEstimationConfig& config)
+    : config_(config), window_(config.window) {
   if (const std::string p = config.check(); !p.empty()) throw std::invalid_argument("input estimation: " + p);
   threshold_ = est::chiSquareQuantile(1.0 - config.falseAlarmProbability, 2.0);
 }
@@ -90,7 +91,7 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
     step.manoeuvring = manoeuvring_;
     return step;
   }
-  WindowEntry entry;
+  InputWindow<rp::kStateDim>::Entry entry;
   entry.Phi = rp::transition(dt);
   entry.G = rp::inputGain(dt);
   est::Gaussian<rp::kStateDim> g = *belief_;
@@ -121,48 +122,26 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
   entry.innovation = step.update.innovation;
   const Eigen::LDLT<est::Mat<2>> ldlt(entry.S);
   entry.W = ldlt.solve(entry.H * prior).transpose();  // K = P H^T S^-1 (S and P symmetric)
-  window_.push_back(entry);
-  while (static_cast<int>(window_.size()) > config_.window) window_.pop_front();
+  window_.push(entry);
   estimateInput(step);
   step.manoeuvring = manoeuvring_;
   return step;
 }
 
 void InputEstimationEkf::estimateInput(InputEstimationStep& step) {
-  if (static_cast<int>(window_.size()) < config_.window) return;
-  // Eqs. 17 to 19 with the filter's own response to the input: C(i) is d(predicted state error)/du at
-  // step i of the window, C(first) = G(first), C(i+1) = Phi(i+1) (I - W(i) H(i)) C(i) + G(i+1); the
-  // innovation bias is Psi(i) u with Psi(i) = H(i) C(i).
-  const rp::Covariance I = rp::Covariance::Identity();
-  est::MatRC<rp::kStateDim, 2> C = window_.front().G;
-  est::Mat<2> A = est::Mat<2>::Zero();  // Psi^T S^-1 Psi
-  est::Vec<2> b = est::Vec<2>::Zero();  // Psi^T S^-1 y
-  for (std::size_t i = 0; i < window_.size(); ++i) {
-    const WindowEntry& e = window_[i];
-    if (i > 0) C = (e.Phi * (I - window_[i - 1].W * window_[i - 1].H) * C + e.G).eval();
-    const est::MatRC<2, 2> Psi = e.H * C;
-    const Eigen::LDLT<est::Mat<2>> Sldlt(e.S);  // eq. 23: weighted by the inverse innovation covariance
-    A += Psi.transpose() * Sldlt.solve(Psi);
-    b += Psi.transpose() * Sldlt.solve(e.innovation);
-  }
-  const Eigen::LDLT<est::Mat<2>> Aldlt(A);
-  if (!est::ldltPositiveDefinite(Aldlt)) return;
-  const est::Vec<2> u = Aldlt.solve(b);                        // eq. 23
-  const est::Mat<2> L = Aldlt.solve(est::Mat<2>::Identity());  // eq. 24
+  // Eqs. 17 to 29 (docs/manoeuvres.md for the exact innovation bias and the S weight).
+  const auto e = window_.estimate();
+  if (!e.tested) return;
   step.tested = true;
-  step.u = u;
-  step.d = u.dot(A * u);  // eq. 25: u^T L^-1 u
-  if (!std::isfinite(step.d)) return;
-  if (step.d < threshold_) {
+  step.u = e.u;
+  step.d = e.d;
+  if (e.d < threshold_) {
     manoeuvring_ = false;  // the input is no longer significant: the manoeuvre has ended
     return;
   }
-  // Eqs. 28 and 29: the filtered state at the end of the window carries (I - W H) C u of the input.
-  const WindowEntry& last = window_.back();
-  const est::MatRC<rp::kStateDim, 2> M = (I - last.W * last.H) * C;
   est::Gaussian<rp::kStateDim> g = *belief_;
-  g.x += M * u;
-  g.P += M * L * M.transpose();
+  g.x += e.M * e.u;
+  g.P += e.M * e.L * e.M.transpose();
   est::symmetrise(g.P);
   if (!g.x.allFinite() || !g.P.allFinite()) return;
   belief_ = g;

@@ -6,13 +6,13 @@
 // chi-square threshold for the chosen false-alarm probability, and then corrects the state by M u and
 // the covariance by M L M^T. The manoeuvre ends when the estimate is no longer significant.
 // Deviations from the printed equations, with reasons, are in docs/manoeuvres.md.
-#include <deque>
 #include <optional>
 #include <string>
 
 #include "common/time.h"
 #include "estimation/models/relative_polar.h"
 #include "estimation/update_report.h"
+#include "tracking/input_window.h"
 
 namespace reckoner::track {
 
@@ -62,14 +62,6 @@ class InputEstimationEkf {
   [[nodiscard]] const InputEstimationConfig& config() const { return config_; }
 
  private:
-  struct WindowEntry {
-    rp::Covariance Phi;              // transition into this step
-    est::MatRC<rp::kStateDim, 2> G;  // input gain of that transition
-    est::MatRC<2, rp::kStateDim> H;
-    est::MatRC<rp::kStateDim, 2> W;  // Kalman gain
-    est::Mat<2> S;
-    est::Vec<2> innovation;
-  };
   void estimateInput(InputEstimationStep& step);
 
   InputEstimationConfig config_;
@@ -80,7 +72,7 @@ class InputEstimationEkf {
     double bearingRad, rangeM, observerXM, observerYM;
   };
   std::optional<Previous> previous_;
-  std::deque<WindowEntry> window_;
+  InputWindow<rp::kStateDim> window_;
   bool manoeuvring_ = false;
 };
 

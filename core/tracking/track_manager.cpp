@@ -64,6 +64,8 @@ const char* trackEventName(TrackEvent::Kind k) {
       return "cancelled";
     case K::Dangerous:
       return "dangerous";
+    case K::Manoeuvre:
+      return "manoeuvre";
     case K::CapacityWarning:
       return "capacity_warning";
     case K::CapacityFull:
@@ -81,6 +83,10 @@ bool AcquisitionZone::contains(double rangeM, double trueBearingRad) const {
 
 std::string TrackManagerConfig::check() const {
   if (capacity == 0) return "capacity must be positive";
+  if (inputEstimationWindow < 0 || inputEstimationWindow > 100)
+    return "input estimation window must lie in [0, 100]";
+  if (inputEstimationWindow > 0 && !(inputEstimationPfa > 0.0 && inputEstimationPfa < 1.0))
+    return "input estimation false-alarm probability must lie in (0, 1)";
   if (!(capacityWarningFraction > 0.0 && capacityWarningFraction <= 1.0))
     return "capacity warning fraction must lie in (0, 1]";
   if (confirmSweeps < 1 || confirmSweeps > 32 || confirmHits < 1 || confirmHits > confirmSweeps)
@@ -121,6 +127,8 @@ TrackManager::TrackManager(const TrackManagerConfig& config)
     : config_(config), ctx_(std::make_shared<const TtkfContext>(config.filter)), assocGate_(ctx_->radarGate) {
   if (const std::string problem = config.check(); !problem.empty())
     throw std::invalid_argument("track manager: " + problem);
+  if (config.inputEstimationWindow > 0)
+    inputThreshold_ = est::chiSquareQuantile(1.0 - config.inputEstimationPfa, 2.0);
   tracks_.reserve(std::min<std::size_t>(config.capacity, 4096));
 }
 
@@ -168,8 +176,10 @@ void TrackManager::addPlot(const GridPlot& plot, int tag) {
 }
 
 bool TrackManager::applyPlot(Track& t, const GridPlot& plot, int tag) {
-  t.lastRadar = t.filter.updateRadar(plot);
+  Ttkf::RadarDetail detail;
+  t.lastRadar = t.filter.updateRadar(plot, config_.inputEstimationWindow > 0 ? &detail : nullptr);
   if (!t.lastRadar.applied()) return false;
+  if (config_.inputEstimationWindow > 0) estimateInput(t, plot.timeUs, detail);
   ++t.radarUpdates;
   ++counters_.plotsAssociated;
   t.seenThisSweep = true;
@@ -178,6 +188,38 @@ bool TrackManager::applyPlot(Track& t, const GridPlot& plot, int tag) {
   t.recentTags[static_cast<std::size_t>(t.tagCount % static_cast<int>(t.recentTags.size()))] = tag;
   ++t.tagCount;
   return true;
+}
+
+void TrackManager::estimateInput(Track& t, TimeUs time, const Ttkf::RadarDetail& detail) {
+  // Seed 001's input estimation around the TTKF (docs/manoeuvres.md): one window entry per radar
+  // update. Between radar updates the own-ship feed also updates the filter; its effect on the
+  // target's response to the input is neglected (it conditions the own-ship states).
+  const TimeUs dtUs = time - t.lastRadarUs;
+  const double dt = toSeconds(dtUs);
+  t.lastRadarUs = time;
+  if (dtUs <= 0) return;
+  InputWindow<tk::kStateDim>::Entry e;
+  e.Phi = t.filter.transition(dtUs);
+  e.G.setZero();
+  e.G(tk::kTgtX, 0) = e.G(tk::kTgtY, 1) = 0.5 * dt * dt;
+  e.G(tk::kTgtVx, 0) = e.G(tk::kTgtVy, 1) = dt;
+  e.H = detail.H;
+  e.S = t.lastRadar.S;
+  e.innovation = t.lastRadar.innovation;
+  const Eigen::LDLT<est::Mat<2>> ldlt(e.S);
+  e.W = ldlt.solve(e.H * detail.priorP).transpose();
+  t.inputWindow.push(e);
+  const auto est = t.inputWindow.estimate();
+  if (!est.tested) return;
+  t.lastD = est.d;
+  if (est.d < inputThreshold_) {
+    t.manoeuvring = false;
+    return;
+  }
+  if (!t.filter.correct(est.M * est.u, est.M * est.L * est.M.transpose())) return;
+  t.inputWindow.clear();
+  if (!t.manoeuvring) event(TrackEvent::Kind::Manoeuvre, time, t.id);
+  t.manoeuvring = true;
 }
 
 void TrackManager::associateKnown(const GridPlot& plot, int tag) {
@@ -214,6 +256,8 @@ std::optional<int> TrackManager::startTrack(const OwnShipInput& own, const GridP
     return std::nullopt;  // degenerate geometry (a plot on own ship)
   }
   Track t(nextId_++, std::move(*filter));
+  t.inputWindow = InputWindow<tk::kStateDim>(std::max(1, config_.inputEstimationWindow));
+  t.lastRadarUs = plot.timeUs;
   t.manual = manual;
   t.initiatedUs = plot.timeUs;
   t.lastPlotUs = plot.timeUs;

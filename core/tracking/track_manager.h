@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tracking/cpa.h"
+#include "tracking/input_window.h"
 #include "tracking/ttkf.h"
 
 namespace reckoner::track {
@@ -52,6 +53,10 @@ struct TrackManagerConfig {
   double sweepPeriodS = 2.0;
   double dangerCpaM = 1852.0;  ///< 1 NM
   double dangerTcpaS = 720.0;  ///< 12 min
+  /// Input estimation on every track (seed 001 around the TTKF, docs/manoeuvres.md): the window in
+  /// radar updates (0: off) and the false-alarm probability per window.
+  int inputEstimationWindow = 0;
+  double inputEstimationPfa = 1e-4;
   /// Empty if valid, else the first problem.
   [[nodiscard]] std::string check() const;
 };
@@ -71,6 +76,10 @@ struct Track {
   bool seenThisSweep = false;
   int radarUpdates = 0;
   est::UpdateReport<2> lastRadar;
+  InputWindow<est::ttkf::kStateDim> inputWindow{1};  ///< input estimation (when enabled)
+  TimeUs lastRadarUs = -1;                           ///< time of the last applied radar update
+  bool manoeuvring = false;                          ///< input estimation's flag
+  double lastD = 0.0;                                ///< its last statistic d(u)
   est::ttkf::Belief lastUpdate;      ///< right after the last radar update: a lost track is shown here
   std::array<int, 10> recentTags{};  ///< tags of the last plots used (ring)
   int tagCount = 0;
@@ -89,6 +98,7 @@ struct TrackEvent {
     Removed,          ///< a lost track's hold time is over
     Cancelled,        ///< by the user
     Dangerous,        ///< CPA and TCPA both under the limits (rising edge)
+    Manoeuvre,        ///< input estimation declared a manoeuvre (rising edge of the flag)
     CapacityWarning,  ///< the number of tracks reached the warning level (rising edge)
     CapacityFull,     ///< a plot was not acquired because the bank is full (once per sweep)
   };
@@ -160,6 +170,7 @@ class TrackManager {
   void associateRound(TrackStatus status, std::vector<char>& taken);
   void associateKnown(const GridPlot& plot, int tag);
   bool applyPlot(Track& t, const GridPlot& plot, int tag);
+  void estimateInput(Track& t, TimeUs time, const Ttkf::RadarDetail& detail);
   std::optional<int> startTrack(const OwnShipInput& own, const GridPlot& plot, int tag, bool manual);
   bool inZones(const GridPlot& plot) const;
   void updateDanger(Track& t, TimeUs now);
@@ -167,6 +178,7 @@ class TrackManager {
 
   TrackManagerConfig config_;
   std::shared_ptr<const TtkfContext> ctx_;
+  double inputThreshold_ = 0.0;
   double assocGate_;
   std::vector<Track> tracks_;
   std::vector<Pending> pending_;

@@ -160,7 +160,7 @@ est::UpdateReport<4> Ttkf::replaceOwnShipMarginal(const OwnShipInput& own) {
   return rep;
 }
 
-est::UpdateReport<2> Ttkf::updateRadar(const GridPlot& plot) {
+est::UpdateReport<2> Ttkf::updateRadar(const GridPlot& plot, RadarDetail* detail) {
   est::UpdateReport<2> rep;
   if (!predictTo(plot.timeUs)) {
     rep.status =
@@ -173,7 +173,21 @@ est::UpdateReport<2> Ttkf::updateRadar(const GridPlot& plot) {
     return rep;
   }
   const est::Mat<2> R = est::Vec<2>(plot.rangeVarM2, plot.bearingVarRad2).asDiagonal();
+  if (detail) {
+    detail->priorP = belief_.P;
+    detail->H = model.jacobian(belief_.x);
+  }
   return est::update(belief_, model, est::Vec<2>(plot.rangeM, plot.bearingRad), R, ctx_->radarGate);
+}
+
+bool Ttkf::correct(const tk::State& dx, const tk::Covariance& dP) {
+  tk::Belief b = belief_;
+  b.x += dx;
+  b.P += dP;
+  est::symmetrise(b.P);
+  if (!b.x.allFinite() || !b.P.allFinite()) return false;
+  belief_ = b;
+  return true;
 }
 
 }  // namespace reckoner::track

@@ -79,8 +79,19 @@ class Ttkf {
   /// Predicts to own.timeUs and feeds the DRKF output (see OwnShipFeed). The report's innovation is
   /// DRKF minus TTKF own ship, its S their summed covariances.
   est::UpdateReport<4> feedOwnShip(const OwnShipInput& own);
-  /// Predicts to the plot's time and applies range and azimuth (gated).
-  est::UpdateReport<2> updateRadar(const GridPlot& plot);
+  /// What input estimation needs of a radar update besides its report.
+  struct RadarDetail {
+    tk::Covariance priorP;           ///< predicted covariance at the plot's time
+    est::MatRC<2, tk::kStateDim> H;  ///< the measurement Jacobian there
+  };
+  /// Predicts to the plot's time and applies range and azimuth (gated). detail, if given, receives
+  /// the prior covariance and the Jacobian.
+  est::UpdateReport<2> updateRadar(const GridPlot& plot, RadarDetail* detail = nullptr);
+  /// Adds a correction to the belief (input estimation: x += M u, P += M L M'); false and unchanged
+  /// when the result is not finite.
+  bool correct(const tk::State& dx, const tk::Covariance& dP);
+  /// The transition over dt (dense), from the shared context.
+  [[nodiscard]] const tk::Covariance& transition(TimeUs dt) const { return ctx_->discrete(dt).Phi.dense(); }
 
   [[nodiscard]] const tk::Belief& belief() const { return belief_; }
   [[nodiscard]] TimeUs timeUs() const { return timeUs_; }

@@ -546,7 +546,9 @@ void EcdisView::paintTargets(QPainter& p) {
         }
     }
     p.setPen(c);
-    p.drawText(at.p + QPointF(r + 3, -r - 2), QString::number(t.trackId));
+    // Label: the track number, and M while input estimation flags a manoeuvre.
+    p.drawText(at.p + QPointF(r + 3, -r - 2),
+               t.manoeuvring ? QStringLiteral("%1 M").arg(t.trackId) : QString::number(t.trackId));
   }
 }
 

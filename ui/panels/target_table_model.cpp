@@ -86,6 +86,7 @@ QVariant TargetTableModel::data(const QModelIndex& index, int role) const {
     case Status: {
       QString s = QString::fromLatin1(track::trackStatusName(t.status));
       if (t.dangerous) s += QStringLiteral(" DANGER");
+      if (t.manoeuvring) s += QStringLiteral(" MANOEUVRE");
       if (t.manual) s += QStringLiteral(" (manual)");
       return s;
     }

@@ -91,6 +91,10 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
   });
   connect(view_, &EcdisView::orderRequested, controller_, &SimulationController::orderOwnShip);
   connect(view_, &EcdisView::addTargetRequested, controller_, &SimulationController::addTarget);
+  // A target steered from the chart turns at 1 deg/s and changes speed at 0.05 m/s^2, like a ship.
+  connect(view_, &EcdisView::steerTargetRequested, this, [this](int target, double course, double speed) {
+    controller_->orderTarget(target, course, speed, 0.017453292519943295, 0.05);
+  });
   connect(view_, &EcdisView::acquireRequested, controller_, &SimulationController::acquireAt);
   connect(view_, &EcdisView::cancelTrackRequested, controller_, &SimulationController::cancelTrack);
   connect(view_, &EcdisView::trackSelected, this, &MainWindow::selectTrack);

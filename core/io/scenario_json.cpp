@@ -299,7 +299,9 @@ void readMotion(Fields& f, sim::VesselMotionSpec& o, TimeUs durationUs) {
         const double headingDeg =
             g.checkedNumber(heading, g.pathOf("heading_deg"), Fields::Check::NonNegative);
         if (headingDeg >= 360.0) g.fail(heading, g.pathOf("heading_deg"), "must lie in [0, 360)");
-        ev.order = sim::HelmOrder{degToRad(headingDeg), g.number("speed_mps", Fields::Check::NonNegative)};
+        ev.order = sim::HelmOrder{degToRad(headingDeg), g.number("speed_mps", Fields::Check::NonNegative),
+                                  degToRad(g.numberOr("turn_rate_dps", 0.0, Fields::Check::NonNegative)),
+                                  g.numberOr("acceleration_mps2", 0.0, Fields::Check::NonNegative)};
         g.finish();
       }
       if (!ev.setVelocityMps && !ev.turnRateRadPerS && !ev.order)
@@ -619,6 +621,10 @@ void writeMotion(JsonWriter& w, const sim::VesselMotionSpec& m) {
       w.key("order").beginObject();
       w.key("heading_deg").value(degrees360(e.order->headingRad), kExact);
       w.key("speed_mps").value(e.order->speedMps, kExact);
+      if (e.order->turnRateRadPerS > 0.0)
+        w.key("turn_rate_dps").value(radToDeg(e.order->turnRateRadPerS), kExact);
+      if (e.order->accelerationMps2 > 0.0)
+        w.key("acceleration_mps2").value(e.order->accelerationMps2, kExact);
       w.endObject();
     }
     w.endObject();

@@ -17,8 +17,9 @@ std::string checkMotion(const VesselMotionSpec& m) {
   for (const auto& e : m.schedule) {
     if (e.order && (e.setVelocityMps || e.turnRateRadPerS))
       return "schedule: an order cannot be combined with velocity_mps or turn_rate_dps";
-    if (e.order && (!std::isfinite(e.order->headingRad) || !nonNegative(e.order->speedMps)))
-      return "schedule: order needs a finite heading and a speed >= 0";
+    if (e.order && (!std::isfinite(e.order->headingRad) || !nonNegative(e.order->speedMps) ||
+                    !nonNegative(e.order->turnRateRadPerS) || !nonNegative(e.order->accelerationMps2)))
+      return "schedule: order needs a finite heading, a speed >= 0 and rates >= 0";
   }
   return {};
 }

@@ -18,8 +18,10 @@ namespace reckoner::sim {
 /// A helm order: the ship turns towards the heading at no more than the vessel's turn-rate limit and
 /// changes speed at no more than its acceleration limit (what a watch officer orders from the bridge).
 struct HelmOrder {
-  double headingRad = 0.0;  ///< grid heading through the water, [0, 2 pi)
-  double speedMps = 0.0;    ///< speed through the water, >= 0
+  double headingRad = 0.0;        ///< grid heading through the water, [0, 2 pi)
+  double speedMps = 0.0;          ///< speed through the water, >= 0
+  double turnRateRadPerS = 0.0;   ///< > 0: turn at this rate instead of the vessel's limit
+  double accelerationMps2 = 0.0;  ///< > 0: change speed at this rate instead of the vessel's limit
   friend bool operator==(const HelmOrder&, const HelmOrder&) = default;
 };
 

@@ -285,12 +285,33 @@ SimFrame SimulationEngine::step() {
 void SimulationEngine::orderOwnShip(const HelmOrder& order) {
   KinematicEvent e;
   e.timeUs = commandTimeUs();
-  e.order = HelmOrder{wrapTwoPi(order.headingRad), std::max(0.0, order.speedMps)};
+  e.order = order;
+  e.order->headingRad = wrapTwoPi(order.headingRad);
+  e.order->speedMps = std::max(0.0, order.speedMps);
   if (!std::isfinite(e.order->headingRad) || !std::isfinite(e.order->speedMps)) return;
   if (!truth_.overrideFrom(e)) return;
   auto& events = scenario_.ownShip.schedule;
   while (!events.empty() && events.back().timeUs >= e.timeUs) events.pop_back();
   events.push_back(e);
+}
+
+bool SimulationEngine::orderTarget(int targetId, const HelmOrder& order) {
+  KinematicEvent e;
+  e.timeUs = commandTimeUs();
+  e.order = order;
+  e.order->headingRad = wrapTwoPi(order.headingRad);
+  e.order->speedMps = std::max(0.0, order.speedMps);
+  if (!std::isfinite(e.order->headingRad) || !std::isfinite(e.order->speedMps)) return false;
+  for (std::size_t i = 0; i < scenario_.targets.size(); ++i) {
+    TargetSpec& t = scenario_.targets[i];
+    if (t.id != targetId || t.appearUs > timeUs_) continue;
+    if (!targets_[i].overrideFrom(e)) return false;
+    auto& events = t.motion.schedule;
+    while (!events.empty() && events.back().timeUs >= e.timeUs) events.pop_back();
+    events.push_back(e);
+    return true;
+  }
+  return false;
 }
 
 void SimulationEngine::setSensorPower(SensorId id, bool on) {

@@ -86,6 +86,8 @@ class SimulationEngine {
   // seed, reproduces this run.
   /// A helm order for own ship (grid heading through the water, speed through the water >= 0).
   void orderOwnShip(const HelmOrder& order);
+  /// A helm order for a target (its id); false if there is no such target (present now).
+  bool orderTarget(int targetId, const HelmOrder& order);
   /// Powers an own-ship sensor on or off (ignored for a sensor that is not fitted).
   void setSensorPower(sensors::SensorId id, bool on);
   void setSpeedlogMode(sensors::SpeedlogMode mode);

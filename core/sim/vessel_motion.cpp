@@ -118,12 +118,14 @@ void VesselMotionModel::substep(Motion& m, TimeUs dtUs, bool noisy) {
     const double heading =
         speed > kHeadingMinSpeedMps ? bearingOf(m.scheduledVel[0], m.scheduledVel[1]) : m.headingRad;
     const double turn = angleDiff(m.order->headingRad, heading);
-    const double maxTurn = spec_.maxTurnRateRadPerS * dt;
-    const double newHeading =
-        heading + (spec_.maxTurnRateRadPerS > 0.0 ? std::clamp(turn, -maxTurn, maxTurn) : turn);
+    const double rate = m.order->turnRateRadPerS > 0.0 ? m.order->turnRateRadPerS : spec_.maxTurnRateRadPerS;
+    const double accel =
+        m.order->accelerationMps2 > 0.0 ? m.order->accelerationMps2 : spec_.maxAccelerationMps2;
+    const double maxTurn = rate * dt;
+    const double newHeading = heading + (rate > 0.0 ? std::clamp(turn, -maxTurn, maxTurn) : turn);
     const double dv = m.order->speedMps - speed;
-    const double maxDv = spec_.maxAccelerationMps2 * dt;
-    const double newSpeed = speed + (spec_.maxAccelerationMps2 > 0.0 ? std::clamp(dv, -maxDv, maxDv) : dv);
+    const double maxDv = accel * dt;
+    const double newSpeed = speed + (accel > 0.0 ? std::clamp(dv, -maxDv, maxDv) : dv);
     const std::array<double, 2> next{newSpeed * std::sin(newHeading), newSpeed * std::cos(newHeading)};
     if (dt > 0.0) m.rampAccel = {(next[0] - before[0]) / dt, (next[1] - before[1]) / dt};
     m.scheduledVel = m.commanded = next;

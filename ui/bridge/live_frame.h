@@ -37,7 +37,8 @@ struct TrackSample {
   bool hasTruth = false;
   std::array<double, 2> estPos{}, estVel{}, sdPos{}, sdVel{};  ///< grid, target absolute
   std::array<double, 2> truePos{}, trueVel{};
-  double nees = 0.0;  ///< 4 dof: target position and velocity
+  double nees = 0.0;         ///< 4 dof: target position and velocity
+  bool manoeuvring = false;  ///< input estimation's flag at this sweep end
 };
 
 /// A radar plot placed on the chart (relative to the estimated own-ship position, as a radar does).

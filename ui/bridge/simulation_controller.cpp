@@ -61,6 +61,12 @@ void SimulationController::runTo(double tS, double rate) {
 void SimulationController::orderOwnShip(double trueHeadingRad, double speedMps) {
   post([w = worker_, trueHeadingRad, speedMps] { w->orderOwnShip(trueHeadingRad, speedMps); });
 }
+void SimulationController::orderTarget(int targetId, double trueHeadingRad, double speedMps,
+                                       double turnRateRadPerS, double accelerationMps2) {
+  post([w = worker_, targetId, trueHeadingRad, speedMps, turnRateRadPerS, accelerationMps2] {
+    w->orderTarget(targetId, trueHeadingRad, speedMps, turnRateRadPerS, accelerationMps2);
+  });
+}
 void SimulationController::setSensorPower(sensors::SensorId id, bool on) {
   post([w = worker_, id, on] { w->setSensorPower(id, on); });
 }

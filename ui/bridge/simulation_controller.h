@@ -21,6 +21,8 @@ class SimulationController : public QObject {
   /// Runs at `rate` (< 0: as fast as possible) until the simulated time tS, then pauses there.
   void runTo(double tS, double rate);
   void orderOwnShip(double trueHeadingRad, double speedMps);
+  void orderTarget(int targetId, double trueHeadingRad, double speedMps, double turnRateRadPerS,
+                   double accelerationMps2);
   void setSensorPower(sensors::SensorId id, bool on);
   void setSpeedlogMode(sensors::SpeedlogMode mode);
   void setRadarPower(bool on);

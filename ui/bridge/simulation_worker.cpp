@@ -65,6 +65,7 @@ TrackSample trackSampleOf(const sim::TrackSnapshot& t, const sim::SweepSnapshot&
   s.tS = toSeconds(sweep.timeUs);
   s.trackId = t.trackId;
   s.targetId = t.targetId;
+  s.manoeuvring = t.manoeuvring;
   const auto& x = t.estimate.x;
   const auto& P = t.estimate.P;
   s.estPos = {x[tk::kTgtX], x[tk::kTgtY]};
@@ -309,6 +310,16 @@ void SimulationWorker::orderOwnShip(double trueHeadingRad, double speedMps) {
   const auto& p = pending_.frame.truth.position;
   const double gamma = engine_->frame().gridInfo(p).convergenceRad;
   engine_->orderOwnShip(sim::HelmOrder{wrapTwoPi(trueHeadingRad - gamma), std::max(0.0, speedMps)});
+}
+
+void SimulationWorker::orderTarget(int targetId, double trueHeadingRad, double speedMps,
+                                   double turnRateRadPerS, double accelerationMps2) {
+  if (!engine_) return;
+  const double gamma = engine_->frame().gridInfo(pending_.frame.truth.position).convergenceRad;
+  const sim::HelmOrder order{wrapTwoPi(trueHeadingRad - gamma), std::max(0.0, speedMps), turnRateRadPerS,
+                             accelerationMps2};
+  if (!engine_->orderTarget(targetId, order))
+    emit failed(QStringLiteral("target %1 cannot be steered (not in the simulation now)").arg(targetId));
 }
 
 void SimulationWorker::setSensorPower(sensors::SensorId id, bool on) {

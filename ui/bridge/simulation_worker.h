@@ -33,6 +33,9 @@ class SimulationWorker : public QObject {
   void frameConsumed();
   /// Helm order: true heading (radians) and speed through the water (m/s).
   void orderOwnShip(double trueHeadingRad, double speedMps);
+  /// Helm order for a simulated target: true course, speed, turn rate and acceleration limits.
+  void orderTarget(int targetId, double trueHeadingRad, double speedMps, double turnRateRadPerS,
+                   double accelerationMps2);
   void setSensorPower(sensors::SensorId id, bool on);
   void setSpeedlogMode(sensors::SpeedlogMode mode);
   void setRadarPower(bool on);

@@ -615,7 +615,12 @@ void EcdisView::paintReadouts(QPainter& p) {
     lines << QStringLiteral("EBL %1°").arg(radToDeg(*overlay_.eblBearingRad), 5, 'f', 1, QChar('0'));
   if (overlay_.vrmRangeM)
     lines << QStringLiteral("VRM %1 NM").arg(metresToNm(*overlay_.vrmRangeM), 0, 'f', 2);
-  if (addTargetFrom_)
+  if (addTargetFrom_ && steerTarget_)
+    lines << QStringLiteral(
+                 "Steer target %1: move to set its new vector (%2 min), click to order, Esc to cancel")
+                 .arg(*steerTarget_)
+                 .arg(overlay_.vectorMinutes);
+  else if (addTargetFrom_)
     lines << QStringLiteral("New target: move to set its vector (%1 min), click to place, Esc to cancel")
                  .arg(overlay_.vectorMinutes);
   if (lines.isEmpty()) return;
@@ -648,8 +653,14 @@ void EcdisView::mousePressEvent(QMouseEvent* e) {
   if (e->button() == Qt::LeftButton && addTargetFrom_) {
     const geo::GridPoint to = widgetToGrid(e->position());
     const double s = overlay_.vectorMinutes * 60.0;
-    emit addTargetRequested(addTargetFrom_->xM, addTargetFrom_->yM, (to.xM - addTargetFrom_->xM) / s,
-                            (to.yM - addTargetFrom_->yM) / s);
+    const double vx = (to.xM - addTargetFrom_->xM) / s, vy = (to.yM - addTargetFrom_->yM) / s;
+    if (steerTarget_ && frame_) {
+      const double gamma = frame_->gridInfo(*addTargetFrom_).convergenceRad;
+      emit steerTargetRequested(*steerTarget_, wrapTwoPi(bearingOf(vx, vy) + gamma), std::hypot(vx, vy));
+    } else {
+      emit addTargetRequested(addTargetFrom_->xM, addTargetFrom_->yM, vx, vy);
+    }
+    steerTarget_.reset();
     addTargetFrom_.reset();
     addTargetTo_.reset();
     update();
@@ -729,6 +740,22 @@ QMenu* EcdisView::buildContextMenu(QPointF at) {
         ->setObjectName(QStringLiteral("cancelTrack"));
     menu->addAction(tr("Select track %1").arg(id), this, [this, id] { setSelectedTrack(id); })
         ->setObjectName(QStringLiteral("selectTrack"));
+    // Simulation control: give the target this track follows a new course and speed (drag its vector).
+    const auto& tracks = history_->latest().frame.tracks;
+    const auto it =
+        std::find_if(tracks.begin(), tracks.end(), [id](const auto& tr) { return tr.trackId == id; });
+    if (it != tracks.end() && it->targetId >= 0) {
+      const int target = it->targetId;
+      const geo::GridPoint from{it->estimate.x[est::ttkf::kTgtX], it->estimate.x[est::ttkf::kTgtY]};
+      menu->addAction(tr("Steer target %1 (simulation)…").arg(target), this,
+                      [this, target, from] {
+                        steerTarget_ = target;
+                        addTargetFrom_ = from;
+                        addTargetTo_.reset();
+                        update();
+                      })
+          ->setObjectName(QStringLiteral("steerTarget"));
+    }
   }
   menu->addSeparator();
   menu->addAction(tr("Steer towards here"), this, [this, g] {
@@ -769,6 +796,7 @@ void EcdisView::contextMenuEvent(QContextMenuEvent* e) {
 
 void EcdisView::keyPressEvent(QKeyEvent* e) {
   if (e->key() == Qt::Key_Escape && addTargetFrom_) {
+    steerTarget_.reset();
     addTargetFrom_.reset();
     addTargetTo_.reset();
     update();

@@ -59,11 +59,14 @@ class EcdisView : public ChartView {
   /// The context menu for a widget point (tests trigger its actions).
   QMenu* buildContextMenu(QPointF at);
   [[nodiscard]] bool addingTarget() const { return addTargetFrom_.has_value(); }
+  [[nodiscard]] bool steeringTarget() const { return steerTarget_.has_value(); }
 
  signals:
   /// Helm order from the mouse or keyboard: true heading, speed through the water.
   void orderRequested(double trueHeadingRad, double speedMps);
   void addTargetRequested(double xM, double yM, double vxMps, double vyMps);
+  /// Steer a simulated target (its truth id): true course and speed over ground.
+  void steerTargetRequested(int targetId, double trueCourseRad, double speedMps);
   void acquireRequested(double xM, double yM);
   void cancelTrackRequested(int trackId);
   void trackSelected(std::optional<int> trackId);
@@ -106,6 +109,7 @@ class EcdisView : public ChartView {
   std::optional<QPointF> handleDrag_;            // where the handle is being dragged
   std::optional<geo::GridPoint> addTargetFrom_;  // add-target mode: the target's start
   std::optional<QPointF> addTargetTo_;
+  std::optional<int> steerTarget_;  // steer-target mode: the target's truth id (addTargetFrom_: its track)
   std::optional<QPointF> cursor_;
   double appliedRotation_ = 0.0;
   double lastHeadingRad_ = 0.0;  // grid

@@ -148,8 +148,8 @@ class TestSimulationEngine : public QObject {
   }
   void operatorCommandsAreRecordedSoTheSavedScenarioRepeatsTheRun() {
     // GIVEN the default scenario WHEN an operator orders a new course, switches GPS off, the log to
-    // bottom lock, the radar off and on, adds a target and extends the run THEN the scenario written
-    // afterwards, read back and run with the same seed, gives the same run.
+    // bottom lock, the radar off and on, adds a target, steers a target and extends the run THEN the
+    // scenario written afterwards, read back and run with the same seed, gives the same run.
     const Scenario original = test::builtinScenario("default");
     SimulationEngine live(original, original.seed);
     std::vector<SimFrame> liveFrames;
@@ -173,6 +173,8 @@ class TestSimulationEngine : public QObject {
     stepTo(130);
     live.setRadarPower(true);
     live.orderOwnShip(HelmOrder{degToRad(90.0), 6.0});
+    QVERIFY(live.orderTarget(1, HelmOrder{degToRad(300.0), 3.0, degToRad(1.0), 0.05}));
+    QVERIFY(!live.orderTarget(99, HelmOrder{0.0, 1.0}));
     stepTo(1800);
     QVERIFY(live.finished());
     QVERIFY(live.extendTo(1850 * kMicrosPerSecond));

@@ -75,8 +75,9 @@ constexpr const char* kUsage =
     "               [--init paper|two-point]   (seed 001: input-estimation EKF, Monte Carlo per sample)\n"
     "  reckoner-cli seed003 [--runs N] [--alpha A] [--sweep S] [--noise M] [--seed N]   (alpha-beta-gamma "
     "2drms)\n"
-    "  reckoner-cli manoeuvre-trial [--runs N] [--turn DEG] [--speed-change KN] [--window S] [--pfa P]\n"
-    "               [--seed N]   (radar-rate detection delay and false alarms: input estimation and IMM)\n"
+    "  reckoner-cli manoeuvre-report [--runs N] [--turn DEG | --speed-change KN] [--seed N]\n"
+    "               (four trackers at radar rates: detection delay, false alarms, RMSE, PCRB ratio, p95 "
+    "errors)\n"
     "  reckoner-cli validate SCENARIO...\n"
     "  reckoner-cli scenarios\n"
     "SCENARIO is a JSON file (docs/scenarios.md) or builtin:NAME.\n";
@@ -409,66 +410,130 @@ int cmdSeed003(int argc, char** argv) {
   return 0;
 }
 
-int cmdManoeuvreTrial(int argc, char** argv) {
-  const Args a = parseArgs(argc, argv, 2, {"runs", "turn", "speed-change", "window", "pfa", "seed", "q"});
+/// Root mean square of the finite values of v at the indices where keep(t) holds.
+template <class Keep>
+double rmsWhere(const std::vector<std::vector<double>>& runs, const std::vector<double>& tS, Keep keep) {
+  double sum = 0.0;
+  long n = 0;
+  for (const auto& v : runs)
+    for (std::size_t i = 0; i < v.size() && i < tS.size(); ++i)
+      if (keep(tS[i]) && std::isfinite(v[i])) {
+        sum += v[i] * v[i];
+        ++n;
+      }
+  return n ? std::sqrt(sum / static_cast<double>(n)) : std::nan("");
+}
+
+/// 95th percentile over the runs of v at the sweep nearest to time t.
+double p95At(const std::vector<std::vector<double>>& runs, const std::vector<double>& tS, double t) {
+  std::size_t k = 0;
+  while (k + 1 < tS.size() && tS[k] < t) ++k;
+  std::vector<double> x;
+  for (const auto& v : runs)
+    if (k < v.size() && std::isfinite(v[k])) x.push_back(v[k]);
+  if (x.empty()) return std::nan("");
+  std::sort(x.begin(), x.end());
+  return x[std::min(x.size() - 1,
+                    static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(x.size()))) - 1)];
+}
+
+int cmdManoeuvreReport(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"runs", "turn", "speed-change", "seed"});
   if (!a.positional.empty())
-    throw UsageError("manoeuvre-trial: unexpected argument '" + a.positional.front() + "'");
+    throw UsageError("manoeuvre-report: unexpected argument '" + a.positional.front() + "'");
   const auto opt = [&a](const std::string& k) { return a.options.count(k) > 0; };
   const int runs = opt("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 100;
   const std::uint64_t seed = opt("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : 1;
-  sim::ManoeuvreTrial trial;
-  if (opt("turn")) trial.turnRad = degToRad(parseReal("turn", a.options.at("turn"), -180.0, 180.0));
-  if (opt("speed-change"))
-    trial.speedChangeMps =
-        parseReal("speed-change", a.options.at("speed-change"), -30.0, 30.0) * 1852.0 / 3600.0;
-  track::InputEstimationConfig ie;
-  ie.bearingSdRad = trial.bearingSdRad;
-  ie.rangeSdM = trial.rangeSdM;
-  ie.window = 15;  // 30 s at 2 s sweeps (seed 001's s = 2 spans 160 s at its 80 s pings)
-  ie.processNoiseQ = 1e-4;
-  ie.falseAlarmProbability = 1e-4;  // tested every sweep: 1800 overlapping windows an hour
-  if (opt("window")) ie.window = static_cast<int>(parseCount("window", a.options.at("window"), 1, 50));
-  if (opt("pfa")) ie.falseAlarmProbability = parseReal("pfa", a.options.at("pfa"), 1e-12, 0.5);
-  if (opt("q")) ie.processNoiseQ = parseReal("q", a.options.at("q"), 0.0, 100.0);
-  track::ImmConfig imm;
-  imm.bearingSdRad = trial.bearingSdRad;
-  imm.rangeSdM = trial.rangeSdM;
-  const bool manoeuvres = trial.turnRad != 0.0 || trial.speedChangeMps != 0.0;
-  if (!manoeuvres) trial.durationS = 3600.0;
-  int ieWithin = 0, immWithin = 0, ieFalse = 0, immFalse = 0;
-  double ieDelay = 0.0, immDelay = 0.0, straightS = 0.0;
-  for (int r = 0; r < runs; ++r) {
-    const auto o = sim::runManoeuvreTrial(trial, ie, imm, seed + static_cast<std::uint64_t>(r));
-    ieFalse += o.ieFalseAlarms;
-    immFalse += o.immFalseAlarms;
-    straightS += o.straightS;
-    if (o.ieDelayS && *o.ieDelayS <= 60.0) {
-      ++ieWithin;
-      ieDelay += *o.ieDelayS;
+  std::vector<sim::ManoeuvreTrial> cases;
+  if (opt("turn") || opt("speed-change")) {
+    sim::ManoeuvreTrial c;
+    if (opt("turn")) c.turnRad = degToRad(parseReal("turn", a.options.at("turn"), -180.0, 180.0));
+    if (opt("speed-change"))
+      c.speedChangeMps =
+          parseReal("speed-change", a.options.at("speed-change"), -30.0, 30.0) * 1852.0 / 3600.0;
+    cases.push_back(c);
+  } else {
+    for (const double turn : {10.0, 30.0, 90.0}) {
+      sim::ManoeuvreTrial c;
+      c.turnRad = degToRad(turn);
+      cases.push_back(c);
     }
-    if (o.immDelayS && *o.immDelayS <= 60.0) {
-      ++immWithin;
-      immDelay += *o.immDelayS;
+    for (const double dv : {5.0, -5.0}) {
+      sim::ManoeuvreTrial c;
+      c.speedChangeMps = dv * 1852.0 / 3600.0;
+      cases.push_back(c);
+    }
+    sim::ManoeuvreTrial straight;
+    straight.durationS = 3600.0;
+    cases.push_back(straight);
+  }
+  const sim::ManoeuvreTrial base;
+  std::printf(
+      "manoeuvre report: %d runs per case; radar every %.1f s, range sd %.0f m, bearing sd %.2f deg; target "
+      "at 3 NM, 12 kn; manoeuvres from %.0f s (turns at 1 deg/s, speed at 0.1 m/s^2)\n",
+      runs, base.sweepS, base.rangeSdM, radToDeg(base.bearingSdRad), base.manoeuvreStartS);
+  std::printf(
+      "  flag: first rise within 60 s of the start (STCW: 10 deg or 5 kn noticed within a minute); RMSE of "
+      "position before (60 s to start), during, and 2 min after; /PCRB: RMSE over the bound's sd along the "
+      "truth; p95 course and speed errors 1 and 3 min after the end (IMO MSC.192(79) times)\n");
+  for (const auto& c : cases) {
+    const sim::TrackerConfigs cfg = sim::radarRateTrackers(c);
+    std::array<std::vector<std::vector<double>>, sim::kTrackerKinds> pos, crs, spd;
+    std::array<int, sim::kTrackerKinds> within{}, falseAlarms{};
+    std::array<double, sim::kTrackerKinds> delaySum{};
+    std::vector<std::vector<double>> bound;
+    std::vector<double> tS;
+    double straightS = 0.0;
+    for (int r = 0; r < runs; ++r) {
+      const auto run = sim::runManoeuvreTrial(c, cfg, seed + static_cast<std::uint64_t>(r));
+      tS = run.tS;
+      bound.push_back(run.pcrbPosM);
+      straightS += run.straightS;
+      for (int k = 0; k < sim::kTrackerKinds; ++k) {
+        const auto& s = run.trackers[static_cast<std::size_t>(k)];
+        pos[k].push_back(s.posErrM);
+        crs[k].push_back(s.courseErrRad);
+        spd[k].push_back(s.speedErrMps);
+        falseAlarms[k] += s.falseAlarms;
+        if (s.delayS && *s.delayS <= 60.0) {
+          ++within[k];
+          delaySum[k] += *s.delayS;
+        }
+      }
+    }
+    const double start = c.manoeuvreStartS, end = c.manoeuvreEndS();
+    if (c.manoeuvres())
+      std::printf("\n%s %+.0f%s (ends at %.0f s)\n", c.turnRad != 0.0 ? "turn" : "speed change",
+                  c.turnRad != 0.0 ? radToDeg(c.turnRad) : c.speedChangeMps * 3600.0 / 1852.0,
+                  c.turnRad != 0.0 ? " deg" : " kn", end);
+    else
+      std::printf("\nstraight (%.0f h in all)\n", straightS / 3600.0);
+    std::printf("  %-24s %8s %8s %8s %9s %9s %9s %8s %8s %9s %9s %9s %9s\n", "tracker", "flag<=60", "delay",
+                "FA/h", "RMSE bef", "RMSE dur", "RMSE aft", "/PCRB b", "/PCRB a", "crs95 1m", "spd95 1m",
+                "crs95 3m", "spd95 3m");
+    const auto before = [&](double t) { return t >= 60.0 && (!c.manoeuvres() || t < start); };
+    const auto during = [&](double t) { return c.manoeuvres() && t >= start && t <= end; };
+    const auto after = [&](double t) { return c.manoeuvres() && t > end && t <= end + 120.0; };
+    const double pcrbBefore = rmsWhere(bound, tS, before), pcrbAfter = rmsWhere(bound, tS, after);
+    for (int k = 0; k < sim::kTrackerKinds; ++k) {
+      const bool flags = k == sim::kEkfIe || k == sim::kImm;
+      char flag[16] = "-", delay[16] = "-";
+      if (flags && c.manoeuvres()) {
+        std::snprintf(flag, sizeof flag, "%.0f%%", 100.0 * within[k] / runs);
+        if (within[k]) std::snprintf(delay, sizeof delay, "%.1f s", delaySum[k] / within[k]);
+      }
+      char fa[16] = "-";
+      if (flags) std::snprintf(fa, sizeof fa, "%.2f", falseAlarms[k] / (straightS / 3600.0));
+      const double rb = rmsWhere(pos[k], tS, before), rd = rmsWhere(pos[k], tS, during),
+                   ra = rmsWhere(pos[k], tS, after);
+      std::printf(
+          "  %-24s %8s %8s %8s %7.1f m %7.1f m %7.1f m %8.2f %8.2f %7.2f d %6.2f kn %7.2f d %6.2f kn\n",
+          sim::trackerName(static_cast<sim::TrackerKind>(k)), flag, delay, fa, rb, rd, ra, rb / pcrbBefore,
+          ra / pcrbAfter, radToDeg(p95At(crs[k], tS, end + 60.0)),
+          p95At(spd[k], tS, end + 60.0) * 3600.0 / 1852.0, radToDeg(p95At(crs[k], tS, end + 180.0)),
+          p95At(spd[k], tS, end + 180.0) * 3600.0 / 1852.0);
     }
   }
-  std::printf("manoeuvre trial: %d runs, sweep %.1f s, range sd %.0f m, bearing sd %.2f deg; ", runs,
-              trial.sweepS, trial.rangeSdM, radToDeg(trial.bearingSdRad));
-  if (manoeuvres)
-    std::printf("turn %.0f deg at %.1f deg/s, speed change %.1f kn, from %.0f s\n", radToDeg(trial.turnRad),
-                radToDeg(trial.turnRateRadPerS), trial.speedChangeMps * 3600.0 / 1852.0,
-                trial.manoeuvreStartS);
-  else
-    std::printf("straight, %.0f h in all\n", straightS / 3600.0);
-  std::printf("  %-38s %16s %18s %16s\n", "tracker", "flagged <= 60 s", "mean delay (those)",
-              "false alarms/h");
-  const auto row = [&](const char* name, int within, double delay, int falseAlarms) {
-    std::printf("  %-38s %15.0f%% %16.1f s %16.2f\n", name, 100.0 * within / runs,
-                within ? delay / within : 0.0, falseAlarms / (straightS / 3600.0));
-  };
-  char ieName[64];
-  std::snprintf(ieName, sizeof ieName, "EKF + input estimation (s = %d)", ie.window);
-  row(ieName, ieWithin, ieDelay, ieFalse);
-  row("IMM (CV + CT)", immWithin, immDelay, immFalse);
   return 0;
 }
 
@@ -872,7 +937,7 @@ int main(int argc, char** argv) {
     if (cmd == "scenarios") return cmdScenarios();
     if (cmd == "seed001") return cmdSeed001(argc, argv);
     if (cmd == "seed003") return cmdSeed003(argc, argv);
-    if (cmd == "manoeuvre-trial") return cmdManoeuvreTrial(argc, argv);
+    if (cmd == "manoeuvre-report") return cmdManoeuvreReport(argc, argv);
     throw UsageError("unknown command '" + cmd + "'");
   } catch (const UsageError& e) {
     std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());

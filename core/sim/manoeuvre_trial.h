@@ -1,12 +1,17 @@
 #pragma once
-// Manoeuvre detection at radar rates (issue 6): own ship straight; a target straight, then (optionally)
-// turning by a given angle at a given rate, or changing speed; radar plots every sweep with range and
-// bearing noise. The seed 001 input-estimation EKF and the IMM run on the same plots; the trial
-// reports when each first flags a manoeuvre after it begins, and how often each flags one on a straight
-// run (false alarms, counted as rising edges of the flag).
+// Manoeuvre detection and tracking at radar rates (issue 6): own ship straight; a target straight,
+// then (optionally) turning by a given angle at a given rate, or changing speed; radar plots every
+// sweep with range and bearing noise. Four trackers run on the same plots: the EKF without input
+// estimation, the EKF with seed 001's input estimation, seed 003's alpha-beta-gamma filter and the
+// IMM. Each run reports, per tracker, when its manoeuvre flag first rises after the manoeuvre begins,
+// its false alarms before (rising edges), and its position, course and speed errors at every sweep;
+// and the posterior Cramer-Rao bound of the position along the true trajectory.
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
+#include "tracking/alpha_beta_gamma.h"
 #include "tracking/imm.h"
 #include "tracking/input_estimation.h"
 
@@ -25,15 +30,39 @@ struct ManoeuvreTrial {
   double turnRateRadPerS = 0.017453292519943295;  ///< 1 deg/s
   double speedChangeMps = 0.0;                    ///< speed change; 0: none
   double accelerationMps2 = 0.1;
+  /// White acceleration (m^2/s^3) of the model the PCRB assumes: the EKF's by default (a bound for
+  /// targets that manoeuvre as the model says); 0 for the bound of a truly straight target.
+  double boundProcessNoiseQ = 1e-4;
+  [[nodiscard]] bool manoeuvres() const { return turnRad != 0.0 || speedChangeMps != 0.0; }
+  /// When the manoeuvre is complete (its start plus the turn or speed change at its rate).
+  [[nodiscard]] double manoeuvreEndS() const;
 };
 
-struct ManoeuvreOutcome {
-  std::optional<double> ieDelayS, immDelayS;  ///< first flag at or after the manoeuvre's start
-  int ieFalseAlarms = 0, immFalseAlarms = 0;  ///< rising edges before the manoeuvre's start
-  double straightS = 0.0;                     ///< time before the manoeuvre (or the whole run)
+enum TrackerKind : int { kEkf = 0, kEkfIe, kAbg, kImm, kTrackerKinds };
+const char* trackerName(TrackerKind k);
+
+struct TrackerConfigs {
+  track::InputEstimationConfig ie;  ///< also the plain EKF's (with its false-alarm probability ~0)
+  track::ImmConfig imm;
+  track::AbgConfig abg;
+};
+/// The radar-rate settings used by the trial and the report (docs/manoeuvres.md).
+TrackerConfigs radarRateTrackers(const ManoeuvreTrial& trial);
+
+struct TrackerSeries {
+  std::optional<double> delayS;  ///< first flag at or after the manoeuvre's start (none for abg)
+  int falseAlarms = 0;           ///< rising edges before the manoeuvre's start
+  std::vector<double> posErrM, courseErrRad, speedErrMps;  ///< per sweep (NaN before initialisation)
 };
 
-ManoeuvreOutcome runManoeuvreTrial(const ManoeuvreTrial& trial, const track::InputEstimationConfig& ie,
-                                   const track::ImmConfig& imm, std::uint64_t seed);
+struct ManoeuvreRun {
+  std::vector<double> tS;        ///< sweep times
+  std::vector<double> pcrbPosM;  ///< sqrt of the trace of the position PCRB, per sweep
+  std::array<TrackerSeries, kTrackerKinds> trackers;
+  double straightS = 0.0;  ///< time before the manoeuvre (or the whole run)
+};
+
+ManoeuvreRun runManoeuvreTrial(const ManoeuvreTrial& trial, const TrackerConfigs& configs,
+                               std::uint64_t seed);
 
 }  // namespace reckoner::sim

@@ -108,11 +108,11 @@ class TestCli : public QObject {
     QCOMPARE(bad.code, 2);
     QVERIFY(bad.err.contains("--alpha: expected a number"));
   }
-  void manoeuvreTrialPrintsBothTrackers() {
-    const Result r = cli({"manoeuvre-trial", "--runs", "5", "--turn", "30"});
+  void manoeuvreReportPrintsFourTrackers() {
+    const Result r = cli({"manoeuvre-report", "--runs", "5", "--turn", "30"});
     QCOMPARE(r.code, 0);
-    QVERIFY2(r.out.contains("EKF + input estimation (s = 15)") && r.out.contains("IMM (CV + CT)"),
-             qPrintable(r.out));
+    for (const char* name : {"EKF + input estimation", "alpha-beta-gamma", "IMM (CV + CT)", "/PCRB"})
+      QVERIFY2(r.out.contains(name), qPrintable(r.out));
   }
   void exportThenReplay() {
     // GIVEN a run exported as NMEA and radar CSV WHEN replayed THEN ownship.csv and targets.csv carry a

@@ -7,6 +7,7 @@
 #include "common/angles.h"
 #include "common/rng.h"
 #include "metrics/pcrb.h"
+#include "sim/vessel_motion.h"
 
 namespace reckoner::sim {
 namespace {
@@ -58,32 +59,33 @@ ManoeuvreRun runManoeuvreTrial(const ManoeuvreTrial& m, const TrackerConfigs& co
   ManoeuvreRun out;
   const bool manoeuvres = m.manoeuvres();
   out.straightS = manoeuvres ? m.manoeuvreStartS : m.durationS;
-  // Target truth integrated in 0.1 s steps.
-  double tx = m.targetRangeM * std::sin(m.targetBearingRad),
-         ty = m.targetRangeM * std::cos(m.targetBearingRad);
-  double course = m.targetCourseRad, speed = m.targetSpeedMps;
-  const double finalCourse = wrapTwoPi(m.targetCourseRad + m.turnRad);
-  const double finalSpeed = m.targetSpeedMps + m.speedChangeMps;
-  constexpr double kDt = 0.1;
-  double t = 0.0, lastPlot = 0.0;
+  // Target truth: the simulator's vessel model with one helm order at the manoeuvre's start.
+  VesselMotionSpec spec;
+  spec.initialPosition = {m.targetRangeM * std::sin(m.targetBearingRad),
+                          m.targetRangeM * std::cos(m.targetBearingRad)};
+  spec.initialVelocityMps = {m.targetSpeedMps * std::sin(m.targetCourseRad),
+                             m.targetSpeedMps * std::cos(m.targetCourseRad)};
+  if (manoeuvres) {
+    KinematicEvent e;
+    e.timeUs = fromSeconds(m.manoeuvreStartS);
+    e.order = HelmOrder{wrapTwoPi(m.targetCourseRad + m.turnRad), m.targetSpeedMps + m.speedChangeMps,
+                        m.turnRateRadPerS, m.accelerationMps2};
+    spec.schedule.push_back(e);
+  }
+  VesselMotionModel target(spec, est::GaussMarkov{0.0, 1.0}, Rng(seed, kStreamTargetBase));
+  double lastPlot = 0.0;
   std::array<bool, kTrackerKinds> flag{};
   std::optional<metrics::Pcrb<4, 2>> pcrb;
   const est::Mat<2> R = est::Vec<2>(m.bearingSdRad * m.bearingSdRad, m.rangeSdM * m.rangeSdM).asDiagonal();
   for (int k = 0; k * m.sweepS <= m.durationS + 1e-9; ++k) {
     const double tPlot = k * m.sweepS;
-    while (t < tPlot - 1e-9) {
-      if (manoeuvres && t >= m.manoeuvreStartS) {
-        course = wrapTwoPi(course + std::clamp(angleDiff(finalCourse, course), -m.turnRateRadPerS * kDt,
-                                               m.turnRateRadPerS * kDt));
-        speed += std::clamp(finalSpeed - speed, -m.accelerationMps2 * kDt, m.accelerationMps2 * kDt);
-      }
-      tx += speed * kDt * std::sin(course);
-      ty += speed * kDt * std::cos(course);
-      t += kDt;
-    }
+    target.advanceTo(fromSeconds(tPlot));
+    const VesselTruth& truth = target.state();
+    const double tx = truth.position.xM, ty = truth.position.yM;
+    const double tvx = truth.groundVxMps(), tvy = truth.groundVyMps();
+    const double course = bearingOf(tvx, tvy);
     const double ox = m.ownSpeedMps * tPlot * std::sin(m.ownCourseRad);
     const double oy = m.ownSpeedMps * tPlot * std::cos(m.ownCourseRad);
-    const double tvx = speed * std::sin(course), tvy = speed * std::cos(course);
     const double b = wrapTwoPi(bearingOf(tx - ox, ty - oy) + rng.normal(0.0, m.bearingSdRad));
     const double r = std::hypot(tx - ox, ty - oy) + rng.normal(0.0, m.rangeSdM);
     const TimeUs tu = fromSeconds(tPlot);

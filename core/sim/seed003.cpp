@@ -5,6 +5,7 @@
 
 #include "common/angles.h"
 #include "common/rng.h"
+#include "sim/vessel_motion.h"
 
 namespace reckoner::sim {
 
@@ -25,31 +26,30 @@ Seed003Result runSeed003(Seed003Case c, const Seed003Setup& s, const track::AbgC
   track::AlphaBetaGammaFilter abg(filter);
   Rng rng(seed, 3);
   const bool noisy = c != Seed003Case::NoNoise;
-  // Truth integrated in 0.1 s steps: course towards its ordered value at the turn rate, speed towards
-  // its ordered value at the acceleration limit.
-  double x = 0.0, y = 0.0, course = degToRad(200.0), speed = s.speedMps;
-  double orderedCourse = course, orderedSpeed = speed, nextLeg = s.legS;
-  constexpr double kDt = 0.1;
-  double t = 0.0;
+  // Truth: the simulator's vessel model. Every legS seconds a helm order: a course change of 20 to 60
+  // deg either way, and in the third case also a new speed between 6 and 18 kn, drawn in advance.
+  VesselMotionSpec spec;
+  const double course0 = degToRad(200.0);
+  spec.initialVelocityMps = {s.speedMps * std::sin(course0), s.speedMps * std::cos(course0)};
+  const double durationS = (s.positions - 1) * s.sweepS;
+  double orderedCourse = course0, orderedSpeed = s.speedMps;
+  for (double t = s.legS; c != Seed003Case::NoNoise && t <= durationS; t += s.legS) {
+    const double change = degToRad(20.0 + 40.0 * rng.uniform()) * (rng.uniform() < 0.5 ? -1.0 : 1.0);
+    orderedCourse = wrapTwoPi(orderedCourse + change);
+    if (c == Seed003Case::VaryingCourseAndSpeed)
+      orderedSpeed = (6.0 + 12.0 * rng.uniform()) * 1852.0 / 3600.0;
+    KinematicEvent e;
+    e.timeUs = fromSeconds(t);
+    e.order = HelmOrder{orderedCourse, orderedSpeed, s.turnRateRadPerS, s.accelerationMps2};
+    spec.schedule.push_back(e);
+  }
+  VesselMotionModel target(spec, est::GaussMarkov{0.0, 1.0}, Rng(seed, kStreamTargetBase));
   double sumObs = 0.0, sumSmooth = 0.0, sumPred = 0.0;
   int nPred = 0;
   for (int n = 1; n <= s.positions; ++n) {
     const double tPlot = (n - 1) * s.sweepS;
-    while (t < tPlot - 1e-9) {
-      if (c != Seed003Case::NoNoise && t >= nextLeg) {
-        const double change = degToRad(20.0 + 40.0 * rng.uniform()) * (rng.uniform() < 0.5 ? -1.0 : 1.0);
-        orderedCourse = wrapTwoPi(orderedCourse + change);
-        if (c == Seed003Case::VaryingCourseAndSpeed)
-          orderedSpeed = (6.0 + 12.0 * rng.uniform()) * 1852.0 / 3600.0;
-        nextLeg += s.legS;
-      }
-      const double dc = angleDiff(orderedCourse, course);
-      course = wrapTwoPi(course + std::clamp(dc, -s.turnRateRadPerS * kDt, s.turnRateRadPerS * kDt));
-      speed += std::clamp(orderedSpeed - speed, -s.accelerationMps2 * kDt, s.accelerationMps2 * kDt);
-      x += speed * kDt * std::sin(course);
-      y += speed * kDt * std::cos(course);
-      t += kDt;
-    }
+    target.advanceTo(fromSeconds(tPlot));
+    const double x = target.state().position.xM, y = target.state().position.yM;
     const double ox = x + (noisy ? rng.normal(0.0, s.plotSdM) : 0.0);
     const double oy = y + (noisy ? rng.normal(0.0, s.plotSdM) : 0.0);
     abg.update(fromSeconds(tPlot), ox, oy);

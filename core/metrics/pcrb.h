@@ -29,7 +29,6 @@ class Pcrb {
     J_ += H.transpose() * r.solve(H);
   }
   [[nodiscard]] est::Mat<N> bound() const { return inverse(J_); }
-  [[nodiscard]] const est::Mat<N>& information() const { return J_; }
 
  private:
   static est::Mat<N> inverse(const est::Mat<N>& A) {

@@ -44,7 +44,6 @@ class ImmTracker {
   [[nodiscard]] est::Gaussian<est::ct::kStateDim> combined() const;
   [[nodiscard]] const std::array<double, kModes>& modeProbabilities() const { return mu_; }
   [[nodiscard]] bool manoeuvring() const { return mu_[kCt] > config_.manoeuvreProbability; }
-  [[nodiscard]] TimeUs timeUs() const { return timeUs_; }
 
  private:
   ImmConfig config_;

@@ -211,7 +211,6 @@ void TrackManager::estimateInput(Track& t, TimeUs time, const Ttkf::RadarDetail&
   t.inputWindow.push(e);
   const auto est = t.inputWindow.estimate();
   if (!est.tested) return;
-  t.lastD = est.d;
   if (est.d < inputThreshold_) {
     t.manoeuvring = false;
     return;

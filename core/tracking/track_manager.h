@@ -79,7 +79,6 @@ struct Track {
   InputWindow<est::ttkf::kStateDim> inputWindow{1};  ///< input estimation (when enabled)
   TimeUs lastRadarUs = -1;                           ///< time of the last applied radar update
   bool manoeuvring = false;                          ///< input estimation's flag
-  double lastD = 0.0;                                ///< its last statistic d(u)
   est::ttkf::Belief lastUpdate;      ///< right after the last radar update: a lost track is shown here
   std::array<int, 10> recentTags{};  ///< tags of the last plots used (ring)
   int tagCount = 0;

@@ -25,7 +25,6 @@ struct OwnSample {
   double trueLogBias = 0.0, estLogBias = 0.0;  ///< speedlog error, m/s
   double sdLogBias = 0.0;
   double nees = 0.0;      ///< 11-state NEES against the truth
-  double nees2 = 0.0;     ///< position-only NEES (2 dof)
   double error95M = 0.0;  ///< semi-major axis of the 95% position ellipse
 };
 

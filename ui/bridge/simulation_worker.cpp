@@ -51,9 +51,6 @@ OwnSample ownSampleOf(const sim::SimFrame& f) {
   s.estLogBias = x[kLogBias];
   const State e = x - t;
   s.nees = neesOf<kStateDim>(e, P);
-  est::Mat<2> Pp;
-  Pp << P(kPosX, kPosX), P(kPosX, kPosY), P(kPosY, kPosX), P(kPosY, kPosY);
-  s.nees2 = neesOf<2>(est::Vec<2>(e[kPosX], e[kPosY]), Pp);
   s.error95M = nav::positionError95M(f.estimate);
   return s;
 }

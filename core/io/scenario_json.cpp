@@ -439,6 +439,43 @@ void readTracker(Fields& top, sim::Scenario& s) {
         g.fail(*p, g.pathOf("false_alarm_probability"), "must lie in (0, 1)");
     }
     g.finish();
+    tr.kind = track::TrackerKind::EkfInputEstimation;  // unless "filter" says otherwise
+  }
+  if (const JsonValue* k = f.get("filter")) {
+    const auto kind = k->isString() ? track::trackerKindFromName(k->string) : std::nullopt;
+    if (!kind)
+      f.fail(*k, f.pathOf("filter"),
+             "must be \"ekf\", \"ekf-ie\" (with input estimation), \"abg\" (alpha-beta-gamma) or \"imm\"");
+    tr.kind = *kind;
+  }
+  if (const JsonValue* a = f.get("alpha_beta_gamma")) {
+    Fields g(top.file(), *a, f.pathOf("alpha_beta_gamma"));
+    if (const JsonValue* al = g.get("alpha")) {
+      tr.abg.alpha = g.checkedNumber(*al, g.pathOf("alpha"), Fields::Check::Positive);
+      if (!(tr.abg.alpha <= 0.6)) g.fail(*al, g.pathOf("alpha"), "must lie in (0, 0.6] (seed 003's bound)");
+    }
+    if (const JsonValue* es = g.get("expanding_start"))
+      tr.abg.expandingStart = g.boolean(*es, g.pathOf("expanding_start"));
+    g.finish();
+  }
+  if (const JsonValue* m = f.get("imm")) {
+    Fields g(top.file(), *m, f.pathOf("imm"));
+    auto& c = tr.imm;
+    c.cvAccelQ = g.numberOr("cv_accel_q", c.cvAccelQ, Fields::Check::Positive);
+    c.ctAccelQ = g.numberOr("ct_accel_q", c.ctAccelQ, Fields::Check::Positive);
+    c.ctTurnQ = degToRad(
+        degToRad(g.numberOr("ct_turn_q_deg2", radToDeg(radToDeg(c.ctTurnQ)), Fields::Check::NonNegative)));
+    c.cvSojournS = g.numberOr("cv_sojourn_s", c.cvSojournS, Fields::Check::Positive);
+    c.ctSojournS = g.numberOr("ct_sojourn_s", c.ctSojournS, Fields::Check::Positive);
+    c.initialTurnSdRadPerS = degToRad(
+        g.numberOr("initial_turn_sd_dps", radToDeg(c.initialTurnSdRadPerS), Fields::Check::Positive));
+    if (const JsonValue* mp = g.get("manoeuvre_probability")) {
+      c.manoeuvreProbability =
+          g.checkedNumber(*mp, g.pathOf("manoeuvre_probability"), Fields::Check::Positive);
+      if (!(c.manoeuvreProbability < 1.0))
+        g.fail(*mp, g.pathOf("manoeuvre_probability"), "must lie in (0, 1)");
+    }
+    g.finish();
   }
   f.finish();
 }
@@ -772,12 +809,24 @@ std::string writeScenario(const sim::Scenario& s) {
   }
   w.key("danger_cpa_nm").value(metresToNm(t.dangerCpaM), kExact);
   w.key("danger_tcpa_min").value(t.dangerTcpaS / 60.0, kExact);
-  if (t.inputEstimationWindow > 0) {
-    w.key("input_estimation").beginObject();
-    w.key("window").value(t.inputEstimationWindow);
-    w.key("false_alarm_probability").value(t.inputEstimationPfa, kExact);
-    w.endObject();
-  }
+  w.key("filter").value(track::trackerKindName(t.kind));
+  w.key("input_estimation").beginObject();
+  w.key("window").value(t.inputEstimationWindow);
+  w.key("false_alarm_probability").value(t.inputEstimationPfa, kExact);
+  w.endObject();
+  w.key("alpha_beta_gamma").beginObject();
+  w.key("alpha").value(t.abg.alpha, kExact);
+  w.key("expanding_start").value(t.abg.expandingStart);
+  w.endObject();
+  w.key("imm").beginObject();
+  w.key("cv_accel_q").value(t.imm.cvAccelQ, kExact);
+  w.key("ct_accel_q").value(t.imm.ctAccelQ, kExact);
+  w.key("ct_turn_q_deg2").value(radToDeg(radToDeg(t.imm.ctTurnQ)), kExact);
+  w.key("cv_sojourn_s").value(t.imm.cvSojournS, kExact);
+  w.key("ct_sojourn_s").value(t.imm.ctSojournS, kExact);
+  w.key("initial_turn_sd_dps").value(radToDeg(t.imm.initialTurnSdRadPerS), kExact);
+  w.key("manoeuvre_probability").value(t.imm.manoeuvreProbability, kExact);
+  w.endObject();
   w.endObject();
   w.endObject();
   return w.str() + "\n";

@@ -137,7 +137,8 @@ RunOutcome runOnce(const Scenario& s, std::uint64_t seed, bool timePropagation) 
     out.cplPropUs = microseconds(Clock::now() - t0) / reps;
     nav::Drkf d = dec;
     std::vector<track::Ttkf> filters;
-    for (const auto& t : bank.tracks()) filters.push_back(t.filter);
+    for (const auto& t : bank.tracks())
+      if (const auto* f = t.filter.ttkf()) filters.push_back(*f);
     t0 = Clock::now();
     for (int r = 1; r <= reps; ++r) {
       d.predictTo(dec.timeUs() + r * kMicrosPerSecond);

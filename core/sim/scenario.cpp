@@ -69,8 +69,11 @@ track::TrackManagerConfig trackManagerConfigFor(const TrackerSpec& t, double swe
   c.sweepPeriodS = sweepPeriodS;
   c.dangerCpaM = t.dangerCpaM;
   c.dangerTcpaS = t.dangerTcpaS;
+  c.kind = t.kind;
   c.inputEstimationWindow = t.inputEstimationWindow;
   c.inputEstimationPfa = t.inputEstimationPfa;
+  c.abg = t.abg;
+  c.imm = t.imm;
   return c;
 }
 

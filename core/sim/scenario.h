@@ -73,8 +73,12 @@ struct TrackerSpec {
   std::vector<track::AcquisitionZone> zones;  ///< empty: the whole picture
   double dangerCpaM = 1852.0;
   double dangerTcpaS = 720.0;
-  int inputEstimationWindow = 0;  ///< radar updates per input-estimation window; 0: off
+  /// The filter of every track (track_filter.h) and the parameters of each kind.
+  track::TrackerKind kind = track::TrackerKind::Ekf;
+  int inputEstimationWindow = 15;  ///< ekf-ie: radar updates per input-estimation window
   double inputEstimationPfa = 1e-4;
+  track::AbgConfig abg{0.1, true};
+  track::ImmConfig imm;
 };
 
 /// The track manager configuration a scenario implies (sweep period from the radar).

@@ -16,6 +16,12 @@ std::array<double, 2> abgGainsFromAlpha(double alpha) {
   return {beta, beta * beta / (4.0 * alpha)};
 }
 
+std::array<double, 3> abgGrowingMemoryGains(int n) {
+  const double m = n - 1.0;  // Brookner's index, from 0
+  const double d = (m + 1.0) * (m + 2.0) * (m + 3.0);
+  return {3.0 * (3.0 * m * m + 3.0 * m + 2.0) / d, 18.0 * (2.0 * m + 1.0) / d, 30.0 / d};
+}
+
 AlphaBetaGammaFilter::AlphaBetaGammaFilter(const AbgConfig& config) : config_(config) {
   if (const std::string p = config.check(); !p.empty()) throw std::invalid_argument("alpha-beta-gamma: " + p);
 }
@@ -41,8 +47,15 @@ bool AlphaBetaGammaFilter::update(TimeUs t, double xM, double yM) {
     const int n = n_ + 1;  // this plot's number
     const double dt = toSeconds(t - lastUs_);
     double alpha = config_.alpha;
-    if (config_.expandingStart) alpha = std::max(alpha, 2.0 * (2.0 * n - 1.0) / (n * (n + 1.0)));
-    const auto [beta, gamma] = abgGainsFromAlpha(alpha);
+    auto [beta, gamma] = abgGainsFromAlpha(alpha);
+    if (config_.expandingStart) {
+      const auto g = abgGrowingMemoryGains(n);
+      if (g[0] > alpha) {
+        alpha = g[0];
+        beta = g[1];
+        gamma = g[2];
+      }
+    }
     for (int a = 0; a < 2; ++a) {
       const double pp = e.smoothedPos[a] + dt * e.smoothedVel[a] + 0.5 * dt * dt * e.smoothedAcc[a];
       const double r = z[a] - pp;

@@ -35,9 +35,22 @@ class ImmTracker {
   explicit ImmTracker(const ImmConfig& config);
 
   /// A plot: true bearing and range from own ship at (ownX, ownY), grid frame (the bearing given
-  /// relative to grid north). The first plot initialises the position with zero mean velocity and
-  /// initialSpeedSdMps. Returns the combined update's NIS (NaN when nothing was applied).
+  /// relative to grid north), with the configured noise. The first plot initialises the position with
+  /// zero mean velocity and initialSpeedSdMps. Returns the combined update's NIS (NaN when nothing was
+  /// applied).
   double update(TimeUs t, double bearingRad, double rangeM, double ownXM, double ownYM);
+
+  /// Starts at t from a position estimate (grid metres) with zero mean velocity (initialSpeedSdMps)
+  /// and the turn rate's prior.
+  void initialise(TimeUs t, const est::Vec<2>& position, const est::Mat<2>& positionCov);
+  /// One IMM cycle with the plot's own noise R (bearing, range: rad^2, m^2, possibly correlated).
+  /// gate > 0: the plot is refused (state unchanged) when the NIS of the combined prediction
+  /// exceeds it. The report carries that combined innovation, its S and NIS.
+  est::UpdateReport<2> updatePlot(TimeUs t, double bearingRad, double rangeM, double ownXM, double ownYM,
+                                  const est::Mat<2>& R, double gate);
+  /// The combined estimate predicted to t (no change; t before the filter time: the current one).
+  [[nodiscard]] est::Gaussian<est::ct::kStateDim> predicted(TimeUs t) const;
+  [[nodiscard]] TimeUs timeUs() const { return timeUs_; }
 
   [[nodiscard]] bool initialised() const { return initialised_; }
   /// The combined estimate (moment-matched over the modes).
@@ -46,6 +59,16 @@ class ImmTracker {
   [[nodiscard]] bool manoeuvring() const { return mu_[kCt] > config_.manoeuvreProbability; }
 
  private:
+  struct Prediction {
+    std::array<est::Gaussian<est::ct::kStateDim>, kModes> modes{};
+    std::array<double, kModes> cbar{};
+    bool ok = false;
+  };
+  /// Mixing and the mode-matched predictions over dt >= 0.
+  [[nodiscard]] Prediction predictModes(double dt) const;
+  static est::Gaussian<est::ct::kStateDim> combine(
+      const std::array<est::Gaussian<est::ct::kStateDim>, kModes>& m, const std::array<double, kModes>& w);
+
   ImmConfig config_;
   bool initialised_ = false;
   TimeUs timeUs_ = 0;

@@ -83,10 +83,12 @@ bool AcquisitionZone::contains(double rangeM, double trueBearingRad) const {
 
 std::string TrackManagerConfig::check() const {
   if (capacity == 0) return "capacity must be positive";
-  if (inputEstimationWindow < 0 || inputEstimationWindow > 100)
-    return "input estimation window must lie in [0, 100]";
-  if (inputEstimationWindow > 0 && !(inputEstimationPfa > 0.0 && inputEstimationPfa < 1.0))
+  if (inputEstimationWindow < 1 || inputEstimationWindow > 100)
+    return "input estimation window must lie in [1, 100]";
+  if (!(inputEstimationPfa > 0.0 && inputEstimationPfa < 1.0))
     return "input estimation false-alarm probability must lie in (0, 1)";
+  if (const std::string p = abg.check(); !p.empty()) return "alpha-beta-gamma: " + p;
+  if (const std::string p = imm.check(); !p.empty()) return "IMM: " + p;
   if (!(capacityWarningFraction > 0.0 && capacityWarningFraction <= 1.0))
     return "capacity warning fraction must lie in (0, 1]";
   if (confirmSweeps < 1 || confirmSweeps > 32 || confirmHits < 1 || confirmHits > confirmSweeps)
@@ -127,8 +129,7 @@ TrackManager::TrackManager(const TrackManagerConfig& config)
     : config_(config), ctx_(std::make_shared<const TtkfContext>(config.filter)), assocGate_(ctx_->radarGate) {
   if (const std::string problem = config.check(); !problem.empty())
     throw std::invalid_argument("track manager: " + problem);
-  if (config.inputEstimationWindow > 0)
-    inputThreshold_ = est::chiSquareQuantile(1.0 - config.inputEstimationPfa, 2.0);
+  inputThreshold_ = est::chiSquareQuantile(1.0 - config.inputEstimationPfa, 2.0);
   tracks_.reserve(std::min<std::size_t>(config.capacity, 4096));
 }
 
@@ -150,9 +151,7 @@ std::vector<TrackEvent> TrackManager::takeEvents() {
 
 tk::Belief TrackManager::beliefAt(const Track& t, TimeUs time) const {
   if (t.status == TrackStatus::Lost) return t.lastUpdate;
-  Ttkf copy = t.filter;
-  copy.predictTo(time);
-  return copy.belief();
+  return t.filter.predicted(time);
 }
 
 void TrackManager::feedOwnShip(const OwnShipInput& own) {
@@ -176,10 +175,14 @@ void TrackManager::addPlot(const GridPlot& plot, int tag) {
 }
 
 bool TrackManager::applyPlot(Track& t, const GridPlot& plot, int tag) {
+  const bool ie = t.filter.kind() == TrackerKind::EkfInputEstimation;
   Ttkf::RadarDetail detail;
-  t.lastRadar = t.filter.updateRadar(plot, config_.inputEstimationWindow > 0 ? &detail : nullptr);
+  t.lastRadar = t.filter.updateRadar(plot, ie ? &detail : nullptr);
   if (!t.lastRadar.applied()) return false;
-  if (config_.inputEstimationWindow > 0) estimateInput(t, plot.timeUs, detail);
+  if (ie)
+    estimateInput(t, *t.filter.ttkf(), plot.timeUs, detail);
+  else if (t.filter.kind() == TrackerKind::Imm)
+    setManoeuvring(t, t.filter.modelManoeuvring(), plot.timeUs);
   ++t.radarUpdates;
   ++counters_.plotsAssociated;
   t.seenThisSweep = true;
@@ -190,7 +193,12 @@ bool TrackManager::applyPlot(Track& t, const GridPlot& plot, int tag) {
   return true;
 }
 
-void TrackManager::estimateInput(Track& t, TimeUs time, const Ttkf::RadarDetail& detail) {
+void TrackManager::setManoeuvring(Track& t, bool flag, TimeUs time) {
+  if (flag && !t.manoeuvring) event(TrackEvent::Kind::Manoeuvre, time, t.id);
+  t.manoeuvring = flag;
+}
+
+void TrackManager::estimateInput(Track& t, Ttkf& filter, TimeUs time, const Ttkf::RadarDetail& detail) {
   // Seed 001's input estimation around the TTKF (docs/manoeuvres.md): one window entry per radar
   // update. Between radar updates the own-ship feed also updates the filter; its effect on the
   // target's response to the input is neglected (it conditions the own-ship states).
@@ -199,7 +207,7 @@ void TrackManager::estimateInput(Track& t, TimeUs time, const Ttkf::RadarDetail&
   t.lastRadarUs = time;
   if (dtUs <= 0) return;
   InputWindow<tk::kStateDim>::Entry e;
-  e.Phi = t.filter.transition(dtUs);
+  e.Phi = filter.transition(dtUs);
   e.G.setZero();
   e.G(tk::kTgtX, 0) = e.G(tk::kTgtY, 1) = 0.5 * dt * dt;
   e.G(tk::kTgtVx, 0) = e.G(tk::kTgtVy, 1) = dt;
@@ -215,10 +223,9 @@ void TrackManager::estimateInput(Track& t, TimeUs time, const Ttkf::RadarDetail&
     t.manoeuvring = false;
     return;
   }
-  if (!t.filter.correct(est.M * est.u, est.M * est.L * est.M.transpose())) return;
+  if (!filter.correct(est.M * est.u, est.M * est.L * est.M.transpose())) return;
   t.inputWindow.clear();
-  if (!t.manoeuvring) event(TrackEvent::Kind::Manoeuvre, time, t.id);
-  t.manoeuvring = true;
+  setManoeuvring(t, true, time);
 }
 
 void TrackManager::associateKnown(const GridPlot& plot, int tag) {
@@ -248,14 +255,26 @@ std::optional<int> TrackManager::startTrack(const OwnShipInput& own, const GridP
     fullThisSweep_ = true;
     return std::nullopt;
   }
-  std::optional<Ttkf> filter;
+  std::optional<TrackFilter> filter;
   try {
-    filter.emplace(Ttkf::initiate(ctx_, own, plot));
+    switch (config_.kind) {
+      case TrackerKind::Ekf:
+      case TrackerKind::EkfInputEstimation:
+        filter.emplace(config_.kind, Ttkf::initiate(ctx_, own, plot));
+        break;
+      case TrackerKind::AlphaBetaGamma:
+        filter.emplace(AbgTrackFilter(ctx_, config_.abg, config_.sweepPeriodS, own, plot));
+        break;
+      case TrackerKind::Imm:
+        filter.emplace(ImmTrackFilter(ctx_, config_.imm, own, plot));
+        break;
+    }
   } catch (const std::invalid_argument&) {
     return std::nullopt;  // degenerate geometry (a plot on own ship)
   }
   Track t(nextId_++, std::move(*filter));
-  t.inputWindow = InputWindow<tk::kStateDim>(std::max(1, config_.inputEstimationWindow));
+  if (config_.kind == TrackerKind::EkfInputEstimation)
+    t.inputWindow = InputWindow<tk::kStateDim>(config_.inputEstimationWindow);
   t.lastRadarUs = plot.timeUs;
   t.manual = manual;
   t.initiatedUs = plot.timeUs;
@@ -317,27 +336,8 @@ void TrackManager::associateRound(TrackStatus status, std::vector<char>& taken) 
     est::Mat<4> AQAt;
   };
   std::vector<StepCache> steps;
-  for (std::size_t i = 0; i < tracks_.size(); ++i) {
-    const Track& t = tracks_[i];
-    if (t.status != status || pending_.back().plot.timeUs - t.lastPlotUs <= minGap) continue;
-    // Only the relative position and velocity at tRef are needed: (A Phi) x and (A Phi) P (A Phi)^T +
-    // A Q A^T, with one discretisation per distinct time step (most tracks share the last own-ship
-    // time), far cheaper than predicting all 12 states.
-    const TimeUs from = t.filter.timeUs();
-    const TimeUs step = std::max<TimeUs>(0, tRef - from);
-    auto it =
-        std::find_if(steps.begin(), steps.end(), [step](const StepCache& sc) { return sc.step == step; });
-    if (it == steps.end()) {
-      const auto& d = ctx_->discrete(step);
-      steps.push_back({step, A.lazyProduct(d.Phi.dense()), A.lazyProduct(d.Q).lazyProduct(A.transpose())});
-      it = steps.end() - 1;
-    }
-    const tk::Belief& b = t.filter.belief();
-    const Eigen::Matrix<double, 4, tk::kStateDim> APhiP = it->APhi.lazyProduct(b.P);
-    Candidate c{i, it->APhi * b.x, APhiP.lazyProduct(it->APhi.transpose()) + it->AQAt, 0.0, 0.0};
-    // The filter may sit later than tRef (a plot just after an own-ship input): carry it back.
-    const double lag = toSeconds(from > tRef ? from - tRef : 0);
-    c.rel.head<2>() -= c.rel.tail<2>() * lag;
+  // The gate radius (for the spatial index) and the cost of a miss of a candidate.
+  const auto addCandidate = [&](Candidate& c, double lag) {
     const double range = c.rel.head<2>().norm();
     const double bearing = bearingOf(c.rel[0], c.rel[1]);
     const est::Mat<2> Rt = polarToCartesianCov(range, bearing, maxVarR, maxVarB);
@@ -348,9 +348,42 @@ void TrackManager::associateRound(TrackStatus status, std::vector<char>& taken) 
     const double speed = (c.rel.tail<2>() + ownVel).norm();
     c.radius = std::sqrt(assocGate_ * lmaxR) + (speed + std::sqrt(assocGate_ * lmaxV)) * (span + lag);
     const auto m = mahalanobis2(est::Vec<2>::Zero(), Crr);
-    if (!m || !std::isfinite(c.radius)) continue;
+    if (!m || !std::isfinite(c.radius)) return false;
     c.missCost = assocGate_ + m->second;
-    cands.push_back(c);
+    return true;
+  };
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    const Track& t = tracks_[i];
+    if (t.status != status || pending_.back().plot.timeUs - t.lastPlotUs <= minGap) continue;
+    const Ttkf* ttkf = t.filter.ttkf();
+    if (!ttkf) {
+      // abg and imm: their own prediction to tRef (never behind it: they sit at their last plot and
+      // own ship's last input, both before the pending plots).
+      const tk::Belief b = t.filter.predicted(tRef);
+      Candidate c{i, A * b.x, A * b.P * A.transpose(), 0.0, 0.0};
+      c.P = 0.5 * (c.P + c.P.transpose()).eval();
+      if (addCandidate(c, 0.0)) cands.push_back(c);
+      continue;
+    }
+    // Only the relative position and velocity at tRef are needed: (A Phi) x and (A Phi) P (A Phi)^T +
+    // A Q A^T, with one discretisation per distinct time step (most tracks share the last own-ship
+    // time), far cheaper than predicting all 12 states.
+    const TimeUs from = ttkf->timeUs();
+    const TimeUs step = std::max<TimeUs>(0, tRef - from);
+    auto it =
+        std::find_if(steps.begin(), steps.end(), [step](const StepCache& sc) { return sc.step == step; });
+    if (it == steps.end()) {
+      const auto& d = ctx_->discrete(step);
+      steps.push_back({step, A.lazyProduct(d.Phi.dense()), A.lazyProduct(d.Q).lazyProduct(A.transpose())});
+      it = steps.end() - 1;
+    }
+    const tk::Belief& b = ttkf->belief();
+    const Eigen::Matrix<double, 4, tk::kStateDim> APhiP = it->APhi.lazyProduct(b.P);
+    Candidate c{i, it->APhi * b.x, APhiP.lazyProduct(it->APhi.transpose()) + it->AQAt, 0.0, 0.0};
+    // The filter may sit later than tRef (a plot just after an own-ship input): carry it back.
+    const double lag = toSeconds(from > tRef ? from - tRef : 0);
+    c.rel.head<2>() -= c.rel.tail<2>() * lag;
+    if (addCandidate(c, lag)) cands.push_back(c);
   }
 
   GnnProblem problem(cands.size(), nPlots, [&] {

@@ -15,7 +15,7 @@
 
 #include "tracking/cpa.h"
 #include "tracking/input_window.h"
-#include "tracking/ttkf.h"
+#include "tracking/track_filter.h"
 
 namespace reckoner::track {
 
@@ -53,19 +53,23 @@ struct TrackManagerConfig {
   double sweepPeriodS = 2.0;
   double dangerCpaM = 1852.0;  ///< 1 NM
   double dangerTcpaS = 720.0;  ///< 12 min
-  /// Input estimation on every track (seed 001 around the TTKF, docs/manoeuvres.md): the window in
-  /// radar updates (0: off) and the false-alarm probability per window.
-  int inputEstimationWindow = 0;
+  /// The filter of new tracks (track_filter.h); each kind's parameters below.
+  TrackerKind kind = TrackerKind::Ekf;
+  /// ekf-ie: seed 001's input estimation around the TTKF (docs/manoeuvres.md), the window in radar
+  /// updates and the false-alarm probability per window.
+  int inputEstimationWindow = 15;
   double inputEstimationPfa = 1e-4;
+  AbgConfig abg{0.1, true};
+  ImmConfig imm;
   /// Empty if valid, else the first problem.
   [[nodiscard]] std::string check() const;
 };
 
 struct Track {
-  Track(int trackId, Ttkf f) : id(trackId), filter(std::move(f)) {}
+  Track(int trackId, TrackFilter f) : id(trackId), filter(std::move(f)) {}
   int id = 0;
   TrackStatus status = TrackStatus::Tentative;
-  Ttkf filter;
+  TrackFilter filter;
   bool manual = false;
   bool dangerous = false;
   TimeUs initiatedUs = 0;
@@ -78,7 +82,7 @@ struct Track {
   est::UpdateReport<2> lastRadar;
   InputWindow<est::ttkf::kStateDim> inputWindow{1};  ///< input estimation (when enabled)
   TimeUs lastRadarUs = -1;                           ///< time of the last applied radar update
-  bool manoeuvring = false;                          ///< input estimation's flag
+  bool manoeuvring = false;          ///< the manoeuvre flag: input estimation's (ekf-ie) or the IMM's
   est::ttkf::Belief lastUpdate;      ///< right after the last radar update: a lost track is shown here
   std::array<int, 10> recentTags{};  ///< tags of the last plots used (ring)
   int tagCount = 0;
@@ -97,7 +101,7 @@ struct TrackEvent {
     Removed,          ///< a lost track's hold time is over
     Cancelled,        ///< by the user
     Dangerous,        ///< CPA and TCPA both under the limits (rising edge)
-    Manoeuvre,        ///< input estimation declared a manoeuvre (rising edge of the flag)
+    Manoeuvre,        ///< a manoeuvre was declared (rising edge of the flag: ekf-ie and imm)
     CapacityWarning,  ///< the number of tracks reached the warning level (rising edge)
     CapacityFull,     ///< a plot was not acquired because the bank is full (once per sweep)
   };
@@ -137,6 +141,8 @@ class TrackManager {
   /// Manual acquisition: starts a track on the unassociated plot nearest to grid point (x, y) among
   /// those of the current and the previous sweep, within manualAcquireRadiusM. Returns its id.
   std::optional<int> acquire(double xGridM, double yGridM);
+  /// The filter of tracks started from now on (the operator's choice; tracks keep theirs).
+  void setTrackerKind(TrackerKind kind) { config_.kind = kind; }
   bool cancel(int trackId);
   void cancelAll();
 
@@ -169,7 +175,8 @@ class TrackManager {
   void associateRound(TrackStatus status, std::vector<char>& taken);
   void associateKnown(const GridPlot& plot, int tag);
   bool applyPlot(Track& t, const GridPlot& plot, int tag);
-  void estimateInput(Track& t, TimeUs time, const Ttkf::RadarDetail& detail);
+  void estimateInput(Track& t, Ttkf& filter, TimeUs time, const Ttkf::RadarDetail& detail);
+  void setManoeuvring(Track& t, bool flag, TimeUs time);
   std::optional<int> startTrack(const OwnShipInput& own, const GridPlot& plot, int tag, bool manual);
   bool inZones(const GridPlot& plot) const;
   void updateDanger(Track& t, TimeUs now);

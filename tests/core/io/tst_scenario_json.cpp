@@ -220,6 +220,41 @@ class TestScenarioJson : public QObject {
     QTest::newRow("both variance and sigma")
         << R"("tracker": {"target_acceleration": {"variance_m2_s4": 1, "sigma_mps2": 1, "beta_per_s": 1}},)"
         << "tracker.target_acceleration.sigma_mps2: give either";
+    QTest::newRow("unknown filter") << R"("tracker": {"filter": "kalman"},)"
+                                    << "tracker.filter: must be \"ekf\"";
+    QTest::newRow("alpha above the paper's bound")
+        << R"("tracker": {"filter": "abg", "alpha_beta_gamma": {"alpha": 0.7}},)"
+        << "tracker.alpha_beta_gamma.alpha: must lie in (0, 0.6]";
+    QTest::newRow("unknown abg field") << R"("tracker": {"alpha_beta_gamma": {"beta": 0.1}},)"
+                                       << "tracker.alpha_beta_gamma.beta: unknown field";
+    QTest::newRow("negative IMM sojourn") << R"("tracker": {"imm": {"ct_sojourn_s": -5}},)"
+                                          << "tracker.imm.ct_sojourn_s: must be positive";
+    QTest::newRow("IMM probability of one") << R"("tracker": {"imm": {"manoeuvre_probability": 1}},)"
+                                            << "tracker.imm.manoeuvre_probability: must lie in (0, 1)";
+  }
+  void readsTheTrackerKind() {
+    // "filter" chooses; "input_estimation" alone means ekf-ie (files written before the choice).
+    const auto withTracker = [](const std::string& tracker) {
+      return io::parseScenario(
+          variant("\"duration_s\": 100,", "\"duration_s\": 100,\n  \"tracker\": " + tracker + ","), "t.json");
+    };
+    QCOMPARE(withTracker("{}").tracker.kind, track::TrackerKind::Ekf);
+    QCOMPARE(withTracker(R"({"input_estimation": {"window": 10}})").tracker.kind,
+             track::TrackerKind::EkfInputEstimation);
+    const auto s = withTracker(
+        R"({"filter": "imm", "imm": {"ct_sojourn_s": 30, "initial_turn_sd_dps": 2}, "alpha_beta_gamma": {"alpha": 0.2, "expanding_start": false}})");
+    QCOMPARE(s.tracker.kind, track::TrackerKind::Imm);
+    QCOMPARE(s.tracker.imm.ctSojournS, 30.0);
+    QVERIFY(std::abs(radToDeg(s.tracker.imm.initialTurnSdRadPerS) - 2.0) < 1e-12);
+    QCOMPARE(s.tracker.abg.alpha, 0.2);
+    QVERIFY(!s.tracker.abg.expandingStart);
+    // Written and read back unchanged.
+    const auto back = io::parseScenario(io::writeScenario(s), "back.json");
+    QCOMPARE(back.tracker.kind, s.tracker.kind);
+    QCOMPARE(back.tracker.imm.ctSojournS, 30.0);
+    QCOMPARE(back.tracker.imm.ctTurnQ, s.tracker.imm.ctTurnQ);
+    QCOMPARE(back.tracker.abg.alpha, 0.2);
+    QCOMPARE(back.tracker.abg.expandingStart, false);
   }
   void badTargetsAndTracker() {
     QFETCH(QString, insert);

@@ -3,6 +3,10 @@
 
 #include <cmath>
 
+#include <Eigen/QR>
+#include <vector>
+
+#include "common/rng.h"
 #include "estimation/gaussian.h"
 #include "sim/seed003.h"
 #include "tracking/alpha_beta_gamma.h"
@@ -41,16 +45,58 @@ class TestAlphaBetaGamma : public QObject {
     }
   }
 
-  void expandingMemoryStartThenFixed() {
+  void expandingMemoryStartIsTheLeastSquaresFitThenFixed() {
+    // GIVEN noisy plots of an accelerating target every 2 s WHEN the filter starts THEN from the
+    // third plot on, while the growing-memory alpha exceeds the chosen one, its smoothed position,
+    // velocity and acceleration are those of the least-squares quadratic through all plots so far (to
+    // 1e-6), its alpha is above the paper's lower bound 2(2n-1)/(n(n+1)), and afterwards alpha is the
+    // chosen one with beta and gamma from the steady-state relation.
     track::AbgConfig cfg;
-    cfg.alpha = 0.5;
+    cfg.alpha = 0.3;
     track::AlphaBetaGammaFilter f(cfg);
-    const double expected[] = {1.0, 1.0, 10.0 / 12.0, 14.0 / 20.0, 18.0 / 30.0, 22.0 / 42.0, 0.5, 0.5};
-    for (int n = 1; n <= 8; ++n) {
-      QVERIFY(f.update(fromSeconds(2.0 * n), 10.0 * n, -5.0 * n));
-      QVERIFY2(std::abs(f.estimate().alpha - expected[n - 1]) < 1e-12,
-               qPrintable(QString("n %1: alpha %2").arg(n).arg(f.estimate().alpha)));
+    Rng rng(5, 0);
+    std::vector<double> ts, zs;
+    bool fixedSeen = false;
+    for (int n = 1; n <= 40; ++n) {
+      const double t = 2.0 * n, z = 3.0 * t + 0.01 * t * t + rng.normal(0.0, 20.0);
+      ts.push_back(t);
+      zs.push_back(z);
+      QVERIFY(f.update(fromSeconds(t), z, 0.0));
+      const auto& e = f.estimate();
+      if (n < 3) continue;
+      const double bound = 2.0 * (2.0 * n - 1.0) / (n * (n + 1.0));
+      if (e.alpha > cfg.alpha) {
+        QVERIFY(!fixedSeen);
+        QVERIFY2(e.alpha > bound,
+                 qPrintable(QString("n %1: alpha %2 bound %3").arg(n).arg(e.alpha).arg(bound)));
+        // Least squares in time relative to the latest plot: z = p + v s + a s^2 / 2.
+        Eigen::MatrixXd A(n, 3);
+        Eigen::VectorXd b(n);
+        for (int k = 0; k < n; ++k) {
+          const double s = ts[static_cast<std::size_t>(k)] - t;
+          A(k, 0) = 1.0;
+          A(k, 1) = s;
+          A(k, 2) = 0.5 * s * s;
+          b(k) = zs[static_cast<std::size_t>(k)];
+        }
+        const Eigen::Vector3d ls = A.colPivHouseholderQr().solve(b);
+        QVERIFY2(std::abs(e.smoothedPos[0] - ls[0]) < 1e-6 && std::abs(e.smoothedVel[0] - ls[1]) < 1e-6 &&
+                     std::abs(e.smoothedAcc[0] - ls[2]) < 1e-6,
+                 qPrintable(QString("n %1: %2 %3 %4 vs %5 %6 %7")
+                                .arg(n)
+                                .arg(e.smoothedPos[0])
+                                .arg(e.smoothedVel[0])
+                                .arg(e.smoothedAcc[0])
+                                .arg(ls[0])
+                                .arg(ls[1])
+                                .arg(ls[2])));
+      } else {
+        fixedSeen = true;
+        QCOMPARE(e.alpha, cfg.alpha);
+        QCOMPARE(e.beta, track::abgGainsFromAlpha(cfg.alpha)[0]);
+      }
     }
+    QVERIFY(fixedSeen);
   }
 
   void constantAccelerationIsFollowedWithoutLag() {

@@ -102,11 +102,6 @@ std::optional<TrackerKind> trackerKindFromName(std::string_view name) {
   return std::nullopt;
 }
 
-double abgManoeuvreIndex(double alpha) {
-  const double gamma = abgGainsFromAlpha(alpha)[1];
-  return 4.0 * gamma * gamma / (1.0 - alpha);
-}
-
 est::Gaussian<6> ownShipAt(const TtkfContext& ctx, const OwnShipInput& own, TimeUs t) {
   est::Gaussian<6> g;
   g.x << own.x, 0.0, 0.0;
@@ -126,14 +121,9 @@ est::Gaussian<6> ownShipAt(const TtkfContext& ctx, const OwnShipInput& own, Time
 
 // ---------------------------------------------------------------------------------------------------
 AbgTrackFilter::AbgTrackFilter(std::shared_ptr<const TtkfContext> ctx, const AbgConfig& config,
-                               double sweepPeriodS, const OwnShipInput& own, const GridPlot& plot)
-    : ctx_(std::move(ctx)),
-      abg_(config),
-      lambda_(abgManoeuvreIndex(config.alpha)),
-      nominalT_(sweepPeriodS),
-      own_(own),
-      targetUs_(plot.timeUs) {
-  if (!finitePlot(plot) || !(plot.rangeM >= ctx_->config.minRangeM) || !(sweepPeriodS > 0.0))
+                               const OwnShipInput& own, const GridPlot& plot)
+    : ctx_(std::move(ctx)), abg_(config), own_(own), targetUs_(plot.timeUs) {
+  if (!finitePlot(plot) || !(plot.rangeM >= ctx_->config.minRangeM))
     throw std::invalid_argument("alpha-beta-gamma track: degenerate plot");
   const auto o = ownShipAt(*ctx_, own, plot.timeUs);
   const AbsolutePlot a = absolute(plot, o.x.head<2>(), o.P.topLeftCorner<2, 2>());
@@ -144,7 +134,6 @@ AbgTrackFilter::AbgTrackFilter(std::shared_ptr<const TtkfContext> ctx, const Abg
   P_(2, 2) = P_(3, 3) = v2;
   const double sa = ctx_->config.process.targetAcceleration.sigma;
   P_(4, 4) = P_(5, 5) = std::max(sa * sa, 1e-12);
-  sigma2_ = a.R.diagonal();
 }
 
 void AbgTrackFilter::feedOwnShip(const OwnShipInput& own) {
@@ -162,19 +151,14 @@ est::Gaussian<6> AbgTrackFilter::targetAt(TimeUs t) const {
     return g;
   }
   est::Mat<6> F = est::Mat<6>::Identity();
-  est::Mat<6> Q = est::Mat<6>::Zero();
-  const est::Vec<3> G(0.5 * dt * dt, dt, 1.0);
-  const double T4 = std::pow(nominalT_, 4);
   for (int a = 0; a < 2; ++a) {
     F(a, 2 + a) = dt;
     F(a, 4 + a) = 0.5 * dt * dt;
     F(2 + a, 4 + a) = dt;
-    // The increment variance of the discrete model per nominal step, spread over dt as a Wiener
-    // process would.
-    const double v = lambda_ * sigma2_[a] / T4 * (dt / nominalT_);
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) Q(a + 2 * i, a + 2 * j) = v * G[i] * G[j];
   }
+  // The target moves as the tracker's target model says (its Gauss-Markov acceleration noise); the
+  // filter predicts with constant acceleration.
+  const est::Mat<6> Q = ctx_->discrete(t - targetUs_).Q.bottomRightCorner<6, 6>();
   g.x = F * g.x;
   g.P = F * P_ * F.transpose() + Q;
   est::symmetrise(g.P);
@@ -219,7 +203,6 @@ est::UpdateReport<2> AbgTrackFilter::updateRadar(const GridPlot& plot) {
     return rep;
   }
   P_ = P;
-  sigma2_ = a.R.diagonal();
   targetUs_ = plot.timeUs;
   return rep;
 }

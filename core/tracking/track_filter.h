@@ -8,9 +8,10 @@
 // Whatever the filter, a track shows the rest of the system the same 12-state belief (own ship and
 // target position, velocity and acceleration), so association, CPA, the chart and the plots need not
 // know which one runs. For abg and imm the own-ship block is the DRKF output carried forward by the
-// TTKF's own-vessel model, and the target block is the filter's (abg: the covariance its fixed gains
-// imply, Joseph form, for the white-jerk model its alpha is optimal for); the two blocks are taken as
-// uncorrelated.
+// TTKF's own-vessel model, and the target block is the filter's; the two blocks are taken as
+// uncorrelated. The abg has no covariance of its own: it carries the one its gains give (Joseph form
+// holds for any gain) when the target moves as the tracker's target model says (the Gauss-Markov
+// acceleration of tracker.target_acceleration, as the EKF assumes), for the gate and the ellipse.
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -30,11 +31,6 @@ const char* trackerKindName(TrackerKind k);
 const char* trackerKindLabel(TrackerKind k);
 std::optional<TrackerKind> trackerKindFromName(std::string_view name);
 
-/// Seed 003's equivalent process noise: the discrete Wiener-process-acceleration model (acceleration
-/// increment of variance v per step T) has the steady-state Kalman gains of abgGainsFromAlpha(alpha)
-/// when its manoeuvre index lambda = v T^4 / sigma^2 equals (2 gamma)^2 / (1 - alpha).
-double abgManoeuvreIndex(double alpha);
-
 /// Own ship's part of a 12-state belief (position, velocity and acceleration, indices 0 to 5) at
 /// t >= own.timeUs, from a DRKF output and the TTKF's own-vessel model.
 est::Gaussian<6> ownShipAt(const TtkfContext& ctx, const OwnShipInput& own, TimeUs t);
@@ -44,8 +40,8 @@ est::Gaussian<6> ownShipAt(const TtkfContext& ctx, const OwnShipInput& own, Time
 class AbgTrackFilter {
  public:
   /// Starts on a plot (the filter's first point). Throws std::invalid_argument for a degenerate plot.
-  AbgTrackFilter(std::shared_ptr<const TtkfContext> ctx, const AbgConfig& config, double sweepPeriodS,
-                 const OwnShipInput& own, const GridPlot& plot);
+  AbgTrackFilter(std::shared_ptr<const TtkfContext> ctx, const AbgConfig& config, const OwnShipInput& own,
+                 const GridPlot& plot);
   void feedOwnShip(const OwnShipInput& own);
   /// Gated with the context's radar gate on range and bearing.
   est::UpdateReport<2> updateRadar(const GridPlot& plot);
@@ -54,15 +50,12 @@ class AbgTrackFilter {
   [[nodiscard]] const AlphaBetaGammaFilter& filter() const { return abg_; }
 
  private:
-  /// Target [x y vx vy ax ay] predicted to t >= targetUs_ (mean from the filter, covariance by its
-  /// model).
+  /// Target [x y vx vy ax ay] predicted to t >= targetUs_ (mean by the filter's constant
+  /// acceleration, covariance with the target model's noise).
   [[nodiscard]] est::Gaussian<6> targetAt(TimeUs t) const;
   std::shared_ptr<const TtkfContext> ctx_;
   AlphaBetaGammaFilter abg_;
-  double lambda_;       ///< abgManoeuvreIndex(alpha)
-  double nominalT_;     ///< the sweep period the index refers to
-  est::Vec<2> sigma2_;  ///< the last plot's absolute variance per axis
-  est::Mat<6> P_;       ///< target covariance at targetUs_
+  est::Mat<6> P_;  ///< target covariance at targetUs_
   OwnShipInput own_;
   TimeUs targetUs_;
 };

@@ -263,7 +263,7 @@ std::optional<int> TrackManager::startTrack(const OwnShipInput& own, const GridP
         filter.emplace(config_.kind, Ttkf::initiate(ctx_, own, plot));
         break;
       case TrackerKind::AlphaBetaGamma:
-        filter.emplace(AbgTrackFilter(ctx_, config_.abg, config_.sweepPeriodS, own, plot));
+        filter.emplace(AbgTrackFilter(ctx_, config_.abg, own, plot));
         break;
       case TrackerKind::Imm:
         filter.emplace(ImmTrackFilter(ctx_, config_.imm, own, plot));

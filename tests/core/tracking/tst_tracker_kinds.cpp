@@ -96,32 +96,14 @@ class TestTrackerKinds : public QObject {
     QVERIFY(!track::trackerKindFromName("kalman"));
   }
 
-  void abgManoeuvreIndexGivesItsAlpha() {
-    // GIVEN alpha WHEN the discrete Wiener-process-acceleration model with the manoeuvre index
-    // (2 gamma)^2 / (1 - alpha) is iterated to its steady state THEN its Kalman gain is alpha again.
-    for (const double alpha : {0.05, 0.2, 0.4, 0.6}) {
-      const double T = 2.0, r = 400.0, v = track::abgManoeuvreIndex(alpha) * r / std::pow(T, 4);
-      est::Mat<3> F;
-      F << 1, T, T * T / 2, 0, 1, T, 0, 0, 1;
-      const est::Vec<3> G(T * T / 2, T, 1);
-      est::Mat<3> P = est::Mat<3>::Identity() * 1e6;
-      double k = 0.0;
-      for (int i = 0; i < 20000; ++i) {
-        const est::Mat<3> Pp = F * P * F.transpose() + v * G * G.transpose();
-        k = Pp(0, 0) / (Pp(0, 0) + r);
-        P = Pp - Pp.col(0) * Pp.row(0) / (Pp(0, 0) + r);
-      }
-      QVERIFY2(std::abs(k - alpha) < 1e-9, qPrintable(QString("alpha %1: %2").arg(alpha).arg(k)));
-    }
-  }
-
   void everyKindHoldsTheDefaultTargets() {
     // GIVEN the default scenario (radar 2 s, 15 m / 0.5 deg; a fishing vessel turning ~50 deg at 700 s)
     // WHEN every track runs each filter in turn (4 runs of 30 min) THEN each holds all three targets
     // through the track manager with the errors of an ARPA (abg at its default alpha 0.1); no filter
     // is optimistic on the straight targets (4-dof NEES mean under 6; the EKF's is about 2 since its
-    // target model, 0.02 m/s^2, is rougher than these straight runs); only the flagging filters flag,
-    // the turn in most runs, and the IMM at most 1.5 times per hour on straight targets.
+    // target model, 0.02 m/s^2, is rougher than these straight runs, and the abg's, carried with the
+    // same model through its fixed gains, is lower still); only the flagging filters flag, the turn in
+    // most runs, and the IMM at most 1.5 times per hour on straight targets.
     std::map<track::TrackerKind, KindStats> stats;
     for (int i = 0; i < track::kTrackerKindCount; ++i) {
       const auto kind = static_cast<track::TrackerKind>(i);
@@ -133,9 +115,11 @@ class TestTrackerKinds : public QObject {
       QVERIFY(k.heldShare > 0.97);
       QVERIFY(k.positionRmseM < 60.0);
       QVERIFY(k.velocityRmseMps < 1.0);
-      QVERIFY(k.meanNees > 1.0 && k.meanNees < 6.0);
+      QVERIFY(k.meanNees < 6.0);
     }
     using K = track::TrackerKind;
+    for (const K kind : {K::Ekf, K::EkfInputEstimation, K::Imm}) QVERIFY(stats[kind].meanNees > 1.0);
+    QVERIFY(stats[K::AlphaBetaGamma].meanNees > 0.1);
     QCOMPARE(stats[K::Ekf].manoeuvreFlagsTurning + stats[K::Ekf].manoeuvreFlagsStraight, 0);
     QCOMPARE(stats[K::AlphaBetaGamma].manoeuvreFlagsTurning + stats[K::AlphaBetaGamma].manoeuvreFlagsStraight,
              0);

@@ -341,6 +341,22 @@ void MainWindow::buildActions() {
   display->addWidget(minutes);
   display->addAction(tr("Centre own ship"), this, [this] { view_->centreOnOwnShip(); });
 
+  // Tracking: the filter of ARPA tracks started from now on (recorded in the scenario).
+  QMenu* tracking = menuBar()->addMenu(tr("&Tracking"));
+  QMenu* filterMenu = tracking->addMenu(tr("Filter for new tracks"));
+  filterMenu->setObjectName(QStringLiteral("trackerKindMenu"));
+  auto* kinds = new QActionGroup(this);
+  for (int i = 0; i < track::kTrackerKindCount; ++i) {
+    const auto kind = static_cast<track::TrackerKind>(i);
+    QAction* a = filterMenu->addAction(QString::fromLatin1(track::trackerKindLabel(kind)));
+    a->setObjectName(QStringLiteral("trackerKind_%1").arg(QString::fromLatin1(track::trackerKindName(kind))));
+    a->setCheckable(true);
+    a->setData(i);
+    kinds->addAction(a);
+    trackerKindActions_.push_back(a);
+    connect(a, &QAction::triggered, this, [this, kind] { controller_->setTrackerKind(kind); });
+  }
+
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
   const auto toggle = [&](const QString& name, bool OverlaySettings::*member) {
     QAction* a = viewMenu->addAction(name);
@@ -536,6 +552,8 @@ void MainWindow::repaintTick() {
   const LiveFrame& live = history_.latest();
   if (localFrame_) ownPanel_->setFrame(live, *localFrame_);
   sensors_->setStates(live.frame.sensors, live.radarOn);
+  for (QAction* a : trackerKindActions_)
+    if (a->data().toInt() == static_cast<int>(live.trackerKind) && !a->isChecked()) a->setChecked(true);
   const std::optional<int> selected = view_->selectedTrack();
   model_->setTracks(live.frame.tracks);
   if (selected) {

@@ -119,6 +119,7 @@ class MainWindow : public QMainWindow {
   QLabel* chartLabel_ = nullptr;
   QComboBox* rateBox_ = nullptr;
   QAction* runAction_ = nullptr;
+  std::vector<QAction*> trackerKindActions_;  ///< Tracking > Filter for new tracks
   QMenu* recentMenu_ = nullptr;
   QTimer repaintTimer_;
   QTimer plotTimer_;

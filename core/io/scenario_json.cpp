@@ -448,6 +448,20 @@ void readTracker(Fields& top, sim::Scenario& s) {
              "must be \"ekf\", \"ekf-ie\" (with input estimation), \"abg\" (alpha-beta-gamma) or \"imm\"");
     tr.kind = *kind;
   }
+  if (const JsonValue* ch = f.get("filter_changes")) {
+    if (!ch->isArray()) f.fail(*ch, f.pathOf("filter_changes"), "must be an array of {\"t_s\", \"filter\"}");
+    for (std::size_t i = 0; i < ch->array.size(); ++i) {
+      Fields g(top.file(), ch->array[i], "tracker.filter_changes[" + std::to_string(i) + "]");
+      const TimeUs t = fromSeconds(g.number("t_s", Fields::Check::NonNegative));
+      if (!tr.kindChanges.empty() && t <= tr.kindChanges.back().first)
+        g.fail(*g.get("t_s"), g.pathOf("t_s"), "must increase from change to change");
+      const JsonValue& k = g.require("filter");
+      const auto kind = k.isString() ? track::trackerKindFromName(k.string) : std::nullopt;
+      if (!kind) g.fail(k, g.pathOf("filter"), "must be \"ekf\", \"ekf-ie\", \"abg\" or \"imm\"");
+      g.finish();
+      tr.kindChanges.emplace_back(t, *kind);
+    }
+  }
   if (const JsonValue* a = f.get("alpha_beta_gamma")) {
     Fields g(top.file(), *a, f.pathOf("alpha_beta_gamma"));
     if (const JsonValue* al = g.get("alpha")) {
@@ -810,6 +824,17 @@ std::string writeScenario(const sim::Scenario& s) {
   w.key("danger_cpa_nm").value(metresToNm(t.dangerCpaM), kExact);
   w.key("danger_tcpa_min").value(t.dangerTcpaS / 60.0, kExact);
   w.key("filter").value(track::trackerKindName(t.kind));
+  if (!t.kindChanges.empty()) {
+    w.key("filter_changes").beginArray();
+    for (const auto& [when, kind] : t.kindChanges)
+      w.beginObject()
+          .key("t_s")
+          .value(toSeconds(when), kExact)
+          .key("filter")
+          .value(track::trackerKindName(kind))
+          .endObject();
+    w.endArray();
+  }
   w.key("input_estimation").beginObject();
   w.key("window").value(t.inputEstimationWindow);
   w.key("false_alarm_probability").value(t.inputEstimationPfa, kExact);

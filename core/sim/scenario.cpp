@@ -51,6 +51,15 @@ std::string sensorLabel(const SensorStates& s) {
   return label.empty() ? "none" : label;
 }
 
+track::TrackerKind trackerKindAt(const TrackerSpec& t, TimeUs time) {
+  track::TrackerKind k = t.kind;
+  for (const auto& [when, kind] : t.kindChanges) {
+    if (when > time) break;
+    k = kind;
+  }
+  return k;
+}
+
 track::TrackManagerConfig trackManagerConfigFor(const TrackerSpec& t, double sweepPeriodS) {
   track::TrackManagerConfig c;
   c.filter.process = {t.ownAcceleration, t.targetAcceleration};

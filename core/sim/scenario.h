@@ -75,11 +75,16 @@ struct TrackerSpec {
   double dangerTcpaS = 720.0;
   /// The filter of every track (track_filter.h) and the parameters of each kind.
   track::TrackerKind kind = track::TrackerKind::Ekf;
+  /// Later changes of the filter for new tracks (the operator's), in increasing time.
+  std::vector<std::pair<TimeUs, track::TrackerKind>> kindChanges;
   int inputEstimationWindow = 15;  ///< ekf-ie: radar updates per input-estimation window
   double inputEstimationPfa = 1e-4;
   track::AbgConfig abg{0.1, true};
   track::ImmConfig imm;
 };
+
+/// The filter for tracks started at t.
+track::TrackerKind trackerKindAt(const TrackerSpec& t, TimeUs time);
 
 /// The track manager configuration a scenario implies (sweep period from the radar).
 track::TrackManagerConfig trackManagerConfigFor(const TrackerSpec& t, double sweepPeriodS);

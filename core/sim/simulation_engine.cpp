@@ -137,6 +137,7 @@ TrackSnapshot SimulationEngine::snapshotOf(const track::Track& t, TimeUs time, d
   s.dangerous = t.dangerous;
   s.manual = t.manual;
   s.manoeuvring = t.manoeuvring;
+  s.kind = t.filter.kind();
   s.initiatedUs = t.initiatedUs;
   s.estimate = manager_->beliefAt(t, time);
   s.kinematics = track::kinematicsOf(s.estimate, convergence);
@@ -246,6 +247,7 @@ SimFrame SimulationEngine::step() {
     const TimeUs tPlot = pending_.empty() ? kNever : pending_.front().timeUs;
     const TimeUs t = std::min({tOwn, nextSweepUs_, tPlot});
     if (t > end) break;
+    manager_->setTrackerKind(trackerKindAt(scenario_.tracker, t));
     if (t == tOwn) {
       ownShipEpoch(t, frame);
     } else if (t == nextSweepUs_) {
@@ -334,6 +336,13 @@ void SimulationEngine::setSensorPower(SensorId id, bool on) {
 
 void SimulationEngine::setSpeedlogMode(sensors::SpeedlogMode mode) {
   if (scenario_.speedlog.fitted) scenario_.speedlog.mode.overrideFrom(commandTimeUs(), mode);
+}
+
+void SimulationEngine::setTrackerKind(track::TrackerKind kind) {
+  auto& changes = scenario_.tracker.kindChanges;
+  const TimeUs t = commandTimeUs();
+  while (!changes.empty() && changes.back().first >= t) changes.pop_back();
+  changes.emplace_back(t, kind);
 }
 
 void SimulationEngine::setRadarPower(bool on) {

@@ -22,7 +22,8 @@ struct TrackSnapshot {
   track::TrackStatus status = track::TrackStatus::Tentative;
   bool dangerous = false;
   bool manual = false;
-  bool manoeuvring = false;  ///< input estimation's manoeuvre flag (when enabled)
+  bool manoeuvring = false;                           ///< the manoeuvre flag (ekf-ie and imm tracks)
+  track::TrackerKind kind = track::TrackerKind::Ekf;  ///< the track's filter
   TimeUs initiatedUs = 0;
   est::ttkf::Belief estimate;  ///< predicted to the snapshot time (lost: at its last plot)
   track::TrackKinematics kinematics;
@@ -92,6 +93,8 @@ class SimulationEngine {
   void setSensorPower(sensors::SensorId id, bool on);
   void setSpeedlogMode(sensors::SpeedlogMode mode);
   void setRadarPower(bool on);
+  /// The filter of tracks started from now on (tracks keep theirs).
+  void setTrackerKind(track::TrackerKind kind);
   /// Adds a target that appears now at its spec's initial position; its id is replaced by a free one
   /// when negative or taken. Returns the id, or nullopt if the spec is invalid.
   std::optional<int> addTarget(TargetSpec target);

@@ -14,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
+#include <map>
 
 #include "common/angles.h"
 #include "io/scenario_json.h"
@@ -210,6 +211,47 @@ class TestMainWindow : public QObject {
           (firstSeen - addedAt) / sweep);
     QVERIFY2(firstSeen - addedAt <= 3.0 * sweep + 1e-9,
              qPrintable(QString("first track %1 s after adding").arg(firstSeen - addedAt)));
+  }
+
+  void theTrackingMenuChoosesTheFilterOfNewTracks() {
+    // GIVEN the default scenario (tracks run the EKF with input estimation) WHEN the operator picks
+    // Tracking > Filter for new tracks > IMM and a target appears THEN its track runs the IMM, shown in
+    // the target table, while the tracks already held keep theirs; the choice is in the saved scenario.
+    MainWindow w(freshOptions());
+    showAndWait(w);
+    runUntil(w, 20.0);
+    QMenu* menu = w.findChild<QMenu*>(QStringLiteral("trackerKindMenu"));
+    QVERIFY(menu);
+    QAction* ekfIe = menu->findChild<QAction*>(QStringLiteral("trackerKind_ekf-ie"));
+    QAction* imm = menu->findChild<QAction*>(QStringLiteral("trackerKind_imm"));
+    QVERIFY(ekfIe && imm);
+    QTRY_VERIFY_WITH_TIMEOUT(ekfIe->isChecked(), kTimeoutMs);
+    imm->trigger();
+    w.controller()->addTarget(-1500.0, 2500.0, 2.0, -1.0);
+    runUntil(w, 40.0);
+    QVERIFY(imm->isChecked());
+    std::map<track::TrackerKind, int> kinds;
+    const sim::TrackSnapshot* added = nullptr;
+    for (const auto& t : w.history().latest().frame.tracks) {
+      ++kinds[t.kind];
+      if (t.targetId == 4) added = &t;
+    }
+    QVERIFY2(added, "no track on the added target");
+    QCOMPARE(added->kind, track::TrackerKind::Imm);
+    QVERIFY(kinds[track::TrackerKind::EkfInputEstimation] >= 3);
+    const auto* table = w.findChild<QTableView*>();
+    QVERIFY(table);
+    bool shown = false;
+    for (int r = 0; r < table->model()->rowCount(); ++r)
+      shown = shown || table->model()->index(r, TargetTableModel::Filter).data().toString() == "imm";
+    QVERIFY(shown);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("imm.json");
+    QVERIFY(w.saveScenario(path));
+    const sim::Scenario reread = io::loadScenarioFile(path.toStdString());
+    QCOMPARE(reread.tracker.kindChanges.size(), std::size_t(1));
+    QCOMPARE(reread.tracker.kindChanges[0].second, track::TrackerKind::Imm);
+    QVERIFY(std::abs(toSeconds(reread.tracker.kindChanges[0].first) - 20.0) < 1.01);
   }
 
   void aTargetSteeredFromTheChartIsFlaggedAndItsVectorSettles() {

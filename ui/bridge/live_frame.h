@@ -80,6 +80,7 @@ struct LiveFrame {
   double rate = 0.0;          ///< requested rate (0: paused, < 0: as fast as possible)
   double achievedRate = 0.0;  ///< simulated seconds per wall second, measured
   bool radarOn = false;
+  track::TrackerKind trackerKind = track::TrackerKind::Ekf;  ///< the filter for new tracks, now
   bool running = false;
   bool finished = false;
   double durationS = 0.0;

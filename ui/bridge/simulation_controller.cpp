@@ -76,6 +76,9 @@ void SimulationController::setSpeedlogMode(sensors::SpeedlogMode mode) {
 void SimulationController::setRadarPower(bool on) {
   post([w = worker_, on] { w->setRadarPower(on); });
 }
+void SimulationController::setTrackerKind(track::TrackerKind kind) {
+  post([w = worker_, kind] { w->setTrackerKind(kind); });
+}
 void SimulationController::addTarget(double xM, double yM, double vxMps, double vyMps) {
   post([w = worker_, xM, yM, vxMps, vyMps] { w->addTarget(xM, yM, vxMps, vyMps); });
 }

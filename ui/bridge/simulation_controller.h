@@ -26,6 +26,7 @@ class SimulationController : public QObject {
   void setSensorPower(sensors::SensorId id, bool on);
   void setSpeedlogMode(sensors::SpeedlogMode mode);
   void setRadarPower(bool on);
+  void setTrackerKind(track::TrackerKind kind);
   void addTarget(double xM, double yM, double vxMps, double vyMps);
   void acquireAt(double xM, double yM);
   void cancelTrack(int trackId);

@@ -282,6 +282,7 @@ void SimulationWorker::maybeEmit(bool force) {
   pending_.rate = rate_;
   pending_.radarOn =
       engine_->scenario().radar.fitted && engine_->scenario().radar.power.at(engine_->timeUs());
+  pending_.trackerKind = sim::trackerKindAt(engine_->scenario().tracker, engine_->commandTimeUs());
   pending_.running = rate_ != 0.0;
   pending_.finished = engine_->finished();
   pending_.durationS = toSeconds(engine_->scenario().durationUs);
@@ -337,6 +338,13 @@ void SimulationWorker::setSpeedlogMode(sensors::SpeedlogMode mode) {
 
 void SimulationWorker::setRadarPower(bool on) {
   if (engine_) engine_->setRadarPower(on);
+}
+
+void SimulationWorker::setTrackerKind(track::TrackerKind kind) {
+  if (!engine_) return;
+  engine_->setTrackerKind(kind);
+  dirty_ = true;
+  maybeEmit(true);
 }
 
 void SimulationWorker::addTarget(double xM, double yM, double vxMps, double vyMps) {

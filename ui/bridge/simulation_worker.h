@@ -39,6 +39,8 @@ class SimulationWorker : public QObject {
   void setSensorPower(sensors::SensorId id, bool on);
   void setSpeedlogMode(sensors::SpeedlogMode mode);
   void setRadarPower(bool on);
+  /// The filter of ARPA tracks started from now on.
+  void setTrackerKind(track::TrackerKind kind);
   /// A target appearing now at a grid position with a velocity over ground (grid m/s).
   void addTarget(double xM, double yM, double vxMps, double vyMps);
   void acquireAt(double xM, double yM);

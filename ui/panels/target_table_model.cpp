@@ -55,6 +55,8 @@ QVariant TargetTableModel::data(const QModelIndex& index, int role) const {
         return t.trackId;
       case Status:
         return static_cast<int>(t.status) * 2 + (t.dangerous ? 0 : 1);
+      case Filter:
+        return static_cast<int>(t.kind);
       case Range:
         return k.rangeM;
       case Bearing:
@@ -77,8 +79,8 @@ QVariant TargetTableModel::data(const QModelIndex& index, int role) const {
   }
   if (role == Qt::ForegroundRole && t.dangerous) return QBrush(QColor(200, 0, 0));
   if (role == Qt::TextAlignmentRole)
-    return index.column() == Status ? int(Qt::AlignLeft | Qt::AlignVCenter)
-                                    : int(Qt::AlignRight | Qt::AlignVCenter);
+    return index.column() == Status || index.column() == Filter ? int(Qt::AlignLeft | Qt::AlignVCenter)
+                                                                : int(Qt::AlignRight | Qt::AlignVCenter);
   if (role != Qt::DisplayRole) return {};
   switch (index.column()) {
     case Id:
@@ -90,6 +92,8 @@ QVariant TargetTableModel::data(const QModelIndex& index, int role) const {
       if (t.manual) s += QStringLiteral(" (manual)");
       return s;
     }
+    case Filter:
+      return QString::fromLatin1(track::trackerKindName(t.kind));
     case Range:
       return QString::number(metresToNm(k.rangeM), 'f', 2);
     case Bearing:
@@ -115,8 +119,9 @@ QVariant TargetTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant TargetTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
-  static const char* const kNames[] = {"Track",    "Status", "Range NM", "Brg °T",    "Course °T",
-                                       "Speed kn", "CPA NM", "TCPA min", "sd CPA NM", "sd TCPA min"};
+  static const char* const kNames[] = {"Track",    "Status",    "Filter",     "Range NM",
+                                       "Brg °T",   "Course °T", "Speed kn",   "CPA NM",
+                                       "TCPA min", "sd CPA NM", "sd TCPA min"};
   return section >= 0 && section < ColumnCount ? QString::fromUtf8(kNames[section]) : QVariant();
 }
 

@@ -12,7 +12,7 @@ namespace reckoner::ui {
 class TargetTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Id, Status, Range, Bearing, Course, Speed, Cpa, Tcpa, SdCpa, SdTcpa, ColumnCount };
+  enum Column { Id, Status, Filter, Range, Bearing, Course, Speed, Cpa, Tcpa, SdCpa, SdTcpa, ColumnCount };
 
   using QAbstractTableModel::QAbstractTableModel;
 

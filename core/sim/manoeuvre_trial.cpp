@@ -45,16 +45,66 @@ TrackerConfigs radarRateTrackers(const ManoeuvreTrial& trial) {
   c.ie.falseAlarmProbability = 1e-4;  // tested every sweep: 1800 overlapping windows an hour
   c.imm.bearingSdRad = trial.bearingSdRad;
   c.imm.rangeSdM = trial.rangeSdM;
-  c.abg.alpha = 0.4;
+  c.abg.alpha = 0.1;
   return c;
 }
 
+namespace {
+/// The four trackers on the same measurements.
+class TrackerBank {
+ public:
+  explicit TrackerBank(const TrackerConfigs& configs)
+      : ekf_(neverDeclaring(configs.ie)), ie_(configs.ie), imm_(configs.imm), abg_(configs.abg) {}
+
+  void measure(TimeUs t, double bearingRad, double rangeM, double ox, double oy) {
+    ekf_.measure(t, bearingRad, rangeM, ox, oy);
+    ieManoeuvring_ = ie_.measure(t, bearingRad, rangeM, ox, oy).manoeuvring;
+    imm_.update(t, bearingRad, rangeM, ox, oy);
+    abg_.update(t, ox + rangeM * std::sin(bearingRad), oy + rangeM * std::cos(bearingRad));
+    ox_ = ox;
+    oy_ = oy;
+  }
+  /// Target position and velocity over ground by each tracker (none before it has an estimate).
+  [[nodiscard]] std::array<std::optional<std::array<double, 4>>, kTrackerKinds> estimates() const {
+    std::array<std::optional<std::array<double, 4>>, kTrackerKinds> e;
+    namespace rp = reckoner::est::relpolar;
+    const auto fromRelative =
+        [this](const track::InputEstimationEkf& f) -> std::optional<std::array<double, 4>> {
+      if (!f.initialised()) return std::nullopt;
+      const auto& x = f.belief().x;
+      return std::array<double, 4>{x[rp::kRx] + ox_, x[rp::kRy] + oy_, x[rp::kVx], x[rp::kVy]};
+    };
+    e[kEkf] = fromRelative(ekf_);
+    e[kEkfIe] = fromRelative(ie_);
+    if (abg_.plots() >= 2) {
+      const auto& a = abg_.estimate();
+      e[kAbg] = std::array<double, 4>{a.smoothedPos[0], a.smoothedPos[1], a.smoothedVel[0], a.smoothedVel[1]};
+    }
+    if (imm_.initialised()) {
+      const auto g = imm_.combined();
+      e[kImm] = std::array<double, 4>{g.x[0], g.x[1], g.x[2], g.x[3]};
+    }
+    return e;
+  }
+  [[nodiscard]] std::array<bool, kTrackerKinds> flags() const {
+    return {false, ieManoeuvring_, false, imm_.initialised() && imm_.manoeuvring()};
+  }
+
+ private:
+  static track::InputEstimationConfig neverDeclaring(track::InputEstimationConfig c) {
+    c.falseAlarmProbability = 1e-15;  // the EKF alone
+    return c;
+  }
+  track::InputEstimationEkf ekf_, ie_;
+  track::ImmTracker imm_;
+  track::AlphaBetaGammaFilter abg_;
+  bool ieManoeuvring_ = false;
+  double ox_ = 0.0, oy_ = 0.0;
+};
+}  // namespace
+
 ManoeuvreRun runManoeuvreTrial(const ManoeuvreTrial& m, const TrackerConfigs& configs, std::uint64_t seed) {
-  track::InputEstimationConfig plain = configs.ie;
-  plain.falseAlarmProbability = 1e-15;  // never declares: the EKF alone
-  track::InputEstimationEkf ekf(plain), ie(configs.ie);
-  track::ImmTracker imm(configs.imm);
-  track::AlphaBetaGammaFilter abg(configs.abg);
+  TrackerBank bank(configs);
   Rng rng(seed, 6);
   ManoeuvreRun out;
   const bool manoeuvres = m.manoeuvres();
@@ -89,10 +139,7 @@ ManoeuvreRun runManoeuvreTrial(const ManoeuvreTrial& m, const TrackerConfigs& co
     const double b = wrapTwoPi(bearingOf(tx - ox, ty - oy) + rng.normal(0.0, m.bearingSdRad));
     const double r = std::hypot(tx - ox, ty - oy) + rng.normal(0.0, m.rangeSdM);
     const TimeUs tu = fromSeconds(tPlot);
-    ekf.measure(tu, b, r, ox, oy);
-    const auto ieStep = ie.measure(tu, b, r, ox, oy);
-    imm.update(tu, b, r, ox, oy);
-    abg.update(tu, ox + r * std::sin(b), oy + r * std::cos(b));
+    bank.measure(tu, b, r, ox, oy);
 
     // The bound along the truth: CV with the EKF's white acceleration, the plot's information.
     const double dx = tx - ox, dy = ty - oy, r2 = dx * dx + dy * dy, rr = std::sqrt(r2);
@@ -125,28 +172,8 @@ ManoeuvreRun runManoeuvreTrial(const ManoeuvreTrial& m, const TrackerConfigs& co
     out.tS.push_back(tPlot);
     out.pcrbPosM.push_back(std::sqrt(bound(0, 0) + bound(1, 1)));
 
-    // Estimates of target position and velocity over ground by each tracker.
-    std::array<std::optional<std::array<double, 4>>, kTrackerKinds> estimates;
-    namespace rp = reckoner::est::relpolar;
-    const auto fromRelative =
-        [&](const track::InputEstimationEkf& f) -> std::optional<std::array<double, 4>> {
-      if (!f.initialised()) return std::nullopt;
-      const auto& x = f.belief().x;
-      return std::array<double, 4>{x[rp::kRx] + ox, x[rp::kRy] + oy, x[rp::kVx], x[rp::kVy]};
-    };
-    estimates[kEkf] = fromRelative(ekf);
-    estimates[kEkfIe] = fromRelative(ie);
-    if (abg.plots() >= 2) {
-      const auto& e = abg.estimate();
-      estimates[kAbg] =
-          std::array<double, 4>{e.smoothedPos[0], e.smoothedPos[1], e.smoothedVel[0], e.smoothedVel[1]};
-    }
-    if (imm.initialised()) {
-      const auto g = imm.combined();
-      estimates[kImm] = std::array<double, 4>{g.x[0], g.x[1], g.x[2], g.x[3]};
-    }
-    const std::array<bool, kTrackerKinds> now{false, ieStep.manoeuvring, false,
-                                              imm.initialised() && imm.manoeuvring()};
+    const auto estimates = bank.estimates();
+    const auto now = bank.flags();
     const bool before = !manoeuvres || tPlot < m.manoeuvreStartS;
     for (int i = 0; i < kTrackerKinds; ++i) {
       TrackerSeries& s = out.trackers[static_cast<std::size_t>(i)];
@@ -160,6 +187,40 @@ ManoeuvreRun runManoeuvreTrial(const ManoeuvreTrial& m, const TrackerConfigs& co
       s.posErrM.push_back(e ? std::hypot((*e)[0] - tx, (*e)[1] - ty) : kNaN);
       s.courseErrRad.push_back(e ? std::abs(angleDiff(bearingOf((*e)[2], (*e)[3]), course)) : kNaN);
       s.speedErrMps.push_back(e ? std::abs(std::hypot((*e)[2], (*e)[3]) - std::hypot(tvx, tvy)) : kNaN);
+    }
+  }
+  return out;
+}
+
+TrackerConfigs sonarTrackers() {
+  TrackerConfigs c;  // seed 001's filter as printed: s = 2, Pfa 0.01, q 1e-6, 1 deg and 20 m
+  c.imm.bearingSdRad = c.ie.bearingSdRad;
+  c.imm.rangeSdM = c.ie.rangeSdM;
+  c.abg.alpha = 0.6;  // few pings, far apart: the paper's upper bound
+  return c;
+}
+
+std::array<std::vector<Seed001TrackerSample>, kTrackerKinds> runSeed001Trackers(const Seed001Scenario& s,
+                                                                                const TrackerConfigs& configs,
+                                                                                std::uint64_t seed) {
+  TrackerBank bank(configs);
+  std::array<std::vector<Seed001TrackerSample>, kTrackerKinds> out;
+  for (const Seed001Ping& p : seed001Pings(s, configs.ie.bearingSdRad, configs.ie.rangeSdM, seed)) {
+    bank.measure(fromSeconds(p.stampS), p.bearingRad, p.rangeM, p.observerXM, p.observerYM);
+    const auto estimates = bank.estimates();
+    const auto flags = bank.flags();
+    for (int k = 0; k < kTrackerKinds; ++k) {
+      const auto& e = estimates[static_cast<std::size_t>(k)];
+      if (!e || p.index < 2) continue;
+      Seed001TrackerSample r;
+      r.index = p.index;
+      r.tS = p.tS;
+      const double range = std::hypot((*e)[0] - p.observerXM, (*e)[1] - p.observerYM);
+      r.rangeErrorPct = 100.0 * std::abs(range - p.trueRangeM) / p.trueRangeM;
+      r.courseErrorDeg = std::abs(radToDeg(angleDiff(bearingOf((*e)[2], (*e)[3]), p.trueCourseRad)));
+      r.speedErrorMps = std::abs(std::hypot((*e)[2], (*e)[3]) - p.trueSpeedMps);
+      r.manoeuvring = flags[static_cast<std::size_t>(k)];
+      out[static_cast<std::size_t>(k)].push_back(r);
     }
   }
   return out;

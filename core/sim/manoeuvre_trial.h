@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "sim/seed001.h"
 #include "tracking/alpha_beta_gamma.h"
 #include "tracking/imm.h"
 #include "tracking/input_estimation.h"
@@ -64,5 +65,23 @@ struct ManoeuvreRun {
 
 ManoeuvreRun runManoeuvreTrial(const ManoeuvreTrial& trial, const TrackerConfigs& configs,
                                std::uint64_t seed);
+
+/// The four trackers at seed 001's sonar rates: the paper's EKF settings (s = 2, Pfa 0.01, 1 deg and
+/// 20 m), the IMM with the sonar's noise, abg at alpha 0.6.
+TrackerConfigs sonarTrackers();
+
+/// One echo's errors for one tracker (the estimate against the truth at the echo's reflection time,
+/// range from the observer at the stamp).
+struct Seed001TrackerSample {
+  int index = 0;
+  double tS = 0.0;
+  double rangeErrorPct = 0.0, courseErrorDeg = 0.0, speedErrorMps = 0.0;
+  bool manoeuvring = false;
+};
+
+/// Seed 001's scenario (sonar pings) through the four trackers, one run.
+std::array<std::vector<Seed001TrackerSample>, kTrackerKinds> runSeed001Trackers(const Seed001Scenario& s,
+                                                                                const TrackerConfigs& configs,
+                                                                                std::uint64_t seed);
 
 }  // namespace reckoner::sim

@@ -49,11 +49,10 @@ double pingIntervalS(double rangeM) {
   return 80.0;
 }
 
-std::vector<Seed001Sample> runSeed001(const Seed001Scenario& s, const track::InputEstimationConfig& filter,
+std::vector<Seed001Ping> seed001Pings(const Seed001Scenario& s, double bearingSdRad, double rangeSdM,
                                       std::uint64_t seed) {
-  track::InputEstimationEkf ekf(filter);
   Rng rng(seed, 1);
-  std::vector<Seed001Sample> out;
+  std::vector<Seed001Ping> out;
   double ping = 0.0;
   for (int index = 1;; ++index) {
     // The reflection time: ping time plus the one-way travel time (fixed point, converges in a few steps).
@@ -64,30 +63,49 @@ std::vector<Seed001Sample> runSeed001(const Seed001Scenario& s, const track::Inp
     }
     if (tr > s.durationS) break;
     const Kinematics o = observerAt(s, tr), g = targetAt(s, tr);
-    const double rangeTrue = std::hypot(g.x - o.x, g.y - o.y);
-    const double bearing = wrapTwoPi(bearingOf(g.x - o.x, g.y - o.y) + rng.normal(0.0, filter.bearingSdRad));
-    const double range = rangeTrue + rng.normal(0.0, filter.rangeSdM);
+    Seed001Ping p;
+    p.index = index;
+    p.tS = tr;
+    p.trueRangeM = std::hypot(g.x - o.x, g.y - o.y);
+    p.trueXM = g.x;
+    p.trueYM = g.y;
+    p.trueCourseRad = g.course;
+    p.trueSpeedMps = g.speed;
+    p.bearingRad = wrapTwoPi(bearingOf(g.x - o.x, g.y - o.y) + rng.normal(0.0, bearingSdRad));
+    p.rangeM = p.trueRangeM + rng.normal(0.0, rangeSdM);
     // The filter stamps the echo with the measured range (as the paper recalculates its times).
-    const double stamp = ping + range / s.soundSpeedMps;
-    const Kinematics os = observerAt(s, stamp);
-    const track::InputEstimationStep step = ekf.measure(fromSeconds(stamp), bearing, range, os.x, os.y);
-    if (ekf.initialised() && index >= 2) {
-      const auto& x = ekf.belief().x;
-      namespace rp = est::relpolar;
-      Seed001Sample r;
-      r.index = index;
-      r.tS = tr;
-      r.trueRangeM = rangeTrue;
-      r.rangeErrorPct = 100.0 * std::abs(std::hypot(x[rp::kRx], x[rp::kRy]) - rangeTrue) / rangeTrue;
-      r.courseErrorDeg = std::abs(radToDeg(angleDiff(bearingOf(x[rp::kVx], x[rp::kVy]), g.course)));
-      r.speedErrorMps = std::abs(std::hypot(x[rp::kVx], x[rp::kVy]) - g.speed);
-      r.tested = step.tested;
-      r.d = step.d;
-      r.detected = step.detected;
-      r.manoeuvring = step.manoeuvring;
-      out.push_back(r);
-    }
-    ping += pingIntervalS(range);
+    p.stampS = ping + p.rangeM / s.soundSpeedMps;
+    const Kinematics os = observerAt(s, p.stampS);
+    p.observerXM = os.x;
+    p.observerYM = os.y;
+    out.push_back(p);
+    ping += pingIntervalS(p.rangeM);
+  }
+  return out;
+}
+
+std::vector<Seed001Sample> runSeed001(const Seed001Scenario& s, const track::InputEstimationConfig& filter,
+                                      std::uint64_t seed) {
+  track::InputEstimationEkf ekf(filter);
+  std::vector<Seed001Sample> out;
+  for (const Seed001Ping& p : seed001Pings(s, filter.bearingSdRad, filter.rangeSdM, seed)) {
+    const track::InputEstimationStep step =
+        ekf.measure(fromSeconds(p.stampS), p.bearingRad, p.rangeM, p.observerXM, p.observerYM);
+    if (!ekf.initialised() || p.index < 2) continue;
+    const auto& x = ekf.belief().x;
+    namespace rp = est::relpolar;
+    Seed001Sample r;
+    r.index = p.index;
+    r.tS = p.tS;
+    r.trueRangeM = p.trueRangeM;
+    r.rangeErrorPct = 100.0 * std::abs(std::hypot(x[rp::kRx], x[rp::kRy]) - p.trueRangeM) / p.trueRangeM;
+    r.courseErrorDeg = std::abs(radToDeg(angleDiff(bearingOf(x[rp::kVx], x[rp::kVy]), p.trueCourseRad)));
+    r.speedErrorMps = std::abs(std::hypot(x[rp::kVx], x[rp::kVy]) - p.trueSpeedMps);
+    r.tested = step.tested;
+    r.d = step.d;
+    r.detected = step.detected;
+    r.manoeuvring = step.manoeuvring;
+    out.push_back(r);
   }
   return out;
 }

@@ -45,6 +45,19 @@ struct Seed001Sample {
 /// Ping interval for a range, seed 001 section IV: 10, 20, 40 or 80 s below 5, 10, 20 km and beyond.
 double pingIntervalS(double rangeM);
 
+/// One sonar echo of one run: when it was reflected and when the filter stamps it (ping time plus the
+/// measured range over the sound speed), the measurement, the observer at the stamp, and the truth.
+struct Seed001Ping {
+  int index = 0;  ///< 1-based
+  double tS = 0.0, stampS = 0.0;
+  double bearingRad = 0.0, rangeM = 0.0;
+  double observerXM = 0.0, observerYM = 0.0;
+  double trueRangeM = 0.0, trueXM = 0.0, trueYM = 0.0, trueCourseRad = 0.0, trueSpeedMps = 0.0;
+};
+/// The echoes of one run (the next ping follows the interval of the measured range).
+std::vector<Seed001Ping> seed001Pings(const Seed001Scenario& scenario, double bearingSdRad, double rangeSdM,
+                                      std::uint64_t seed);
+
 /// One run; the filter is configured by `filter` (bearing and range noise are also the sensor's).
 std::vector<Seed001Sample> runSeed001(const Seed001Scenario& scenario,
                                       const track::InputEstimationConfig& filter, std::uint64_t seed);

@@ -72,7 +72,9 @@ constexpr const char* kUsage =
     "  reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]\n"
     "  reckoner-cli seed001 [--runs N] [--turn] [--seed N] [--window S] [--pfa P] [--q Q] [--bearing-sd "
     "DEG]\n"
-    "               [--init paper|two-point]   (seed 001: input-estimation EKF, Monte Carlo per sample)\n"
+    "               [--init paper|two-point] [--correction none|paper|refilter] [--jump-sd M/S]   (seed 001: "
+    "input-estimation "
+    "EKF, Monte Carlo per sample)\n"
     "  reckoner-cli seed003 [--runs N] [--alpha A] [--sweep S] [--noise M] [--seed N]   (alpha-beta-gamma "
     "2drms)\n"
     "  reckoner-cli manoeuvre-report [--runs N] [--turn DEG | --speed-change KN] [--seed N]\n"
@@ -328,8 +330,9 @@ int cmdSeed001(int argc, char** argv) {
     else
       rest.push_back(argv[i]);
   }
-  const Args a = parseArgs(static_cast<int>(rest.size()), rest.data(), 2,
-                           {"runs", "seed", "window", "pfa", "q", "bearing-sd", "init"});
+  const Args a =
+      parseArgs(static_cast<int>(rest.size()), rest.data(), 2,
+                {"runs", "seed", "window", "pfa", "q", "bearing-sd", "init", "correction", "jump-sd"});
   if (!a.positional.empty()) throw UsageError("seed001: unexpected argument '" + a.positional.front() + "'");
   const auto opt = [&a](const std::string& k) { return a.options.count(k) > 0; };
   const int runs = opt("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 100;
@@ -340,6 +343,14 @@ int cmdSeed001(int argc, char** argv) {
   if (opt("q")) cfg.processNoiseQ = parseReal("q", a.options.at("q"), 0.0, 100.0);
   if (opt("bearing-sd"))
     cfg.bearingSdRad = degToRad(parseReal("bearing-sd", a.options.at("bearing-sd"), 1e-6, 30.0));
+  if (opt("jump-sd")) cfg.jumpSdMps = parseReal("jump-sd", a.options.at("jump-sd"), 1e-3, 100.0);
+  if (opt("correction")) {
+    const std::string& c = a.options.at("correction");
+    using C = track::InputEstimationConfig::Correction;
+    if (c != "paper" && c != "refilter" && c != "none")
+      throw UsageError("--correction: expected none, paper or refilter, got '" + c + "'");
+    cfg.correction = c == "none" ? C::None : c == "paper" ? C::Paper : C::Refilter;
+  }
   if (opt("init")) {
     const std::string& i = a.options.at("init");
     if (i != "paper" && i != "two-point")

@@ -92,7 +92,7 @@ class TrackerBank {
 
  private:
   static track::InputEstimationConfig neverDeclaring(track::InputEstimationConfig c) {
-    c.falseAlarmProbability = 1e-15;  // the EKF alone
+    c.correction = track::InputEstimationConfig::Correction::None;  // the EKF alone
     return c;
   }
   track::InputEstimationEkf ekf_, ie_;

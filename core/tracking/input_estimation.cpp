@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +33,7 @@ std::string InputEstimationConfig::check() const {
   if (window < 1 || window > 50) return "window must lie in [1, 50]";
   if (!(falseAlarmProbability > 0.0 && falseAlarmProbability < 1.0))
     return "false-alarm probability must lie in (0, 1)";
+  if (!(jumpSdMps > 0.0) || !std::isfinite(jumpSdMps)) return "velocity jump sd must be positive";
   return {};
 }
 
@@ -53,13 +55,13 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
   }
   if (!belief_) {
     if (!previous_ || t <= previous_->timeUs) {
-      previous_ = Previous{t, bearingRad, rangeM, observerXM, observerYM};
+      previous_ = Sample{t, bearingRad, rangeM, observerXM, observerYM};
       return step;
     }
     // Eqs. 30 and 31: position from the second measurement, velocity from the difference of the two
     // (divided by t, the bracket eq. 31 lacks), plus the observer's own velocity: the state holds the
     // target's velocity over ground, and the difference of relative positions is the relative one.
-    const Previous& p = *previous_;
+    const Sample& p = *previous_;
     const double dt = toSeconds(t - p.timeUs);
     const auto [r1, P1] = toCartesian(p.bearingRad, p.rangeM, config_.bearingSdRad, config_.rangeSdM);
     const auto [r2, P2] = toCartesian(bearingRad, rangeM, config_.bearingSdRad, config_.rangeSdM);
@@ -79,7 +81,7 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
       g.P.block<2, 2>(kRx, kVx) = P2 / dt;
     }
     belief_ = g;
-    previous_ = Previous{t, bearingRad, rangeM, observerXM, observerYM};
+    previous_ = Sample{t, bearingRad, rangeM, observerXM, observerYM};
     step.manoeuvring = manoeuvring_;
     return step;
   }
@@ -94,15 +96,14 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
   InputWindow<rp::kStateDim>::Entry entry;
   entry.Phi = rp::transition(dt);
   entry.G = rp::inputGain(dt);
+  const Sample from = *previous_, to{t, bearingRad, rangeM, observerXM, observerYM};
   est::Gaussian<rp::kStateDim> g = *belief_;
-  if (!est::predictLinear(g, entry.Phi, rp::processNoise(config_.processNoiseQ, dt))) {
+  if (!predict(g, from, to, std::nullopt)) {
     step.update.status = est::UpdateStatus::RejectedNumerical;
     step.manoeuvring = manoeuvring_;
     return step;
   }
-  g.x[kRx] -= observerXM - previous_->observerXM;
-  g.x[kRy] -= observerYM - previous_->observerYM;
-  previous_ = Previous{t, bearingRad, rangeM, observerXM, observerYM};
+  previous_ = to;
 
   // Update (eqs. 11 to 13, Joseph form).
   const rp::BearingRangeModel model;
@@ -112,9 +113,11 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
   entry.H = model.jacobian(g.x);
   const rp::Covariance prior = g.P;
   step.update = est::update(g, model, est::Vec<2>(bearingRad, rangeM), R, 0.0);
+  const est::Gaussian<rp::kStateDim> before = *belief_;
   belief_ = g;  // the prediction, updated when the update was accepted
   if (!step.update.applied()) {
     window_.clear();
+    stored_.clear();
     step.manoeuvring = manoeuvring_;
     return step;
   }
@@ -123,6 +126,8 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
   const Eigen::LDLT<est::Mat<2>> ldlt(entry.S);
   entry.W = ldlt.solve(entry.H * prior).transpose();  // K = P H^T S^-1 (S and P symmetric)
   window_.push(entry);
+  stored_.push_back({from, to, before});
+  while (static_cast<int>(stored_.size()) > window_.length()) stored_.pop_front();
   estimateInput(step);
   step.manoeuvring = manoeuvring_;
   return step;
@@ -135,19 +140,80 @@ void InputEstimationEkf::estimateInput(InputEstimationStep& step) {
   step.tested = true;
   step.u = e.u;
   step.d = e.d;
-  if (e.d < threshold_) {
+  if (e.d < threshold_ || config_.correction == InputEstimationConfig::Correction::None) {
     manoeuvring_ = false;  // the input is no longer significant: the manoeuvre has ended
     return;
   }
-  est::Gaussian<rp::kStateDim> g = *belief_;
-  g.x += e.M * e.u;
-  g.P += e.M * e.L * e.M.transpose();
-  est::symmetrise(g.P);
-  if (!g.x.allFinite() || !g.P.allFinite()) return;
-  belief_ = g;
+  if (config_.correction == InputEstimationConfig::Correction::Refilter) {
+    if (!refilterWindow()) return;
+  } else {
+    est::Gaussian<rp::kStateDim> g = *belief_;
+    g.x += e.M * e.u;
+    g.P += e.M * e.L * e.M.transpose();
+    est::symmetrise(g.P);
+    if (!g.x.allFinite() || !g.P.allFinite()) return;
+    belief_ = g;
+  }
   step.detected = true;
   manoeuvring_ = true;
   window_.clear();  // the stored innovations belong to the uncorrected estimate
+  stored_.clear();
+}
+
+bool InputEstimationEkf::predict(est::Gaussian<rp::kStateDim>& g, const Sample& from, const Sample& to,
+                                 std::optional<double> jumpFraction) const {
+  const double dt = toSeconds(to.timeUs - from.timeUs);
+  const double f = jumpFraction.value_or(1.0);
+  const double dt1 = f * dt, dt2 = dt - dt1;
+  if (!est::predictLinear(g, rp::transition(dt1), rp::processNoise(config_.processNoiseQ, dt1))) return false;
+  if (jumpFraction) {
+    g.P(kVx, kVx) += config_.jumpSdMps * config_.jumpSdMps;
+    g.P(kVy, kVy) += config_.jumpSdMps * config_.jumpSdMps;
+  }
+  if (dt2 > 0.0 && !est::predictLinear(g, rp::transition(dt2), rp::processNoise(config_.processNoiseQ, dt2)))
+    return false;
+  g.x[kRx] -= to.observerXM - from.observerXM;
+  g.x[kRy] -= to.observerYM - from.observerYM;
+  return true;
+}
+
+bool InputEstimationEkf::refilterWindow() {
+  // Every onset: in which of the window's intervals, and where in it (quarters), the velocity jumped.
+  // The likeliest (largest summed Gaussian log-likelihood of the window's innovations) is adopted.
+  const rp::BearingRangeModel model;
+  const est::Mat<2> R =
+      est::Vec<2>(config_.bearingSdRad * config_.bearingSdRad, config_.rangeSdM * config_.rangeSdM)
+          .asDiagonal();
+  std::optional<est::Gaussian<rp::kStateDim>> best;
+  double bestLogLik = -std::numeric_limits<double>::infinity();
+  bool bestIsJump = false;
+  // j == size(): no jump at all, the filter as it ran (marginal likelihoods: a jump must explain the
+  // window better than its wide prior costs).
+  for (std::size_t j = 0; j <= stored_.size(); ++j) {
+    for (const double f : {0.0, 0.25, 0.5, 0.75}) {
+      if (j == stored_.size() && f > 0.0) break;
+      est::Gaussian<rp::kStateDim> g = stored_.front().before;
+      double logLik = 0.0;
+      bool ok = true;
+      for (std::size_t i = 0; i < stored_.size() && ok; ++i) {
+        const Stored& s = stored_[i];
+        ok = predict(g, s.from, s.to, i == j ? std::optional(f) : std::nullopt);
+        if (!ok) break;
+        const auto rep = est::update(g, model, est::Vec<2>(s.to.bearingRad, s.to.rangeM), R, 0.0);
+        ok = rep.applied();
+        const double det = rep.S(0, 0) * rep.S(1, 1) - rep.S(0, 1) * rep.S(1, 0);
+        logLik -= 0.5 * (rep.nis + std::log(std::max(det, 1e-300)));
+      }
+      if (ok && g.x.allFinite() && logLik > bestLogLik) {
+        bestLogLik = logLik;
+        best = g;
+        bestIsJump = j < stored_.size();
+      }
+    }
+  }
+  if (!best || !bestIsJump) return false;
+  belief_ = *best;
+  return true;
 }
 
 }  // namespace reckoner::track

@@ -5,7 +5,13 @@
 // weighted least squares from the innovations, declares a manoeuvre when d(u) = u^T L^-1 u passes the
 // chi-square threshold for the chosen false-alarm probability, and then corrects the state by M u and
 // the covariance by M L M^T. The manoeuvre ends when the estimate is no longer significant.
+// Besides the paper's correction, a declared manoeuvre can instead be corrected by re-filtering the
+// window from its start with a velocity jump at the most likely time (Correction::Refilter): the
+// window's evidence is used once, with the right geometry, where M u spreads a constant acceleration
+// over the whole window.
 // Deviations from the printed equations, with reasons, are in docs/manoeuvres.md.
+#include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 
@@ -29,6 +35,13 @@ struct InputEstimationConfig {
   /// The initial covariance: seed 001 eq. 32 (each state uniform on +-its initial value: x^2 / 3), or
   /// the covariance of the two-point difference itself (docs/manoeuvres.md).
   bool paperInitialCovariance = false;
+  enum class Correction : std::uint8_t {
+    None,      ///< the EKF alone: d(u) is computed and reported, nothing is declared or corrected
+    Paper,     ///< x += M u, P += M L M' (eqs. 28 and 29)
+    Refilter,  ///< the window again from its start, with a velocity jump at the likeliest time
+  };
+  Correction correction = Correction::Refilter;
+  double jumpSdMps = 4.0;  ///< Refilter: sd of the velocity jump per axis (the prior of its size)
   /// Empty when valid, else the problem.
   [[nodiscard]] std::string check() const;
 };
@@ -62,17 +75,29 @@ class InputEstimationEkf {
   [[nodiscard]] const InputEstimationConfig& config() const { return config_; }
 
  private:
+  struct Sample {
+    TimeUs timeUs;
+    double bearingRad, rangeM, observerXM, observerYM;
+  };
   void estimateInput(InputEstimationStep& step);
+  /// Predicts g from one sample's time to the next's (the observer's displacement included); with a
+  /// jump fraction f, a velocity jump (jumpSdMps) happens at from + f (to - from).
+  [[nodiscard]] bool predict(est::Gaussian<rp::kStateDim>& g, const Sample& from, const Sample& to,
+                             std::optional<double> jumpFraction) const;
+  /// Correction::Refilter; false (nothing changed) when no hypothesis could be filtered.
+  bool refilterWindow();
 
   InputEstimationConfig config_;
   double threshold_ = 0.0;
   std::optional<est::Gaussian<rp::kStateDim>> belief_;
-  struct Previous {
-    TimeUs timeUs;
-    double bearingRad, rangeM, observerXM, observerYM;
-  };
-  std::optional<Previous> previous_;
+  std::optional<Sample> previous_;
   InputWindow<rp::kStateDim> window_;
+  /// Per window entry: the update's samples and the belief before it (Refilter).
+  struct Stored {
+    Sample from, to;
+    est::Gaussian<rp::kStateDim> before;
+  };
+  std::deque<Stored> stored_;
   bool manoeuvring_ = false;
 };
 

@@ -560,22 +560,23 @@ int cmdManoeuvreReport(int argc, char** argv) {
         "of samples inside all three, flags per run\n");
     std::printf(
         "  turn 100 -> 180 deg at 540 s: runs flagged by the 9th sample (the paper's), mean course and speed "
-        "errors at samples 10, 13 and 20\n");
-    std::printf("  %-24s %8s %8s %8s %8s %8s | %8s %16s %16s %16s\n", "tracker", "range%", "crs deg",
-                "spd m/s", "inside", "flags", "by 9th", "crs/spd @10", "crs/spd @13", "crs/spd @20");
+        "errors at samples 10, 13 and 20, position RMSE from sample 10 and its ratio to the PCRB\n");
+    std::printf("  %-24s %7s %7s %7s %6s %7s %7s %5s | %6s %14s %14s %14s %7s %7s\n", "tracker", "range%",
+                "crs deg", "spd m/s", "inside", "RMSE m", "/PCRB", "flags", "by 9th", "crs/spd @10",
+                "crs/spd @13", "crs/spd @20", "RMSE m", "/PCRB");
     sim::Seed001Scenario straight;
     sim::Seed001Scenario turning;
     turning.turn = sim::Seed001Scenario::Turn{};
     struct Acc {
-      double range = 0, crs = 0, spd = 0, inside = 0;
-      long n = 0, flags = 0, byNinth = 0;
+      double range = 0, crs = 0, spd = 0, inside = 0, se = 0, bound2 = 0, seTurn = 0, bound2Turn = 0;
+      long n = 0, flags = 0, byNinth = 0, nTurn = 0;
       std::map<int, std::pair<double, double>> at;  // sample -> sums
       std::map<int, int> atN;
     };
     std::array<Acc, sim::kTrackerKinds> acc;
     for (int r = 0; r < runs; ++r) {
-      const auto s0 = sim::runSeed001Trackers(straight, cfg, seed + static_cast<std::uint64_t>(r));
-      const auto s1 = sim::runSeed001Trackers(turning, cfg, seed + static_cast<std::uint64_t>(r));
+      const auto s0 = sim::runSeed001Trackers(straight, cfg, seed + static_cast<std::uint64_t>(r)).trackers;
+      const auto s1 = sim::runSeed001Trackers(turning, cfg, seed + static_cast<std::uint64_t>(r)).trackers;
       for (int k = 0; k < sim::kTrackerKinds; ++k) {
         Acc& q = acc[static_cast<std::size_t>(k)];
         bool was = false;
@@ -587,11 +588,18 @@ int cmdManoeuvreReport(int argc, char** argv) {
           q.crs += x.courseErrorDeg;
           q.spd += x.speedErrorMps;
           q.inside += x.rangeErrorPct < 8.0 && x.courseErrorDeg < 3.0 && x.speedErrorMps < 3.0 ? 1 : 0;
+          q.se += x.positionErrorM * x.positionErrorM;
+          q.bound2 += x.pcrbPositionM * x.pcrbPositionM;
           ++q.n;
         }
         bool flagged = false;
         for (const auto& x : s1[static_cast<std::size_t>(k)]) {
           flagged = flagged || (x.manoeuvring && x.tS >= 540.0 && x.index <= 9);
+          if (x.index >= 10) {
+            q.seTurn += x.positionErrorM * x.positionErrorM;
+            q.bound2Turn += x.pcrbPositionM * x.pcrbPositionM;
+            ++q.nTurn;
+          }
           for (const int at : {10, 13, 20}) {
             if (x.index != at) continue;
             q.at[at].first += x.courseErrorDeg;
@@ -619,11 +627,12 @@ int cmdManoeuvreReport(int argc, char** argv) {
           std::snprintf(cell[c++], sizeof cell[0], "%.1f / %.2f", it->second.first / m,
                         it->second.second / m);
       }
-      std::printf("  %-24s %8.2f %8.2f %8.2f %7.0f%% %8s | %8s %16s %16s %16s\n",
+      const double nt = static_cast<double>(std::max(1L, q.nTurn));
+      std::printf("  %-24s %7.2f %7.2f %7.2f %5.0f%% %7.1f %7.2f %5s | %6s %14s %14s %14s %7.1f %7.2f\n",
                   sim::trackerName(static_cast<sim::TrackerKind>(k)), q.range / n, q.crs / n, q.spd / n,
-                  100.0 * q.inside / n,
+                  100.0 * q.inside / n, std::sqrt(q.se / n), std::sqrt(q.se / q.bound2),
                   flags ? std::to_string(static_cast<double>(q.flags) / runs).substr(0, 4).c_str() : "-", by9,
-                  cell[0], cell[1], cell[2]);
+                  cell[0], cell[1], cell[2], std::sqrt(q.seTurn / nt), std::sqrt(q.seTurn / q.bound2Turn));
     }
   }
 

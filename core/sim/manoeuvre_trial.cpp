@@ -50,6 +50,54 @@ TrackerConfigs radarRateTrackers(const ManoeuvreTrial& trial) {
 }
 
 namespace {
+/// The posterior Cramer-Rao bound of the target's position along its true trajectory, for range and
+/// bearing measurements from a known observer and a constant-velocity model with white acceleration q.
+class PositionBound {
+ public:
+  PositionBound(double q, double initialSpeedSdMps, double bearingSdRad, double rangeSdM)
+      : q_(q),
+        speedSd_(initialSpeedSdMps),
+        R_(est::Vec<2>(bearingSdRad * bearingSdRad, rangeSdM * rangeSdM).asDiagonal()) {}
+
+  /// A measurement at t of the target at (tx, ty) from (ox, oy); returns sqrt(trace) of the position
+  /// bound.
+  double measure(double tS, double tx, double ty, double ox, double oy) {
+    const double dx = tx - ox, dy = ty - oy, r2 = dx * dx + dy * dy, rr = std::sqrt(r2);
+    est::MatRC<2, 4> H = est::MatRC<2, 4>::Zero();
+    H(0, 0) = dy / r2;
+    H(0, 1) = -dx / r2;
+    H(1, 0) = dx / rr;
+    H(1, 1) = dy / rr;
+    if (!pcrb_) {
+      est::Mat<4> P0 = est::Mat<4>::Zero();
+      P0.topLeftCorner<2, 2>() = est::Mat<2>::Identity() * 1e8;  // position from the first plot only
+      P0(2, 2) = P0(3, 3) = speedSd_ * speedSd_;
+      pcrb_.emplace(P0);
+      pcrb_->measure(H, R_);
+    } else {
+      const double dt = tS - lastS_;
+      est::Mat<4> F = est::Mat<4>::Identity();
+      F(0, 2) = F(1, 3) = dt;
+      est::Mat<4> Q = est::Mat<4>::Zero();
+      for (int a = 0; a < 2; ++a) {
+        Q(a, a) = q_ * dt * dt * dt / 3.0;
+        Q(a, a + 2) = Q(a + 2, a) = q_ * dt * dt / 2.0;
+        Q(a + 2, a + 2) = q_ * dt;
+      }
+      pcrb_->step(F, Q, H, R_);
+    }
+    lastS_ = tS;
+    const est::Mat<4> bound = pcrb_->bound();
+    return std::sqrt(bound(0, 0) + bound(1, 1));
+  }
+
+ private:
+  double q_, speedSd_;
+  est::Mat<2> R_;
+  std::optional<metrics::Pcrb<4, 2>> pcrb_;
+  double lastS_ = 0.0;
+};
+
 /// The four trackers on the same measurements.
 class TrackerBank {
  public:
@@ -123,10 +171,8 @@ ManoeuvreRun runManoeuvreTrial(const ManoeuvreTrial& m, const TrackerConfigs& co
     spec.schedule.push_back(e);
   }
   VesselMotionModel target(spec, est::GaussMarkov{0.0, 1.0}, Rng(seed, kStreamTargetBase));
-  double lastPlot = 0.0;
   std::array<bool, kTrackerKinds> flag{};
-  std::optional<metrics::Pcrb<4, 2>> pcrb;
-  const est::Mat<2> R = est::Vec<2>(m.bearingSdRad * m.bearingSdRad, m.rangeSdM * m.rangeSdM).asDiagonal();
+  PositionBound pcrb(m.boundProcessNoiseQ, configs.imm.initialSpeedSdMps, m.bearingSdRad, m.rangeSdM);
   for (int k = 0; k * m.sweepS <= m.durationS + 1e-9; ++k) {
     const double tPlot = k * m.sweepS;
     target.advanceTo(fromSeconds(tPlot));
@@ -142,35 +188,9 @@ ManoeuvreRun runManoeuvreTrial(const ManoeuvreTrial& m, const TrackerConfigs& co
     bank.measure(tu, b, r, ox, oy);
 
     // The bound along the truth: CV with the EKF's white acceleration, the plot's information.
-    const double dx = tx - ox, dy = ty - oy, r2 = dx * dx + dy * dy, rr = std::sqrt(r2);
-    est::MatRC<2, 4> H = est::MatRC<2, 4>::Zero();
-    H(0, 0) = dy / r2;
-    H(0, 1) = -dx / r2;
-    H(1, 0) = dx / rr;
-    H(1, 1) = dy / rr;
-    if (!pcrb) {
-      est::Mat<4> P0 = est::Mat<4>::Zero();
-      P0.topLeftCorner<2, 2>() = est::Mat<2>::Identity() * 1e8;  // position from the first plot only
-      P0(2, 2) = P0(3, 3) = configs.imm.initialSpeedSdMps * configs.imm.initialSpeedSdMps;
-      pcrb.emplace(P0);
-      pcrb->measure(H, R);
-    } else {
-      const double dt = tPlot - lastPlot;
-      est::Mat<4> F = est::Mat<4>::Identity();
-      F(0, 2) = F(1, 3) = dt;
-      est::Mat<4> Q = est::Mat<4>::Zero();
-      const double q = m.boundProcessNoiseQ;
-      for (int a = 0; a < 2; ++a) {
-        Q(a, a) = q * dt * dt * dt / 3.0;
-        Q(a, a + 2) = Q(a + 2, a) = q * dt * dt / 2.0;
-        Q(a + 2, a + 2) = q * dt;
-      }
-      pcrb->step(F, Q, H, R);
-    }
-    lastPlot = tPlot;
-    const est::Mat<4> bound = pcrb->bound();
+    const double bound = pcrb.measure(tPlot, tx, ty, ox, oy);
     out.tS.push_back(tPlot);
-    out.pcrbPosM.push_back(std::sqrt(bound(0, 0) + bound(1, 1)));
+    out.pcrbPosM.push_back(bound);
 
     const auto estimates = bank.estimates();
     const auto now = bank.flags();
@@ -200,13 +220,15 @@ TrackerConfigs sonarTrackers() {
   return c;
 }
 
-std::array<std::vector<Seed001TrackerSample>, kTrackerKinds> runSeed001Trackers(const Seed001Scenario& s,
-                                                                                const TrackerConfigs& configs,
-                                                                                std::uint64_t seed) {
+Seed001TrackerRun runSeed001Trackers(const Seed001Scenario& s, const TrackerConfigs& configs,
+                                     std::uint64_t seed) {
   TrackerBank bank(configs);
-  std::array<std::vector<Seed001TrackerSample>, kTrackerKinds> out;
+  PositionBound pcrb(configs.ie.processNoiseQ, configs.imm.initialSpeedSdMps, configs.ie.bearingSdRad,
+                     configs.ie.rangeSdM);
+  Seed001TrackerRun out;
   for (const Seed001Ping& p : seed001Pings(s, configs.ie.bearingSdRad, configs.ie.rangeSdM, seed)) {
     bank.measure(fromSeconds(p.stampS), p.bearingRad, p.rangeM, p.observerXM, p.observerYM);
+    const double bound = pcrb.measure(p.stampS, p.trueXM, p.trueYM, p.observerXM, p.observerYM);
     const auto estimates = bank.estimates();
     const auto flags = bank.flags();
     for (int k = 0; k < kTrackerKinds; ++k) {
@@ -220,7 +242,9 @@ std::array<std::vector<Seed001TrackerSample>, kTrackerKinds> runSeed001Trackers(
       r.courseErrorDeg = std::abs(radToDeg(angleDiff(bearingOf((*e)[2], (*e)[3]), p.trueCourseRad)));
       r.speedErrorMps = std::abs(std::hypot((*e)[2], (*e)[3]) - p.trueSpeedMps);
       r.manoeuvring = flags[static_cast<std::size_t>(k)];
-      out[static_cast<std::size_t>(k)].push_back(r);
+      r.positionErrorM = std::hypot((*e)[0] - p.trueXM, (*e)[1] - p.trueYM);
+      r.pcrbPositionM = bound;
+      out.trackers[static_cast<std::size_t>(k)].push_back(r);
     }
   }
   return out;

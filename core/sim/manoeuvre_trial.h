@@ -77,11 +77,16 @@ struct Seed001TrackerSample {
   double tS = 0.0;
   double rangeErrorPct = 0.0, courseErrorDeg = 0.0, speedErrorMps = 0.0;
   bool manoeuvring = false;
+  double positionErrorM = 0.0;
+  double pcrbPositionM = 0.0;  ///< sqrt of the trace of the position PCRB at this echo
+};
+struct Seed001TrackerRun {
+  std::array<std::vector<Seed001TrackerSample>, kTrackerKinds> trackers;
 };
 
-/// Seed 001's scenario (sonar pings) through the four trackers, one run.
-std::array<std::vector<Seed001TrackerSample>, kTrackerKinds> runSeed001Trackers(const Seed001Scenario& s,
-                                                                                const TrackerConfigs& configs,
-                                                                                std::uint64_t seed);
+/// Seed 001's scenario (sonar pings) through the four trackers, one run. The PCRB assumes the EKF's
+/// white acceleration (q = configs.ie.processNoiseQ).
+Seed001TrackerRun runSeed001Trackers(const Seed001Scenario& s, const TrackerConfigs& configs,
+                                     std::uint64_t seed);
 
 }  // namespace reckoner::sim

@@ -189,6 +189,7 @@ void BM_RadarSweep(benchmark::State& state) {
   const int clutter = static_cast<int>(state.range(1));
   track::TrackManagerConfig c;
   c.filter = ttkfConfig();
+  c.kind = static_cast<track::TrackerKind>(state.range(2));
   c.capacity = std::max<std::size_t>(n + 100, 1000);
   c.manualAcquireRadiusM = 300.0;
   track::TrackManager m(c);
@@ -239,7 +240,15 @@ void BM_RadarSweep(benchmark::State& state) {
   state.counters["tracks"] = static_cast<double>(m.activeCount());
   state.counters["largest_cluster"] = static_cast<double>(m.counters().largestCluster);
 }
-BENCHMARK(BM_RadarSweep)->Args({1000, 0})->Args({1000, 200})->Args({100, 0})->Unit(benchmark::kMillisecond);
+// Tracks, clutter plots, filter (track::TrackerKind: 0 ekf, 1 ekf-ie, 2 abg, 3 imm).
+BENCHMARK(BM_RadarSweep)
+    ->Args({1000, 0, 0})
+    ->Args({1000, 200, 0})
+    ->Args({100, 0, 0})
+    ->Args({1000, 0, 1})
+    ->Args({1000, 0, 2})
+    ->Args({1000, 0, 3})
+    ->Unit(benchmark::kMillisecond);
 
 /// One simulated hour at 1 Hz: truth, four sensors, DRKF and output rows (with geodetic conversion).
 void BM_OneHourRun(benchmark::State& state) {

@@ -1,5 +1,5 @@
 // reckoner-cli: headless runs of the Reckoner engine.
-//   reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]
+//   reckoner-cli run SCENARIO [--seed N] [--own-ship-filter drkf|geodetic|lsq] --out DIR [--quiet]
 //   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]
 //   reckoner-cli chart info PATH...
 //   reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association] --out DIR
@@ -34,6 +34,7 @@
 #include "charts/render/chart_renderer.h"
 #include "charts/s57/s57_loader.h"
 #include "common/angles.h"
+#include "estimation/chi_square.h"
 #include "io/input_error.h"
 #include "io/json.h"
 #include "io/own_ship_output.h"
@@ -47,6 +48,7 @@
 #include "sim/comparison.h"
 #include "sim/manoeuvre_trial.h"
 #include "sim/nmea_export.h"
+#include "sim/own_ship_filters.h"
 #include "sim/replay.h"
 #include "sim/scenario_run.h"
 #include "sim/seed001.h"
@@ -58,7 +60,7 @@ using namespace reckoner;
 
 constexpr const char* kUsage =
     "usage:\n"
-    "  reckoner-cli run SCENARIO [--seed N] --out DIR [--quiet]\n"
+    "  reckoner-cli run SCENARIO [--seed N] [--own-ship-filter drkf|geodetic|lsq] --out DIR [--quiet]\n"
     "  reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]\n"
     "  reckoner-cli chart info PATH...   (S-57 cells or folders: metadata and feature counts as JSON)\n"
     "  reckoner-cli chart render PATH... --center LAT,LON --scale N --size WxH [--palette day|dusk|night]\n"
@@ -69,6 +71,9 @@ constexpr const char* kUsage =
     "DIR\n"
     "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
     "  reckoner-cli compare SCENARIO [--runs N] [--targets 1,2,5,10,20] [--threads K] [--seed N] --out DIR\n"
+    "  reckoner-cli own-ship-compare SCENARIO [--runs N] [--threads K] [--seed N]   (DRKF, seed 002 geodetic "
+    "KF "
+    "and least squares)\n"
     "  reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]\n"
     "  reckoner-cli seed001 [--runs N] [--turn] [--seed N] [--window S] [--pfa P] [--q Q] [--bearing-sd "
     "DEG]\n"
@@ -187,14 +192,30 @@ void printTracking(const metrics::TrackingStats& t, const sim::RunResult& run) {
 }
 
 int cmdRun(int argc, char** argv) {
-  const Args a = parseArgs(argc, argv, 2, {"seed", "out"});
+  const Args a = parseArgs(argc, argv, 2, {"seed", "out", "own-ship-filter"});
   if (a.positional.size() != 1) throw UsageError("run needs exactly one SCENARIO");
   const sim::Scenario s = loadScenario(a.positional[0]);
   const std::uint64_t seed =
       a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+  sim::OwnShipFilter filter = sim::OwnShipFilter::Drkf;
+  if (a.options.count("own-ship-filter")) {
+    const auto f = sim::ownShipFilterFromName(a.options.at("own-ship-filter"));
+    if (!f)
+      throw UsageError("--own-ship-filter: expected drkf, geodetic or lsq, got '" +
+                       a.options.at("own-ship-filter") + "'");
+    filter = *f;
+  }
   const std::string out = prepareOutDir(a);
 
-  const sim::RunResult run = sim::runScenario(s, seed);
+  // The DRKF always runs (it feeds the trackers); seed 002's filters beside it when chosen.
+  sim::RunResult run;
+  if (filter == sim::OwnShipFilter::Drkf) {
+    run = sim::runScenario(s, seed);
+  } else {
+    sim::OwnShipFilterRun both = sim::runOwnShipFilters(s, seed);
+    run = std::move(both.drkf);
+    run.rows = std::move(both.rows[static_cast<std::size_t>(filter)]);
+  }
   const auto phases = metrics::summarisePhases(metrics::derivePhases(s), run.rows);
   io::writeOwnShipCsv(out + "/ownship.csv", run.rows);
   io::writeTextFile(out + "/summary.json", io::runSummaryJson(s, run, phases));
@@ -202,8 +223,9 @@ int cmdRun(int argc, char** argv) {
   if (a.quiet) return 0;
 
   const geo::LocalFrame frame(s.origin.latDeg, s.origin.lonDeg);
-  std::printf("Reckoner dead-reckoning run: %s (seed %llu)\n", s.name.c_str(),
-              static_cast<unsigned long long>(seed));
+  std::printf("Reckoner dead-reckoning run: %s (seed %llu, own-ship filter %s%s)\n", s.name.c_str(),
+              static_cast<unsigned long long>(seed), sim::ownShipFilterName(filter),
+              filter == sim::OwnShipFilter::Drkf ? "" : "; NEES of position and velocity, 4 dof");
   if (!s.description.empty()) std::printf("  %s\n", s.description.c_str());
   std::printf("  origin %s %s (UTM zone %d), %.0f s, %zu filter cycles in %.3f s wall time\n\n",
               io::formatLatitude(s.origin.latDeg).c_str(), io::formatLongitude(s.origin.lonDeg).c_str(),
@@ -218,6 +240,40 @@ int cmdRun(int argc, char** argv) {
   if (s.radar.fitted) printTracking(metrics::summariseTracking(run.trackRows, run.targetRows), run);
   std::printf("  wrote %s/ownship.csv%s and %s/summary.json\n", out.c_str(),
               s.radar.fitted ? (", " + out + "/targets.csv").c_str() : "", out.c_str());
+  return 0;
+}
+
+int cmdOwnShipCompare(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"runs", "threads", "seed"});
+  if (a.positional.size() != 1) throw UsageError("own-ship-compare needs exactly one SCENARIO");
+  const sim::Scenario s = loadScenario(a.positional[0]);
+  const int runs =
+      a.options.count("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 20;
+  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = a.options.count("threads")
+                          ? static_cast<int>(parseCount("threads", a.options.at("threads"), 1, 256))
+                          : hw;
+  const std::uint64_t seed =
+      a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+  const auto all = sim::runOwnShipFiltersMonteCarlo(s, runs, threads, seed);
+  const auto bounds = est::averageNeesBounds(4, runs);
+  const auto stats = sim::summariseOwnShipFilters(all, fromSeconds(60.0), bounds);
+  std::printf("own-ship filters on %s, %d runs: with GPS / without GPS (rows after the first 60 s)\n",
+              s.name.c_str(), runs);
+  std::printf(
+      "  mean NEES: position and velocity over ground, 4 dof, averaged over the runs at each time; band "
+      "[%.2f, %.2f] is its 95%% interval for one time\n",
+      bounds.lower, bounds.upper);
+  std::printf("  %-9s %21s %21s %17s %17s %21s\n", "filter", "pos RMSE m", "vel RMSE m/s", "mean NEES",
+              "times in band", "p95 pos error m");
+  for (int k = 0; k < sim::kOwnShipFilterCount; ++k) {
+    const auto& on = stats[static_cast<std::size_t>(k)][0];
+    const auto& off = stats[static_cast<std::size_t>(k)][1];
+    std::printf("  %-9s %10.2f %10.2f %10.3f %10.3f %8.2f %8.2f %7.0f%% %7.0f%% %10.1f %10.1f\n",
+                sim::ownShipFilterName(static_cast<sim::OwnShipFilter>(k)), on.positionRmseM,
+                off.positionRmseM, on.velocityRmseMps, off.velocityRmseMps, on.meanNees, off.meanNees,
+                100.0 * on.shareInBand, 100.0 * off.shareInBand, on.p95PositionErrorM, off.p95PositionErrorM);
+  }
   return 0;
 }
 
@@ -1058,6 +1114,7 @@ int main(int argc, char** argv) {
     if (cmd == "validate") return cmdValidate(argc, argv);
     if (cmd == "imo") return cmdImo(argc, argv);
     if (cmd == "compare") return cmdCompare(argc, argv);
+    if (cmd == "own-ship-compare") return cmdOwnShipCompare(argc, argv);
     if (cmd == "replay") return cmdReplay(argc, argv);
     if (cmd == "export") return cmdExport(argc, argv);
     if (cmd == "chart") return cmdChart(argc, argv);

@@ -1,0 +1,178 @@
+#include "sim/own_ship_filters.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "estimation/ekf.h"
+#include "navigation/geodetic_kf.h"
+#include "navigation/lsq_fusion.h"
+
+namespace reckoner::sim {
+namespace {
+
+/// An OwnShipRow from a grid estimate [x, y, vx, vy] with covariance, against the frame's truth.
+OwnShipRow rowOf(const SimFrame& f, const est::Gaussian<4>& g, const geo::LocalFrame& geo, int rowsApplied) {
+  OwnShipRow r;
+  r.timeUs = f.timeUs;
+  r.trueXM = f.truth.position.xM;
+  r.trueYM = f.truth.position.yM;
+  r.trueVxMps = f.truth.groundVxMps();
+  r.trueVyMps = f.truth.groundVyMps();
+  r.estXM = g.x[0];
+  r.estYM = g.x[1];
+  r.estVxMps = g.x[2];
+  r.estVyMps = g.x[3];
+  r.sdXM = std::sqrt(g.P(0, 0));
+  r.sdYM = std::sqrt(g.P(1, 1));
+  r.sdVxMps = std::sqrt(g.P(2, 2));
+  r.sdVyMps = std::sqrt(g.P(3, 3));
+  const geo::GeoPoint ll = geo.toGeodetic({g.x[0], g.x[1]});
+  r.estLatDeg = ll.latDeg;
+  r.estLonDeg = ll.lonDeg;
+  const est::Vec<4> truth(r.trueXM, r.trueYM, r.trueVxMps, r.trueVyMps);
+  r.nees = est::nees<4>(truth - g.x, g.P);
+  r.sensors = f.sensors;
+  r.rowsApplied = rowsApplied;
+  return r;
+}
+}  // namespace
+
+const char* ownShipFilterName(OwnShipFilter f) {
+  switch (f) {
+    case OwnShipFilter::Drkf:
+      return "drkf";
+    case OwnShipFilter::Geodetic:
+      return "geodetic";
+    case OwnShipFilter::Lsq:
+      return "lsq";
+  }
+  return "?";
+}
+
+std::optional<OwnShipFilter> ownShipFilterFromName(std::string_view name) {
+  for (int i = 0; i < kOwnShipFilterCount; ++i)
+    if (name == ownShipFilterName(static_cast<OwnShipFilter>(i))) return static_cast<OwnShipFilter>(i);
+  return std::nullopt;
+}
+
+OwnShipFilterRun runOwnShipFilters(const Scenario& scenario, std::uint64_t seed) {
+  const auto start = std::chrono::steady_clock::now();
+  SimulationEngine engine(scenario, seed);
+  const geo::LocalFrame& geo = engine.frame();
+  OwnShipFilterRun out;
+  RunResult& run = out.drkf;
+  run.seed = seed;
+
+  // Both start where the DRKF starts, with its covariance.
+  const est::Vec<4> g0 = nav::groundStateOf(engine.drkf().belief());
+  const est::Mat<4> C0 = nav::groundCovarianceOf(engine.drkf().belief());
+  const double sdPos = std::sqrt(0.5 * (C0(0, 0) + C0(1, 1)));
+  const double sdVel = std::sqrt(0.5 * (C0(2, 2) + C0(3, 3)));
+  const geo::GridInfo gi0 = geo.gridInfo({g0[0], g0[1]});
+  // Grid velocity -> true east and north: rotate by the convergence, unscale.
+  const double c = std::cos(gi0.convergenceRad), s = std::sin(gi0.convergenceRad);
+  const double vE = (c * g0[2] + s * g0[3]) / gi0.scale, vN = (-s * g0[2] + c * g0[3]) / gi0.scale;
+  const est::GaussMarkov& a = scenario.filter.acceleration;
+  nav::GeodeticKfConfig gc;
+  gc.accelerationQ = std::max(2.0 * std::exp(-1.0) * a.sigma * a.sigma / a.betaPerS, 1e-8);
+  gc.minSpeedMps = scenario.filter.minSpeedMps;
+  gc.gateProbability = scenario.filter.gateProbability;
+  nav::GeodeticKf geodetic(gc, nav::GeodeticKf::initialBelief(geo, {g0[0], g0[1]}, sdPos, vE, vN, sdVel), 0);
+  est::Gaussian<2> p0;
+  p0.x = g0.head<2>();
+  p0.P = C0.topLeftCorner<2, 2>();
+  nav::LsqNavigator lsq(nav::LsqNavigatorConfig{}, p0, 0);
+
+  while (!engine.finished()) {
+    const SimFrame f = engine.step();
+    run.rows.push_back(makeRow(f, geo));
+    appendSweepRows(f, scenario, geo, run.trackRows, run.targetRows);
+    // The cycle's samples, epoch by epoch (the sensors of one epoch share its time).
+    int geoRows = 0;
+    std::size_t i = 0;
+    while (i < f.measurements.size()) {
+      const TimeUs t = sensors::timeOf(f.measurements[i]);
+      std::size_t j = i;
+      while (j < f.measurements.size() && sensors::timeOf(f.measurements[j]) == t) ++j;
+      const std::span<const sensors::OwnShipSample> epoch(f.measurements.data() + i, j - i);
+      geoRows += geodetic.update(t, epoch, geo).rowsApplied();
+      lsq.update(t, epoch, geo);
+      i = j;
+    }
+    geodetic.predictTo(f.timeUs);
+    OwnShipRow d = run.rows.back();
+    const est::Gaussian<4> dg{nav::groundStateOf(f.estimate), nav::groundCovarianceOf(f.estimate)};
+    d.nees = est::nees<4>(est::Vec<4>(d.trueXM, d.trueYM, d.trueVxMps, d.trueVyMps) - dg.x, dg.P);
+    out.rows[static_cast<std::size_t>(OwnShipFilter::Drkf)].push_back(d);
+    out.rows[static_cast<std::size_t>(OwnShipFilter::Geodetic)].push_back(
+        rowOf(f, geodetic.groundInGrid(geo), geo, geoRows));
+    est::Gaussian<4> lg = lsq.ground();
+    if (lsq.timeUs() < f.timeUs) {  // carry the dead-reckoned position to the row time
+      lg.x.head<2>() += lg.x.tail<2>() * toSeconds(f.timeUs - lsq.timeUs());
+    }
+    out.rows[static_cast<std::size_t>(OwnShipFilter::Lsq)].push_back(rowOf(f, lg, geo, 0));
+  }
+  run.counters = engine.drkf().counters();
+  run.trackCounters = engine.trackers().counters();
+  run.wallTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+std::vector<OwnShipFilterRun> runOwnShipFiltersMonteCarlo(const Scenario& scenario, int runs, int threads,
+                                                          std::uint64_t baseSeed) {
+  std::vector<OwnShipFilterRun> all(static_cast<std::size_t>(std::max(0, runs)));
+  parallelRuns(runs, threads, [&](int i) {
+    all[static_cast<std::size_t>(i)] = runOwnShipFilters(scenario, baseSeed + static_cast<std::uint64_t>(i));
+  });
+  return all;
+}
+
+OwnShipFilterStats summariseOwnShipFilters(const std::vector<OwnShipFilterRun>& runs, TimeUs fromUs,
+                                           const est::ChiSquareBounds& band) {
+  OwnShipFilterStats out{};
+  for (int k = 0; k < kOwnShipFilterCount; ++k) {
+    std::array<double, 2> se{}, ve{};
+    std::array<std::vector<double>, 2> errors;
+    std::map<TimeUs, std::pair<double, int>> neesAt;
+    std::map<TimeUs, int> phaseAt;
+    for (const auto& r : runs) {
+      for (const auto& row : r.rows[static_cast<std::size_t>(k)]) {
+        if (row.timeUs < fromUs) continue;
+        const int ph = row.sensors.isOn(sensors::SensorId::Gps) ? 0 : 1;
+        se[static_cast<std::size_t>(ph)] += row.positionErrorM() * row.positionErrorM();
+        ve[static_cast<std::size_t>(ph)] += row.velocityErrorMps() * row.velocityErrorMps();
+        errors[static_cast<std::size_t>(ph)].push_back(row.positionErrorM());
+        auto& n = neesAt[row.timeUs];
+        n.first += row.nees;
+        ++n.second;
+        phaseAt[row.timeUs] = ph;
+      }
+    }
+    auto& st = out[static_cast<std::size_t>(k)];
+    std::array<long, 2> times{};
+    for (const auto& [t, v] : neesAt) {
+      auto& p = st[static_cast<std::size_t>(phaseAt[t])];
+      const double m = v.first / v.second;
+      p.meanNees += m;
+      p.shareInBand += band.contains(m) ? 1.0 : 0.0;
+      ++times[static_cast<std::size_t>(phaseAt[t])];
+    }
+    for (std::size_t ph = 0; ph < 2; ++ph) {
+      auto& p = st[ph];
+      p.rows = static_cast<long>(errors[ph].size());
+      if (p.rows == 0) continue;
+      const auto n = static_cast<double>(p.rows);
+      p.positionRmseM = std::sqrt(se[ph] / n);
+      p.velocityRmseMps = std::sqrt(ve[ph] / n);
+      p.meanNees /= static_cast<double>(times[ph]);
+      p.shareInBand /= static_cast<double>(times[ph]);
+      std::sort(errors[ph].begin(), errors[ph].end());
+      p.p95PositionErrorM = errors[ph][static_cast<std::size_t>(0.95 * (n - 1.0))];
+    }
+  }
+  return out;
+}
+
+}  // namespace reckoner::sim

@@ -358,6 +358,26 @@ void MainWindow::buildActions() {
   }
 
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+  {
+    // Seed 002's own-ship filters run beside the DRKF on the same sensors; one can be drawn with it.
+    QMenu* alt = viewMenu->addMenu(tr("Also show own ship by"));
+    alt->setObjectName(QStringLiteral("seed002Menu"));
+    auto* group = new QActionGroup(this);
+    const QString names[] = {tr("DRKF only"), tr("Geodetic Kalman filter (seed 002)"),
+                             tr("Least squares with dead reckoning (seed 002)")};
+    for (int i = 0; i < 3; ++i) {
+      QAction* a = alt->addAction(names[i]);
+      a->setObjectName(QStringLiteral("seed002_%1").arg(i));
+      a->setCheckable(true);
+      a->setChecked(i == view_->overlay().seed002Shown);
+      group->addAction(a);
+      connect(a, &QAction::triggered, this, [this, i] {
+        OverlaySettings s = view_->overlay();
+        s.seed002Shown = i;
+        view_->setOverlay(s);
+      });
+    }
+  }
   const auto toggle = [&](const QString& name, bool OverlaySettings::*member) {
     QAction* a = viewMenu->addAction(name);
     a->setCheckable(true);

@@ -6,8 +6,6 @@
 #include <map>
 
 #include "estimation/ekf.h"
-#include "navigation/geodetic_kf.h"
-#include "navigation/lsq_fusion.h"
 
 namespace reckoner::sim {
 namespace {
@@ -57,17 +55,11 @@ std::optional<OwnShipFilter> ownShipFilterFromName(std::string_view name) {
   return std::nullopt;
 }
 
-OwnShipFilterRun runOwnShipFilters(const Scenario& scenario, std::uint64_t seed) {
-  const auto start = std::chrono::steady_clock::now();
-  SimulationEngine engine(scenario, seed);
-  const geo::LocalFrame& geo = engine.frame();
-  OwnShipFilterRun out;
-  RunResult& run = out.drkf;
-  run.seed = seed;
-
-  // Both start where the DRKF starts, with its covariance.
-  const est::Vec<4> g0 = nav::groundStateOf(engine.drkf().belief());
-  const est::Mat<4> C0 = nav::groundCovarianceOf(engine.drkf().belief());
+namespace {
+nav::GeodeticKf makeGeodetic(const Scenario& scenario, const est::drkf::Belief& start,
+                             const geo::LocalFrame& geo) {
+  const est::Vec<4> g0 = nav::groundStateOf(start);
+  const est::Mat<4> C0 = nav::groundCovarianceOf(start);
   const double sdPos = std::sqrt(0.5 * (C0(0, 0) + C0(1, 1)));
   const double sdVel = std::sqrt(0.5 * (C0(2, 2) + C0(3, 3)));
   const geo::GridInfo gi0 = geo.gridInfo({g0[0], g0[1]});
@@ -76,43 +68,71 @@ OwnShipFilterRun runOwnShipFilters(const Scenario& scenario, std::uint64_t seed)
   const double vE = (c * g0[2] + s * g0[3]) / gi0.scale, vN = (-s * g0[2] + c * g0[3]) / gi0.scale;
   const est::GaussMarkov& a = scenario.filter.acceleration;
   nav::GeodeticKfConfig gc;
+  // White acceleration giving the Gauss-Markov acceleration's velocity change over its correlation
+  // time: 2 sigma^2 / beta^2 (beta tau - 1 + e^-beta tau) at tau = 1 / beta, divided by tau.
   gc.accelerationQ = std::max(2.0 * std::exp(-1.0) * a.sigma * a.sigma / a.betaPerS, 1e-8);
   gc.minSpeedMps = scenario.filter.minSpeedMps;
   gc.gateProbability = scenario.filter.gateProbability;
-  nav::GeodeticKf geodetic(gc, nav::GeodeticKf::initialBelief(geo, {g0[0], g0[1]}, sdPos, vE, vN, sdVel), 0);
-  est::Gaussian<2> p0;
-  p0.x = g0.head<2>();
-  p0.P = C0.topLeftCorner<2, 2>();
-  nav::LsqNavigator lsq(nav::LsqNavigatorConfig{}, p0, 0);
+  return nav::GeodeticKf(gc, nav::GeodeticKf::initialBelief(geo, {g0[0], g0[1]}, sdPos, vE, vN, sdVel), 0);
+}
 
+nav::LsqNavigator makeLsq(const est::drkf::Belief& start) {
+  est::Gaussian<2> p0;
+  p0.x = nav::groundStateOf(start).head<2>();
+  p0.P = nav::groundCovarianceOf(start).topLeftCorner<2, 2>();
+  return nav::LsqNavigator(nav::LsqNavigatorConfig{}, p0, 0);
+}
+}  // namespace
+
+Seed002Filters::Seed002Filters(const Scenario& scenario, const est::drkf::Belief& drkfStart,
+                               const geo::LocalFrame& frame)
+    : frame_(frame), geodetic_(makeGeodetic(scenario, drkfStart, frame)), lsq_(makeLsq(drkfStart)) {}
+
+void Seed002Filters::feed(const SimFrame& f) {
+  geodeticRows_ = 0;
+  std::size_t i = 0;
+  while (i < f.measurements.size()) {
+    const TimeUs t = sensors::timeOf(f.measurements[i]);
+    std::size_t j = i;
+    while (j < f.measurements.size() && sensors::timeOf(f.measurements[j]) == t) ++j;
+    const std::span<const sensors::OwnShipSample> epoch(f.measurements.data() + i, j - i);
+    geodeticRows_ += geodetic_.update(t, epoch, frame_).rowsApplied();
+    lsq_.update(t, epoch, frame_);
+    i = j;
+  }
+  geodetic_.predictTo(f.timeUs);
+  timeUs_ = f.timeUs;
+}
+
+est::Gaussian<4> Seed002Filters::ground(OwnShipFilter f) const {
+  if (f == OwnShipFilter::Geodetic) return geodetic_.groundInGrid(frame_);
+  est::Gaussian<4> g = lsq_.ground();
+  if (lsq_.timeUs() < timeUs_)  // carry the dead-reckoned position to the frame's time
+    g.x.head<2>() += g.x.tail<2>() * toSeconds(timeUs_ - lsq_.timeUs());
+  return g;
+}
+
+OwnShipFilterRun runOwnShipFilters(const Scenario& scenario, std::uint64_t seed) {
+  const auto start = std::chrono::steady_clock::now();
+  SimulationEngine engine(scenario, seed);
+  const geo::LocalFrame& geo = engine.frame();
+  OwnShipFilterRun out;
+  RunResult& run = out.drkf;
+  run.seed = seed;
+  Seed002Filters seed002(scenario, engine.drkf().belief(), geo);
   while (!engine.finished()) {
     const SimFrame f = engine.step();
     run.rows.push_back(makeRow(f, geo));
     appendSweepRows(f, scenario, geo, run.trackRows, run.targetRows);
-    // The cycle's samples, epoch by epoch (the sensors of one epoch share its time).
-    int geoRows = 0;
-    std::size_t i = 0;
-    while (i < f.measurements.size()) {
-      const TimeUs t = sensors::timeOf(f.measurements[i]);
-      std::size_t j = i;
-      while (j < f.measurements.size() && sensors::timeOf(f.measurements[j]) == t) ++j;
-      const std::span<const sensors::OwnShipSample> epoch(f.measurements.data() + i, j - i);
-      geoRows += geodetic.update(t, epoch, geo).rowsApplied();
-      lsq.update(t, epoch, geo);
-      i = j;
-    }
-    geodetic.predictTo(f.timeUs);
+    seed002.feed(f);
     OwnShipRow d = run.rows.back();
     const est::Gaussian<4> dg{nav::groundStateOf(f.estimate), nav::groundCovarianceOf(f.estimate)};
     d.nees = est::nees<4>(est::Vec<4>(d.trueXM, d.trueYM, d.trueVxMps, d.trueVyMps) - dg.x, dg.P);
     out.rows[static_cast<std::size_t>(OwnShipFilter::Drkf)].push_back(d);
     out.rows[static_cast<std::size_t>(OwnShipFilter::Geodetic)].push_back(
-        rowOf(f, geodetic.groundInGrid(geo), geo, geoRows));
-    est::Gaussian<4> lg = lsq.ground();
-    if (lsq.timeUs() < f.timeUs) {  // carry the dead-reckoned position to the row time
-      lg.x.head<2>() += lg.x.tail<2>() * toSeconds(f.timeUs - lsq.timeUs());
-    }
-    out.rows[static_cast<std::size_t>(OwnShipFilter::Lsq)].push_back(rowOf(f, lg, geo, 0));
+        rowOf(f, seed002.ground(OwnShipFilter::Geodetic), geo, seed002.geodeticRowsApplied()));
+    out.rows[static_cast<std::size_t>(OwnShipFilter::Lsq)].push_back(
+        rowOf(f, seed002.ground(OwnShipFilter::Lsq), geo, 0));
   }
   run.counters = engine.drkf().counters();
   run.trackCounters = engine.trackers().counters();

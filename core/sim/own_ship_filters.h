@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "estimation/chi_square.h"
+#include "navigation/geodetic_kf.h"
+#include "navigation/lsq_fusion.h"
 #include "sim/scenario_run.h"
 
 namespace reckoner::sim {
@@ -18,6 +20,25 @@ enum class OwnShipFilter : std::uint8_t { Drkf, Geodetic, Lsq };
 inline constexpr int kOwnShipFilterCount = 3;
 const char* ownShipFilterName(OwnShipFilter f);  ///< "drkf", "geodetic", "lsq"
 std::optional<OwnShipFilter> ownShipFilterFromName(std::string_view name);
+
+/// Seed 002's two filters fed from the simulation's frames (the same samples as the DRKF).
+class Seed002Filters {
+ public:
+  /// Both start from the DRKF's initial estimate, with the process noise described below.
+  Seed002Filters(const Scenario& scenario, const est::drkf::Belief& drkfStart, const geo::LocalFrame& frame);
+  /// The frame's samples, epoch by epoch; both filters are then at the frame's time.
+  void feed(const SimFrame& frame);
+  /// [x, y, vx, vy] over ground in the grid frame with covariance (Drkf: not handled here).
+  [[nodiscard]] est::Gaussian<4> ground(OwnShipFilter f) const;
+  [[nodiscard]] int geodeticRowsApplied() const { return geodeticRows_; }
+
+ private:
+  const geo::LocalFrame& frame_;
+  nav::GeodeticKf geodetic_;
+  nav::LsqNavigator lsq_;
+  TimeUs timeUs_ = 0;
+  int geodeticRows_ = 0;
+};
 
 struct OwnShipFilterRun {
   std::array<std::vector<OwnShipRow>, kOwnShipFilterCount> rows;  ///< nees: 4 dof, position and velocity

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "sim/own_ship_filters.h"
 #include "sim/scenario.h"
 #include "sim/simulation_engine.h"
 
@@ -77,6 +78,9 @@ struct LiveFrame {
   std::optional<double> drHorizonS;       ///< time until the 95% error exceeds the limit (DR only)
   double drLimitM = 0.0;
   double error95M = 0.0;
+  /// Seed 002's own-ship filters beside the DRKF (geodetic KF, least squares): [x, y, vx, vy] over
+  /// ground, grid frame, with covariance; empty before the first step.
+  std::optional<std::array<est::Gaussian<4>, 2>> seed002;
   double rate = 0.0;          ///< requested rate (0: paused, < 0: as fast as possible)
   double achievedRate = 0.0;  ///< simulated seconds per wall second, measured
   bool radarOn = false;

@@ -101,6 +101,8 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
   stopAtS_.reset();
   try {
     engine_ = std::make_unique<sim::SimulationEngine>(scenario, scenario.seed);
+    seed002_ = std::make_unique<sim::Seed002Filters>(engine_->scenario(), engine_->drkf().belief(),
+                                                     engine_->frame());
   } catch (const std::exception& e) {
     emit failed(QString::fromStdString(std::string("cannot start the scenario: ") + e.what()));
     return;
@@ -199,6 +201,11 @@ void SimulationWorker::stepEngine() {
 void SimulationWorker::absorb(sim::SimFrame&& f) {
   const auto& scenario = engine_->scenario();
   pending_.ownHistory.push_back(ownSampleOf(f));
+  if (seed002_) {
+    seed002_->feed(f);
+    pending_.seed002 = std::array<est::Gaussian<4>, 2>{seed002_->ground(sim::OwnShipFilter::Geodetic),
+                                                       seed002_->ground(sim::OwnShipFilter::Lsq)};
+  }
   for (const auto& sweep : f.sweeps) {
     ++sweepCounter_;
     for (const auto& t : sweep.tracks)

@@ -64,6 +64,7 @@ class SimulationWorker : public QObject {
   void updateDeadReckoning();
 
   std::unique_ptr<sim::SimulationEngine> engine_;
+  std::unique_ptr<sim::Seed002Filters> seed002_;  ///< beside the DRKF, on the same samples (display)
   QTimer* timer_ = nullptr;
   QElapsedTimer wall_;
   qint64 lastTickNs_ = 0;

@@ -146,6 +146,7 @@ QColor EcdisView::colour(const char* role) const {
       {"panel", {qRgb(255, 255, 255), qRgb(30, 30, 40), qRgb(10, 10, 12)}},
       {"gps", {qRgb(0, 120, 120), qRgb(60, 220, 220), qRgb(40, 120, 120)}},
       {"loran", {qRgb(150, 0, 150), qRgb(230, 110, 230), qRgb(120, 60, 120)}},
+      {"seed002", {qRgb(200, 0, 90), qRgb(255, 110, 170), qRgb(150, 50, 90)}},
   };
   for (const Entry& e : kTable)
     if (std::strcmp(e.role, role) == 0) return QColor::fromRgb(e.c[i]);
@@ -363,6 +364,18 @@ void EcdisView::paintOwnShip(QPainter& p) {
     p.setPen(QPen(colour("ellipse"), live.positionFixUsed ? 1.2 : 2.0));
     p.setBrush(fill);
     p.drawPolygon(poly);
+  }
+
+  // Seed 002's estimate beside the DRKF's: a ring with its 95% ellipse, labelled G or L.
+  if (overlay_.seed002Shown > 0 && live.seed002) {
+    const est::Gaussian<4>& g = (*live.seed002)[static_cast<std::size_t>(overlay_.seed002Shown - 1)];
+    const Local at = localAt(g.x[0], g.x[1]);
+    p.setPen(QPen(colour("seed002"), 1.4, Qt::DashLine));
+    p.setBrush(Qt::NoBrush);
+    if (overlay_.showEllipses) p.drawPolygon(ellipse95(at, g.P(0, 0), g.P(0, 1), g.P(1, 1), 48));
+    p.setPen(QPen(colour("seed002"), 1.8));
+    p.drawEllipse(at.p, 4.0, 4.0);
+    p.drawText(at.p + QPointF(6, -6), overlay_.seed002Shown == 1 ? QStringLiteral("G") : QStringLiteral("L"));
   }
 
   // Vectors: course over ground with minute marks and a double arrowhead.

@@ -32,6 +32,9 @@ struct OverlaySettings {
   double ownLengthM = 120.0, ownBeamM = 20.0;  ///< true-scale own-ship outline when larger than 6 mm
   bool courseUp = false;
   bool followOwnShip = true;
+  /// Also draw one of seed 002's own-ship estimates (position and 95% ellipse): 0 none, 1 the
+  /// geodetic KF, 2 least squares.
+  int seed002Shown = 0;
 };
 
 class EcdisView : public ChartView {

@@ -55,6 +55,8 @@ OwnShipPanel::OwnShipPanel(QWidget* parent) : QWidget(parent) {
   estPos_ = add(tr("Position (DRKF)"));
   truePos_ = add(tr("Position (truth)"));
   error_ = add(tr("Error / 95% radius"));
+  seed002_[0] = add(tr("Geodetic KF (seed 002)"));
+  seed002_[1] = add(tr("Least squares (seed 002)"));
   estCog_ = add(tr("COG/SOG (DRKF)"));
   trueCog_ = add(tr("COG/SOG (truth)"));
   heading_ = add(tr("Heading est / true"));
@@ -103,6 +105,20 @@ void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame)
                       .arg(x[dk::kLoranY], 0, 'f', 1)
                       .arg(t[dk::kLoranX], 0, 'f', 1)
                       .arg(t[dk::kLoranY], 0, 'f', 1));
+  for (std::size_t i = 0; i < seed002_.size(); ++i) {
+    if (!live.seed002) {
+      seed002_[i]->setText(QStringLiteral("–"));
+      continue;
+    }
+    // Error against the truth and the 95% ellipse's semi-major axis (chi-square 2 dof: 2.45 sd).
+    const est::Gaussian<4>& g = (*live.seed002)[i];
+    const est::Mat<2> P = g.P.topLeftCorner<2, 2>();
+    const double lmax = 0.5 * (P.trace() + std::hypot(P(0, 0) - P(1, 1), 2.0 * P(0, 1)));
+    seed002_[i]->setText(
+        QStringLiteral("error %1 m / 95% %2 m")
+            .arg(std::hypot(g.x[0] - f.truth.position.xM, g.x[1] - f.truth.position.yM), 0, 'f', 1)
+            .arg(2.4477 * std::sqrt(std::max(lmax, 0.0)), 0, 'f', 1));
+  }
   sensors_->setText(QString::fromStdString(sim::sensorLabel(f.sensors)));
   const double now = toSeconds(f.timeUs);
   for (std::size_t i = 0; i < nis_.size(); ++i) {

@@ -109,6 +109,7 @@ std::string GeodeticKfConfig::check() const {
     return "COG and SOG noise must be >= 0";
   if (!(minSpeedMps > 0.0)) return "minimum speed must be positive";
   if (!(gateProbability >= 0.0 && gateProbability < 1.0)) return "gate probability must lie in [0, 1)";
+  if (!(gateReopenS > 0.0)) return "gate re-open time must be positive";
   return {};
 }
 
@@ -187,7 +188,18 @@ GeodeticUpdate GeodeticKf::update(TimeUs t, std::span<const sensors::OwnShipSamp
     const double var = gps->positionVarM2 / (scale * scale);  // true metres
     const double M = meridianRadius(lat), D = primeVerticalRadius(lat) * std::cos(lat);
     const est::Mat<2> R = est::Vec<2>(var / (M * M), var / (D * D)).asDiagonal();
-    out.position = est::update(belief_, PositionModel{}, est::Vec<2>(lat, degToRad(g.lonDeg)), R, gate_);
+    // A fix refused for gateReopenS is applied ungated once: a filter that has drifted beyond its
+    // own covariance must not lock the GPS out for good.
+    const bool reopen =
+        positionRejectedSinceUs_ >= 0 && toSeconds(t - positionRejectedSinceUs_) >= config_.gateReopenS;
+    out.position =
+        est::update(belief_, PositionModel{}, est::Vec<2>(lat, degToRad(g.lonDeg)), R, reopen ? 0.0 : gate_);
+    if (out.position.status == est::UpdateStatus::RejectedGate && positionRejectedSinceUs_ < 0)
+      positionRejectedSinceUs_ = t;
+    if (out.position.applied()) {
+      if (reopen) out.position.status = est::UpdateStatus::AcceptedForced;
+      positionRejectedSinceUs_ = -1;
+    }
     const double sp = std::hypot(gps->velEastMps, gps->velNorthMps);
     if (gps->hasVelocity && sp >= config_.minSpeedMps) {
       // COG and SOG of the GPS velocity; their covariance through the Jacobian (eq. 27's band).

@@ -38,11 +38,12 @@ Covariance transitionJacobian(const State& x, double T, double minSpeedMps);
 }  // namespace geod
 
 struct GeodeticKfConfig {
-  double accelerationQ = 0.02;              ///< white acceleration per axis driving the velocity, m^2/s^3
-  double cogQ = 1e-6;                       ///< extra COG disturbance (eq. 24), rad^2/s
-  double sogQ = 1e-4;                       ///< extra SOG disturbance (eq. 24), m^2/s^3
-  double minSpeedMps = 0.5;                 ///< below: COG and the heading-based velocity are not used
-  double gateProbability = 0.9999;          ///< per-block chi-square gate; 0 disables
+  double accelerationQ = 0.02;      ///< white acceleration per axis driving the velocity, m^2/s^3
+  double cogQ = 1e-6;               ///< extra COG disturbance (eq. 24), rad^2/s
+  double sogQ = 1e-4;               ///< extra SOG disturbance (eq. 24), m^2/s^3
+  double minSpeedMps = 0.5;         ///< below: COG and the heading-based velocity are not used
+  double gateProbability = 0.9999;  ///< per-block chi-square gate; 0 disables
+  double gateReopenS = 10.0;  ///< a GPS position rejected this long is applied ungated once (as the DRKF)
   [[nodiscard]] std::string check() const;  ///< empty when valid
 };
 
@@ -76,6 +77,7 @@ class GeodeticKf {
  private:
   GeodeticKfConfig config_;
   double gate_;
+  TimeUs positionRejectedSinceUs_ = -1;
   geod::Belief belief_;
   TimeUs timeUs_;
 };

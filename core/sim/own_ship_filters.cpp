@@ -73,6 +73,7 @@ nav::GeodeticKf makeGeodetic(const Scenario& scenario, const est::drkf::Belief& 
   gc.accelerationQ = std::max(2.0 * std::exp(-1.0) * a.sigma * a.sigma / a.betaPerS, 1e-8);
   gc.minSpeedMps = scenario.filter.minSpeedMps;
   gc.gateProbability = scenario.filter.gateProbability;
+  gc.gateReopenS = scenario.filter.gateReopenS;
   return nav::GeodeticKf(gc, nav::GeodeticKf::initialBelief(geo, {g0[0], g0[1]}, sdPos, vE, vN, sdVel), 0);
 }
 

@@ -175,6 +175,19 @@ class TestCli : public QObject {
     QVERIFY(s.contains("all_phases_inside"));
     QVERIFY(read(dir.filePath("mc/montecarlo.csv")).startsWith("t_s,rmse_position_m"));
   }
+  void ownShipFiltersRunAndCompare() {
+    // run --own-ship-filter writes that filter's rows; own-ship-compare prints the three filters.
+    QTemporaryDir dir;
+    const Result r =
+        cli({"run", "builtin:seed002-matched", "--own-ship-filter", "geodetic", "--out", dir.path()});
+    QCOMPARE(r.code, 0);
+    QVERIFY(r.out.contains("own-ship filter geodetic"));
+    const QList<QByteArray> lines = read(dir.filePath("ownship.csv")).split('\n');
+    QCOMPARE(lines.size(), 1500 + 2);
+    const Result c = cli({"own-ship-compare", "builtin:seed002-matched", "--runs", "4"});
+    QCOMPARE(c.code, 0);
+    for (const char* name : {"drkf", "geodetic", "lsq"}) QVERIFY2(c.out.contains(name), qPrintable(c.out));
+  }
   void badInputIsOneLineAndExitCode2_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("expected");
@@ -196,6 +209,11 @@ class TestCli : public QObject {
     QTest::newRow("seed001 bad pfa") << QStringList{"seed001", "--pfa", "2"} << "--pfa: expected a number";
     QTest::newRow("seed001 bad init")
         << QStringList{"seed001", "--init", "guess"} << "--init: expected paper or two-point";
+    QTest::newRow("seed001 bad correction") << QStringList{"seed001", "--correction", "magic"}
+                                            << "--correction: expected none, paper or refilter";
+    QTest::newRow("unknown own-ship filter")
+        << QStringList{"run", "builtin:default", "--own-ship-filter", "ukf", "--out", "/tmp/x"}
+        << "--own-ship-filter: expected drkf, geodetic or lsq, got 'ukf'";
   }
   void badInputIsOneLineAndExitCode2() {
     QFETCH(QStringList, args);

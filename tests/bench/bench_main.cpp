@@ -20,8 +20,10 @@
 #include "common/rng.h"
 #include "io/scenario_json.h"
 #include "navigation/drkf.h"
+#include "radar/chart_matching.h"
 #include "resources/embedded.h"
 #include "sim/scenario_run.h"
+#include "support/radar_fixtures.h"
 #include "tracking/track_manager.h"
 #include "ui/main_window.h"
 
@@ -383,6 +385,41 @@ void BM_EcdisWindow100x40Targets(benchmark::State& state) {
     state.counters["tracks"] = static_cast<double>(w.history().latest().frame.tracks.size());
   }
 }
+/// Seed 004: one radar image (4096 azimuths x 1024 range bins) to a position and heading correction:
+/// echo extraction (segmentation, front contours, aggregation to ~200 points) and the matching
+/// against the chart contours from a pose 40 m and 1 deg off. The image is simulated once, outside
+/// the timing.
+void BM_RadarImageMatching(benchmark::State& state) {
+  const radar::Coastline coast = test::syntheticHarbour();
+  const radar::SweepPose truth = test::harbourPose();
+  radar::RadarImageParams p;
+  Rng rng(5, 0);
+  const radar::PolarImage img = radar::simulateRadarImage(coast, {}, truth, p, rng);
+  radar::SweepPose guess = truth;
+  guess.position += est::Vec<2>(30.0, -25.0);
+  guess.headingRad -= degToRad(1.0);
+  int used = 0;
+  for (auto _ : state) {
+    const auto echoes = radar::extractEchoes(img, p.azStepRad(), {});
+    const auto m = radar::matchEchoes(echoes, guess, coast, {});
+    used = m.used;
+    benchmark::DoNotOptimize(m.correction);
+  }
+  state.counters["echoes_used"] = used;
+}
+BENCHMARK(BM_RadarImageMatching)->Unit(benchmark::kMillisecond);
+
+/// The simulation of that image (casting 4096 beams against the contours, targets none).
+void BM_RadarImageSimulation(benchmark::State& state) {
+  const radar::Coastline coast = test::syntheticHarbour();
+  const radar::SweepPose truth = test::harbourPose();
+  radar::RadarImageParams p;
+  Rng rng(5, 0);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(radar::simulateRadarImage(coast, {}, truth, p, rng).bins.data());
+}
+BENCHMARK(BM_RadarImageSimulation)->Unit(benchmark::kMillisecond);
+
 BENCHMARK(BM_EcdisWindow100x40Targets)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 
 }  // namespace

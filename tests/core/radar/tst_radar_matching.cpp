@@ -1,0 +1,162 @@
+// Seed 004: radar image simulation, echo extraction and matching to chart contours (synthetic coast).
+#include <QTest>
+
+#include <cmath>
+
+#include "common/angles.h"
+#include "common/rng.h"
+#include "estimation/chi_square.h"
+#include "estimation/ekf.h"
+#include "radar/chart_matching.h"
+#include "radar/coastline.h"
+#include "radar/radar_image.h"
+#include "support/radar_fixtures.h"
+
+using namespace reckoner;
+using radar::CoastSegment;
+
+namespace {
+/// A closed polygon as contour segments (sd 5 m).
+void addRing(std::vector<CoastSegment>& out, const std::vector<est::Vec<2>>& pts, double sd = 5.0) {
+  for (std::size_t i = 0; i < pts.size(); ++i) out.push_back({pts[i], pts[(i + 1) % pts.size()], sd});
+}
+radar::Coastline harbour() {
+  return test::syntheticHarbour();
+}
+radar::SweepPose truePose() {
+  return test::harbourPose();
+}
+}  // namespace
+
+class TestRadarMatching : public QObject {
+  Q_OBJECT
+ private slots:
+  void nearestPointAndRayCasting() {
+    std::vector<CoastSegment> s;
+    addRing(s, {{-100, -100}, {100, -100}, {100, 100}, {-100, 100}});
+    const radar::Coastline c(s, 30.0);
+    const auto n = c.nearest({90.0, 10.0}, 50.0);
+    QVERIFY(n);
+    QVERIFY(std::abs(n->distanceM - 10.0) < 1e-9 && (n->point - est::Vec<2>(100.0, 10.0)).norm() < 1e-9);
+    QVERIFY(std::abs(std::abs(n->normal[0]) - 1.0) < 1e-12);
+    QVERIFY(!c.nearest({0.0, 0.0}, 50.0));  // 100 m from every side
+    // From inside, a ray due east meets x = 100; one at 45 deg meets the corner region at 141 m.
+    QVERIFY(std::abs(*c.firstHit({0.0, 0.0}, degToRad(90.0), 500.0) - 100.0) < 1e-9);
+    QVERIFY(std::abs(*c.firstHit({0.0, 0.0}, degToRad(45.0), 500.0) - 100.0 * std::sqrt(2.0)) < 1e-6);
+    QVERIFY(!c.firstHit({0.0, 0.0}, degToRad(90.0), 50.0));                                // beyond the range
+    QVERIFY(std::abs(*c.firstHit({-300.0, 0.0}, degToRad(90.0), 1000.0) - 200.0) < 1e-9);  // from outside
+    QVERIFY(!c.firstHit({-300.0, 0.0}, degToRad(270.0), 1000.0));                          // away from it
+  }
+
+  void echoesAreTheFrontContour() {
+    // GIVEN a noise-free image of the harbour WHEN echoes are extracted THEN there are about 200 and
+    // every one lies within a few metres of a contour (the front, not the land behind it).
+    radar::RadarImageParams p;
+    p.noiseProbability = 0.0;
+    p.clutterProbability = 0.0;
+    p.rangeSdM = 0.0;
+    p.bearingSdRad = 0.0;
+    Rng rng(1, 0);
+    const radar::Coastline c = harbour();
+    const radar::SweepPose pose = truePose();
+    const auto img = radar::simulateRadarImage(c, {}, pose, p, rng);
+    const auto echoes = radar::extractEchoes(img, p.azStepRad(), {});
+    qInfo("%zu echo points", echoes.size());
+    QVERIFY(echoes.size() >= 150 && echoes.size() <= 260);
+    double worst = 0.0;
+    for (const auto& e : echoes) {
+      const double dt = pose.timeOffsetS(e.azimuthRad);
+      const double th = pose.headingAt(dt) + e.azimuthRad;
+      const est::Vec<2> w = pose.positionAt(dt) + e.rangeM * est::Vec<2>(std::sin(th), std::cos(th));
+      const auto n = c.nearest(w, 1000.0);
+      QVERIFY(n);
+      worst = std::max(worst, n->distanceM);
+    }
+    qInfo("largest distance of a noise-free echo from the contour: %.1f m", worst);
+    QVERIFY(worst < 10.0);  // a range bin (5.9 m) and the half-power beam's spread on a sloping shore
+  }
+
+  void matchingRecoversPositionAndHeadingConsistently() {
+    // GIVEN 50 noisy sweeps (range 10 m, bearing 0.5 deg, receiver noise and sea clutter) WHEN each is
+    // matched from a pose 40 m and 1 deg off THEN the corrected pose is within 10 m and 0.15 deg of the
+    // truth, and the reported covariance is honest or conservative: the mean NEES (3 dof) is under the
+    // 99% band's upper end of 50 runs, and above 1 (at most about twice too large: the a-priori echo
+    // errors are the single pulse's, and the beam integration averages several).
+    const radar::Coastline c = harbour();
+    radar::RadarImageParams p;
+    radar::MatchParams mp;
+    const radar::SweepPose truth = truePose();
+    double nees = 0.0, worstPos = 0.0, worstHdg = 0.0;
+    const int runs = 50;
+    for (int run = 0; run < runs; ++run) {
+      Rng rng(7, static_cast<std::uint64_t>(run));
+      const auto img = radar::simulateRadarImage(c, {}, truth, p, rng);
+      const auto echoes = radar::extractEchoes(img, p.azStepRad(), {});
+      radar::SweepPose guess = truth;
+      guess.position += est::Vec<2>(30.0, -25.0);
+      guess.headingRad -= degToRad(1.0);
+      const auto m = radar::matchEchoes(echoes, guess, c, mp);
+      QVERIFY(m.valid);
+      const est::Vec<3> err(guess.position[0] + m.correction[0] - truth.position[0],
+                            guess.position[1] + m.correction[1] - truth.position[1],
+                            angleDiff(guess.headingRad + m.correction[2], truth.headingRad));
+      nees += est::nees<3>(err, m.covariance);
+      worstPos = std::max(worstPos, err.head<2>().norm());
+      worstHdg = std::max(worstHdg, std::abs(err[2]));
+      if (run == 0)
+        qInfo(
+            "run 0: %d echoes, %d used, %d iterations, sd %.1f m %.1f m %.3f deg, rms normalised residual "
+            "%.2f",
+            m.echoes, m.used, m.iterations, std::sqrt(m.covariance(0, 0)), std::sqrt(m.covariance(1, 1)),
+            radToDeg(std::sqrt(m.covariance(2, 2))), m.rmsNormalizedResidual);
+    }
+    const auto band = est::averageNeesBounds(3, runs, 0.99);
+    qInfo("worst position error %.2f m, heading %.3f deg; mean NEES %.2f in [%.2f, %.2f]", worstPos,
+          radToDeg(worstHdg), nees / runs, band.lower, band.upper);
+    QVERIFY(worstPos < 10.0);
+    QVERIFY(radToDeg(worstHdg) < 0.15);
+    QVERIFY(nees / runs < band.upper && nees / runs > 1.0);
+  }
+
+  void shipsAndClutterAreRejected() {
+    // GIVEN 20 vessels within 150 m of the shore (and 10 in open water) WHEN the image is matched
+    // THEN at least 95% of the echo points from vessels are rejected as not the chart's, and the pose
+    // is still recovered.
+    const radar::Coastline c = harbour();
+    const radar::SweepPose truth = truePose();
+    std::vector<radar::RadarTarget> ships;
+    Rng place(3, 0);
+    for (int k = 0; k < 30; ++k) {
+      const double a = degToRad(-110.0 + 220.0 * place.uniform());
+      const double r0 = test::harbourShoreRangeM(a);
+      const double r = k < 20 ? r0 - 60.0 - 90.0 * place.uniform() : 600.0 + 800.0 * place.uniform();
+      ships.push_back({est::Vec<2>(r * std::sin(a), r * std::cos(a)), 25.0});
+    }
+    radar::RadarImageParams p;
+    Rng rng(11, 0);
+    const auto img = radar::simulateRadarImage(c, ships, truth, p, rng);
+    const auto echoes = radar::extractEchoes(img, p.azStepRad(), {});
+    const auto m = radar::matchEchoes(echoes, truth, c, {});
+    QVERIFY(m.valid);
+    int fromShips = 0, shipsUsed = 0;
+    for (std::size_t i = 0; i < echoes.size(); ++i) {
+      const double dt = truth.timeOffsetS(echoes[i].azimuthRad);
+      const double th = truth.headingAt(dt) + echoes[i].azimuthRad;
+      const est::Vec<2> w = truth.positionAt(dt) + echoes[i].rangeM * est::Vec<2>(std::sin(th), std::cos(th));
+      bool ship = false;
+      for (const auto& s : ships) ship = ship || (w - s.position).norm() < s.radiusM + 25.0;
+      if (!ship) continue;
+      ++fromShips;
+      shipsUsed += m.usedMask[i] ? 1 : 0;
+    }
+    qInfo("%d echo points from vessels, %d of them used (%.1f%% rejected); correction %.1f m %.3f deg",
+          fromShips, shipsUsed, 100.0 * (fromShips - shipsUsed) / std::max(1, fromShips),
+          m.correction.head<2>().norm(), radToDeg(m.correction[2]));
+    QVERIFY(fromShips >= 20);
+    QVERIFY(shipsUsed <= 0.05 * fromShips);
+    QVERIFY(m.correction.head<2>().norm() < 10.0);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestRadarMatching)
+#include "tst_radar_matching.moc"

@@ -1,0 +1,86 @@
+// Seed 004 on real chart contours: the embedded RK5SOUND and, when ../shared/data/enc is present, the
+// NOAA cell US5WA22M (Tacoma). A simulated radar image is matched back to the chart.
+#include <QTest>
+
+#include <cmath>
+#include <filesystem>
+
+#include "charts/radar/radar_contours.h"
+#include "charts/s57/s57_loader.h"
+#include "common/angles.h"
+#include "common/rng.h"
+#include "radar/chart_matching.h"
+#include "radar/radar_image.h"
+
+using namespace reckoner;
+
+namespace {
+struct Outcome {
+  std::size_t segments = 0;
+  int echoes = 0, used = 0;
+  double positionErrorM = 0.0, headingErrorDeg = 0.0, sdM = 0.0;
+};
+
+/// Own ship at `at` (lat, lon) heading 030 at 5 m/s; the image is matched from a pose 30 m and 1 deg off.
+Outcome matchAt(const std::vector<charts::CellPtr>& cells, double latDeg, double lonDeg, double rangeM) {
+  const geo::LocalFrame frame(latDeg, lonDeg);
+  const radar::Coastline coast = charts::radarContours(cells, frame, {0.0, 0.0}, rangeM + 500.0);
+  radar::SweepPose truth;
+  truth.periodS = 2.5;
+  truth.velocity = {2.5, 4.3};
+  truth.headingRad = degToRad(30.0);
+  radar::RadarImageParams p;
+  p.maxRangeM = rangeM;
+  Rng rng(9, 0);
+  const auto img = radar::simulateRadarImage(coast, {}, truth, p, rng);
+  const auto echoes = radar::extractEchoes(img, p.azStepRad(), {});
+  radar::SweepPose guess = truth;
+  guess.position += est::Vec<2>(-20.0, 22.0);
+  guess.headingRad += degToRad(1.0);
+  const auto m = radar::matchEchoes(echoes, guess, coast, {});
+  Outcome o;
+  o.segments = coast.segments().size();
+  o.echoes = m.echoes;
+  o.used = m.used;
+  if (!m.valid) return o;
+  o.positionErrorM = (guess.position + m.correction.head<2>() - truth.position).norm();
+  o.headingErrorDeg = radToDeg(std::abs(angleDiff(guess.headingRad + m.correction[2], truth.headingRad)));
+  o.sdM = std::sqrt(m.covariance(0, 0) + m.covariance(1, 1));
+  return o;
+}
+}  // namespace
+
+class TestRadarContours : public QObject {
+  Q_OBJECT
+ private slots:
+  void embeddedChart() {
+    // GIVEN own ship in RK5SOUND's approach channel (the default scenario's waypoint area) WHEN its
+    // simulated 4 km radar picture is matched to the chart's land, coastline and constructions THEN
+    // position and heading come back within 10 m and 0.2 deg.
+    const auto cell = charts::loadCell(std::string(charts::kDefaultChartPath));
+    const Outcome o = matchAt({cell}, 49.5, -29.5, 4000.0);
+    qInfo("RK5SOUND: %zu contour segments, %d echoes, %d matched; error %.2f m, %.3f deg (sd %.2f m)",
+          o.segments, o.echoes, o.used, o.positionErrorM, o.headingErrorDeg, o.sdM);
+    QVERIFY(o.segments > 20);
+    QVERIFY(o.used >= 30);
+    QVERIFY(o.positionErrorM < 10.0);
+    QVERIFY(o.headingErrorDeg < 0.2);
+  }
+  void noaaTacoma() {
+    const std::string path = std::string(RECKONER_SHARED_DIR) + "/data/enc/US5WA22M";
+    if (!std::filesystem::exists(path)) QSKIP("../shared/data/enc/US5WA22M is not present");
+    const auto cells = charts::loadCharts({path}).cells;
+    QVERIFY(!cells.empty());
+    const Outcome o = matchAt(cells, 47.285, -122.44, 4000.0);
+    qInfo(
+        "US5WA22M (Commencement Bay): %zu contour segments, %d echoes, %d matched; error %.2f m, %.3f deg "
+        "(sd %.2f m)",
+        o.segments, o.echoes, o.used, o.positionErrorM, o.headingErrorDeg, o.sdM);
+    QVERIFY(o.used >= 30);
+    QVERIFY(o.positionErrorM < 10.0);
+    QVERIFY(o.headingErrorDeg < 0.2);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestRadarContours)
+#include "tst_radar_contours.moc"

@@ -31,10 +31,12 @@
 
 #include "charts/pick/pick_report.h"
 #include "charts/portrayal/portrayal.h"
+#include "charts/radar/radar_contours.h"
 #include "charts/render/chart_renderer.h"
 #include "charts/s57/s57_loader.h"
 #include "common/angles.h"
 #include "estimation/chi_square.h"
+#include "estimation/ekf.h"
 #include "io/input_error.h"
 #include "io/json.h"
 #include "io/own_ship_output.h"
@@ -74,6 +76,8 @@ constexpr const char* kUsage =
     "  reckoner-cli own-ship-compare SCENARIO [--runs N] [--threads K] [--seed N]   (DRKF, seed 002 geodetic "
     "KF "
     "and least squares)\n"
+    "  reckoner-cli radar-fix SCENARIO [--enc PATH] [--runs N] [--threads K] [--seed N]   (seed 004: dead "
+    "reckoning against radar fixes)\n"
     "  reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]\n"
     "  reckoner-cli seed001 [--runs N] [--turn] [--seed N] [--window S] [--pfa P] [--q Q] [--bearing-sd "
     "DEG]\n"
@@ -240,6 +244,115 @@ int cmdRun(int argc, char** argv) {
   if (s.radar.fitted) printTracking(metrics::summariseTracking(run.trackRows, run.targetRows), run);
   std::printf("  wrote %s/ownship.csv%s and %s/summary.json\n", out.c_str(),
               s.radar.fitted ? (", " + out + "/targets.csv").c_str() : "", out.c_str());
+  return 0;
+}
+
+int cmdRadarFix(int argc, char** argv) {
+  const Args a = parseArgs(argc, argv, 2, {"enc", "runs", "threads", "seed"});
+  if (a.positional.size() != 1) throw UsageError("radar-fix needs exactly one SCENARIO");
+  sim::Scenario s = loadScenario(a.positional[0]);
+  const int runs =
+      a.options.count("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 20;
+  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = a.options.count("threads")
+                          ? static_cast<int>(parseCount("threads", a.options.at("threads"), 1, 256))
+                          : hw;
+  const std::uint64_t seed =
+      a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+  const std::string enc =
+      a.options.count("enc") ? a.options.at("enc") : std::string(charts::kDefaultChartPath);
+  const charts::LoadResult loaded = charts::loadCharts({enc});
+  for (const auto& f : loaded.failures)
+    std::fprintf(stderr, "reckoner-cli: %s: %s\n", f.file.c_str(), f.reason.c_str());
+  if (loaded.cells.empty()) throw UsageError(enc + ": no chart cell could be loaded");
+  const geo::LocalFrame frame(s.origin.latDeg, s.origin.lonDeg);
+  const auto coast = std::make_shared<const radar::Coastline>(
+      charts::radarContours(loaded.cells, frame, {0.0, 0.0}, 100000.0));
+  std::printf(
+      "radar fixes on %s with %s (%zu contour segments), %d runs: dead reckoning alone against radar "
+      "matching\n",
+      s.name.c_str(), enc.c_str(), coast->segments().size(), runs);
+  const auto study = [&](bool matching) {
+    sim::Scenario sc = s;
+    sc.radarMatching.enabled = matching;
+    struct Out {
+      std::vector<double> posErr, hdgErr;
+      double nees = 0.0, fixNees = 0.0;
+      std::vector<double> fixPosErr, fixHdgErr;
+      long rows = 0, fixes = 0, applied = 0, echoes = 0, used = 0, valid = 0;
+    };
+    std::vector<Out> outs(static_cast<std::size_t>(runs));
+    sim::parallelRuns(runs, threads, [&](int i) {
+      sim::SimulationEngine e(sc, seed + static_cast<std::uint64_t>(i));
+      e.setCoastline(coast);
+      Out& o = outs[static_cast<std::size_t>(i)];
+      while (!e.finished()) {
+        const sim::SimFrame f = e.step();
+        for (const auto& r : f.radarFixes) {
+          ++o.fixes;
+          o.applied += r.update.applied() ? 1 : 0;
+          o.echoes += r.echoes;
+          o.used += r.used;
+          if (!r.informative || r.timeUs != f.timeUs) continue;
+          // The fix itself against the truth at its time (before the DRKF used it).
+          const est::Vec<3> err(r.fixPosition[0] - f.truth.position.xM,
+                                r.fixPosition[1] - f.truth.position.yM,
+                                angleDiff(r.fixHeadingRad, f.truth.headingRad));
+          o.fixPosErr.push_back(err.head<2>().norm());
+          o.fixHdgErr.push_back(std::abs(err[2]));
+          o.fixNees += est::nees<3>(err, r.covariance);
+          ++o.valid;
+        }
+        if (f.sensors.isOn(sensors::SensorId::Gps) || f.timeUs < fromSeconds(60.0)) continue;
+        const auto& x = f.estimate.x;
+        o.posErr.push_back(
+            std::hypot(x[est::drkf::kPosX] - f.truth.position.xM, x[est::drkf::kPosY] - f.truth.position.yM));
+        o.hdgErr.push_back(
+            std::abs(angleDiff(bearingOf(x[est::drkf::kVelX], x[est::drkf::kVelY]), f.truth.headingRad)));
+        o.nees += est::nees<est::drkf::kStateDim>(f.trueState - f.estimate.x, f.estimate.P);
+        ++o.rows;
+      }
+    });
+    Out all;
+    for (const auto& o : outs) {
+      all.posErr.insert(all.posErr.end(), o.posErr.begin(), o.posErr.end());
+      all.hdgErr.insert(all.hdgErr.end(), o.hdgErr.begin(), o.hdgErr.end());
+      all.nees += o.nees;
+      all.rows += o.rows;
+      all.fixes += o.fixes;
+      all.applied += o.applied;
+      all.echoes += o.echoes;
+      all.used += o.used;
+      all.valid += o.valid;
+      all.fixNees += o.fixNees;
+      all.fixPosErr.insert(all.fixPosErr.end(), o.fixPosErr.begin(), o.fixPosErr.end());
+      all.fixHdgErr.insert(all.fixHdgErr.end(), o.fixHdgErr.begin(), o.fixHdgErr.end());
+    }
+    const auto p95 = [](std::vector<double> v) {
+      if (v.empty()) return std::nan("");
+      std::sort(v.begin(), v.end());
+      return v[static_cast<std::size_t>(0.95 * static_cast<double>(v.size() - 1))];
+    };
+    const double rows = static_cast<double>(std::max(1L, all.rows));
+    double rms = 0.0;
+    for (const double e : all.posErr) rms += e * e;
+    std::printf(
+        "  %-22s without GPS: position p95 %7.1f m, RMS %7.1f m, heading p95 %6.3f deg, mean NEES (11) %6.2f",
+        matching ? "with radar matching" : "dead reckoning alone", p95(all.posErr), std::sqrt(rms / rows),
+        radToDeg(p95(all.hdgErr)), all.nees / rows);
+    if (matching)
+      std::printf(
+          "\n    %ld pictures, %ld fixes applied, %.0f echoes per picture, %.0f matched; the fixes "
+          "themselves: "
+          "position p95 %.1f m, heading p95 %.3f deg, mean NEES (3) %.2f",
+          all.fixes, all.applied,
+          static_cast<double>(all.echoes) / static_cast<double>(std::max(1L, all.fixes)),
+          static_cast<double>(all.used) / static_cast<double>(std::max(1L, all.fixes)), p95(all.fixPosErr),
+          radToDeg(p95(all.fixHdgErr)), all.fixNees / static_cast<double>(std::max(1L, all.valid)));
+    std::printf("\n");
+  };
+  study(false);
+  study(true);
   return 0;
 }
 
@@ -1115,6 +1228,7 @@ int main(int argc, char** argv) {
     if (cmd == "imo") return cmdImo(argc, argv);
     if (cmd == "compare") return cmdCompare(argc, argv);
     if (cmd == "own-ship-compare") return cmdOwnShipCompare(argc, argv);
+    if (cmd == "radar-fix") return cmdRadarFix(argc, argv);
     if (cmd == "replay") return cmdReplay(argc, argv);
     if (cmd == "export") return cmdExport(argc, argv);
     if (cmd == "chart") return cmdChart(argc, argv);

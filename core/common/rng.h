@@ -75,6 +75,7 @@ enum RngStream : std::uint64_t {
   kStreamFilterInit = 6,
   kStreamRadar = 7,
   kStreamClutter = 8,        ///< radar clutter and per-sweep gyro scatter
+  kStreamRadarImage = 9,     ///< the simulated radar image for chart matching (seed 004)
   kStreamTargetBase = 1000,  ///< target i uses kStreamTargetBase + i
 };
 

@@ -342,6 +342,34 @@ void readTargets(Fields& top, sim::Scenario& s) {
   }
 }
 
+void readRadarMatching(Fields& top, sim::Scenario& s) {
+  const JsonValue* v = top.get("radar_matching");
+  if (!v) return;
+  Fields f(top.file(), *v, "radar_matching");
+  auto& m = s.radarMatching;
+  m.enabled = true;
+  if (const JsonValue* e = f.get("enabled")) m.enabled = f.boolean(*e, f.pathOf("enabled"));
+  const auto integer = [&f](std::string_view key, int lo, int hi, int fallback) {
+    const JsonValue* c = f.get(key);
+    if (!c) return fallback;
+    if (!c->isNumber() || c->number < lo || c->number > hi || std::floor(c->number) != c->number)
+      f.fail(*c, f.pathOf(key),
+             "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return static_cast<int>(c->number);
+  };
+  m.azimuths = integer("azimuths", 64, 16384, m.azimuths);
+  m.rangeBins = integer("range_bins", 32, 8192, m.rangeBins);
+  m.everySweeps = integer("every_sweeps", 1, 1000, m.everySweeps);
+  m.maxRangeM = nmToMetres(f.numberOr("max_range_nm", metresToNm(m.maxRangeM), Fields::Check::Positive));
+  m.rejectDistanceM = f.numberOr("reject_distance_m", m.rejectDistanceM, Fields::Check::Positive);
+  m.beamWidthDeg = f.numberOr("beam_width_deg", m.beamWidthDeg, Fields::Check::Positive);
+  m.maxFixSdM = f.numberOr("max_fix_sd_m", m.maxFixSdM, Fields::Check::Positive);
+  m.maxFixHeadingSdDeg = f.numberOr("max_fix_heading_sd_deg", m.maxFixHeadingSdDeg, Fields::Check::Positive);
+  if (m.beamWidthDeg > 10.0)
+    f.fail(*f.get("beam_width_deg"), f.pathOf("beam_width_deg"), "must be at most 10");
+  f.finish();
+}
+
 void readTracker(Fields& top, sim::Scenario& s) {
   const JsonValue* v = top.get("tracker");
   if (!v) return;
@@ -573,6 +601,7 @@ sim::Scenario parseScenario(std::string_view text, const std::string& sourceName
   readTargets(top, s);
   readFilter(top, s);
   readTracker(top, s);
+  readRadarMatching(top, s);
   top.finish();
   if (const std::string problem = sim::checkScenario(s); !problem.empty()) {
     const auto colon = problem.find(": ");
@@ -789,6 +818,19 @@ std::string writeScenario(const sim::Scenario& s) {
   w.endObject();
 
   const auto& t = s.tracker;
+  if (s.radarMatching.enabled) {
+    const auto& m = s.radarMatching;
+    w.key("radar_matching").beginObject();
+    w.key("azimuths").value(m.azimuths);
+    w.key("range_bins").value(m.rangeBins);
+    w.key("every_sweeps").value(m.everySweeps);
+    w.key("max_range_nm").value(metresToNm(m.maxRangeM), kExact);
+    w.key("reject_distance_m").value(m.rejectDistanceM, kExact);
+    w.key("beam_width_deg").value(m.beamWidthDeg, kExact);
+    w.key("max_fix_sd_m").value(m.maxFixSdM, kExact);
+    w.key("max_fix_heading_sd_deg").value(m.maxFixHeadingSdDeg, kExact);
+    w.endObject();
+  }
   w.key("tracker").beginObject();
   w.key("own_acceleration");
   writeGaussMarkov(w, t.ownAcceleration, "sigma_mps2");

@@ -10,6 +10,7 @@
 #include "estimation/models/drkf_ground_velocity.h"
 #include "estimation/models/drkf_gyro.h"
 #include "estimation/models/drkf_position_fix.h"
+#include "estimation/models/drkf_radar_fix.h"
 #include "estimation/models/drkf_speedlog.h"
 
 namespace reckoner::nav {
@@ -94,6 +95,7 @@ Drkf::Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const Belief&
   if (config.gateProbability > 0.0) {
     gates_[1] = est::chiSquareQuantile(config.gateProbability, 1.0);
     gates_[2] = est::chiSquareQuantile(config.gateProbability, 2.0);
+    gates_[3] = est::chiSquareQuantile(config.gateProbability, 3.0);
   }
   rejectedSinceUs_.fill(-1);
 }
@@ -239,6 +241,25 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
     }
   }
   return report;
+}
+
+est::UpdateReport<3> Drkf::updateRadarFix(TimeUs t, const est::Vec<3>& z, const est::Mat<3>& R) {
+  est::UpdateReport<3> rep;
+  if (!predictTo(t)) {
+    rep.status = t < timeUs_ ? est::UpdateStatus::RejectedStale : est::UpdateStatus::RejectedNumerical;
+    return rep;
+  }
+  const State& x = belief_.x;
+  if (std::hypot(x[kVelX], x[kVelY]) >= linearisableSpeed(false)) {
+    return est::update(belief_, est::drkf::RadarFixModel(), z, R, gates_[3]);
+  }
+  const auto r2 = est::update(belief_, est::drkf::RadarPositionModel(), est::Vec<2>(z.head<2>()),
+                              est::Mat<2>(R.topLeftCorner<2, 2>()), gates_[2]);
+  rep.dim = r2.dim;
+  rep.status = r2.status;
+  rep.nis = r2.nis;
+  rep.gate = r2.gate;
+  return rep;
 }
 
 est::Vec<4> groundStateOf(const Belief& b) {

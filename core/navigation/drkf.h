@@ -76,6 +76,10 @@ class Drkf {
 
   /// Predicts to t and applies every sample (all stamped t; others are counted stale and skipped).
   DrkfUpdateReport update(TimeUs t, std::span<const sensors::OwnShipSample> samples);
+  /// A radar fix at t (seed 004): position (grid m) and heading (grid, the direction of the velocity
+  /// through the water) with their joint covariance. Predicts to t, gates at the filter's probability
+  /// (3 dof) and applies it; below the linearisable speed only the position is used.
+  est::UpdateReport<3> updateRadarFix(TimeUs t, const est::Vec<3>& z, const est::Mat<3>& R);
 
   [[nodiscard]] const drkf::Belief& belief() const { return belief_; }
   [[nodiscard]] TimeUs timeUs() const { return timeUs_; }
@@ -103,7 +107,7 @@ class Drkf {
   drkf::ProcessModel process_;
   drkf::Belief belief_;
   TimeUs timeUs_;
-  std::array<double, 3> gates_{};  // chi-square gate for 1, 2 rows (index = dim)
+  std::array<double, 4> gates_{};  // chi-square gate for 1, 2, 3 rows (index = dim)
   std::array<TimeUs, kDrkfBlockCount> rejectedSinceUs_{};
   struct CacheEntry {
     TimeUs dtUs = -1;

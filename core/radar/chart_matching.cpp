@@ -43,6 +43,9 @@ MatchResult matchEchoes(const std::vector<EchoPoint>& echoes, const SweepPose& p
                          std::pow(s.r * p.bearingSdRad, 2) * std::pow(nrm.dot(across), 2) + sdC * sdC;
       const est::Vec<3> a(nrm[0], nrm[1], s.r * nrm.dot(across));
       const double d = nrm.dot(k->point - e);
+      // Once the picture sits on the chart, an echo far off its contour in its own sd is another
+      // object's (a ship alongside, a wrong contour): robust rejection.
+      if (it > 0 && d * d > p.outlierSigmas * p.outlierSigmas * var) continue;
       A += a * a.transpose() / var;
       b += a * d / var;
       used[i] = 1;
@@ -78,13 +81,18 @@ MatchResult matchEchoes(const std::vector<EchoPoint>& echoes, const SweepPose& p
     const est::Vec<2> e = s.s + x.head<2>() + s.r * est::Vec<2>(std::sin(th), std::cos(th));
     const auto k = coast.nearest(e, p.rejectDistanceM);
     if (!k) continue;
-    out.echoPoints.push_back(e);
-    out.chartPoints.push_back(k->point);
     const est::Vec<2> along(std::sin(th), std::cos(th)), across(std::cos(th), -std::sin(th));
     const double var = p.rangeSdM * p.rangeSdM * std::pow(k->normal.dot(along), 2) +
                        std::pow(s.r * p.bearingSdRad, 2) * std::pow(k->normal.dot(across), 2) +
                        std::pow(coast.segments()[k->segment].sdM, 2);
-    sumSq += std::pow(k->normal.dot(k->point - e), 2) / var;
+    const double d = k->normal.dot(k->point - e);
+    if (d * d > p.outlierSigmas * p.outlierSigmas * var) {
+      out.usedMask[i] = 0;
+      continue;
+    }
+    sumSq += d * d / var;
+    out.echoPoints.push_back(e);
+    out.chartPoints.push_back(k->point);
   }
   out.rmsNormalizedResidual =
       out.echoPoints.empty() ? 0.0 : std::sqrt(sumSq / static_cast<double>(out.echoPoints.size()));

@@ -28,6 +28,7 @@ struct MatchParams {
   int maxIterations = 6;
   double settleM = 0.05;  ///< stop when the correction moves echoes less than this
   int minEchoes = 8;
+  double outlierSigmas = 4.0;  ///< after the first solve, echoes this many sd off their contour are dropped
 };
 
 struct MatchResult {

@@ -99,6 +99,24 @@ struct FilterSpec {
   double minSpeedMps = 0.5;         ///< below: gyro and speedlog are not linearisable
 };
 
+/// Seed 004: a radar picture matched to the chart's contours every few sweeps, fed to the DRKF as a
+/// position and heading fix (docs/radar_matching.md). The contours come from the charts loaded by
+/// the program (SimulationEngine::setCoastline); without them nothing is matched.
+struct RadarMatchingSpec {
+  bool enabled = false;
+  int azimuths = 1024;
+  int rangeBins = 512;
+  double maxRangeM = 6000.0;
+  int everySweeps = 1;            ///< match every n-th sweep
+  double rejectDistanceM = 60.0;  ///< echoes farther than this from every contour are not the chart's
+  double beamWidthDeg = 1.0;
+  /// A fix is applied only when the picture pins the ship down: its position sd (along the worst
+  /// direction) and heading sd under these. A coast seen end-on leaves a direction unobservable; such a
+  /// fix carries little and its linearisation (errors of several degrees) is not to be trusted.
+  double maxFixSdM = 30.0;
+  double maxFixHeadingSdDeg = 0.5;
+};
+
 struct Scenario {
   std::string name;
   std::string description;
@@ -113,6 +131,7 @@ struct Scenario {
   sensors::SpeedlogSpec speedlog;
   sensors::GyroSpec gyro;
   sensors::RadarSpec radar;
+  RadarMatchingSpec radarMatching;
   std::vector<TargetSpec> targets;
   FilterSpec filter;
   TrackerSpec tracker;

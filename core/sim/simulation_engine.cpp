@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "common/angles.h"
+#include "radar/chart_matching.h"
 
 namespace reckoner::sim {
 namespace {
@@ -64,7 +65,8 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
       loran_(scenario.loran, Rng(seed, kStreamLoran), 0),
       speedlog_(scenario.speedlog, Rng(seed, kStreamSpeedlog), 0),
       gyro_(scenario.gyro, Rng(seed, kStreamGyro)),
-      radar_(scenario.radar, Rng(seed, kStreamRadar), Rng(seed, kStreamClutter)) {
+      radar_(scenario.radar, Rng(seed, kStreamRadar), Rng(seed, kStreamClutter)),
+      radarImageRng_(seed, kStreamRadarImage) {
   const std::array<std::pair<bool, double>, sensors::kOwnShipSensorCount> rates{
       {{scenario.gps.fitted, scenario.gps.rateHz},
        {scenario.loran.fitted, scenario.loran.rateHz},
@@ -194,6 +196,7 @@ void SimulationEngine::startSweep(TimeUs t, SimFrame& frame) {
     const double convergence = ownShipInput().convergenceRad;
     for (const auto& tr : manager_->tracks()) snap.tracks.push_back(snapshotOf(tr, t, convergence));
     frame.sweeps.push_back(std::move(snap));
+    matchRadar(t, frame);
   }
   const VesselTruth& own = truth_.state();
   const double gamma = truthGrid().convergenceRad;
@@ -336,6 +339,77 @@ void SimulationEngine::setSensorPower(SensorId id, bool on) {
 
 void SimulationEngine::setSpeedlogMode(sensors::SpeedlogMode mode) {
   if (scenario_.speedlog.fitted) scenario_.speedlog.mode.overrideFrom(commandTimeUs(), mode);
+}
+
+void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
+  // Seed 004 (docs/radar_matching.md): the picture of the sweep that ends at t, simulated from the
+  // true motion, matched to the chart from the DRKF's estimate and applied to it as a fix at t.
+  const RadarMatchingSpec& m = scenario_.radarMatching;
+  const double T = scenario_.radar.sweepPeriodS;
+  const VesselTruth& tr = truth_.state();
+  const std::optional<double> lastHeading = lastSweepHeadingRad_;
+  lastSweepHeadingRad_ = tr.headingRad;
+  if (!m.enabled || !coast_ || coast_->empty() || !scenario_.radar.power.at(t)) return;
+  if (++sweepIndex_ % m.everySweeps != 0) return;
+  radar::SweepPose truePose;
+  truePose.startUs = t - fromSeconds(T);
+  truePose.periodS = T;
+  truePose.velocity = {tr.groundVxMps(), tr.groundVyMps()};
+  truePose.turnRateRadPerS = lastHeading ? angleDiff(tr.headingRad, *lastHeading) / T : 0.0;
+  truePose.position = est::Vec<2>(tr.position.xM, tr.position.yM) - truePose.velocity * T;
+  truePose.headingRad = tr.headingRad - truePose.turnRateRadPerS * T;
+  std::vector<radar::RadarTarget> targets;
+  for (std::size_t i = 0; i < targets_.size(); ++i) {
+    if (scenario_.targets[i].appearUs > t) continue;
+    const auto& p = targets_[i].state().position;
+    targets.push_back({est::Vec<2>(p.xM, p.yM), 25.0});
+  }
+  radar::RadarImageParams ip;
+  ip.azimuths = m.azimuths;
+  ip.rangeBins = m.rangeBins;
+  ip.maxRangeM = m.maxRangeM;
+  ip.beamWidthRad = degToRad(m.beamWidthDeg);
+  const radar::PolarImage image = radar::simulateRadarImage(*coast_, targets, truePose, ip, radarImageRng_);
+  const std::vector<radar::EchoPoint> echoes = radar::extractEchoes(image, ip.azStepRad(), {});
+  // The estimated pose over the same sweep: the DRKF's position, velocity over ground and heading
+  // (the direction of the velocity through the water) at t, no turn.
+  const auto& x = drkf_->belief().x;
+  const est::Vec<2> estPos(x[est::drkf::kPosX], x[est::drkf::kPosY]);
+  const est::Vec<4> g = nav::groundStateOf(drkf_->belief());
+  radar::SweepPose estPose;
+  estPose.startUs = truePose.startUs;
+  estPose.periodS = T;
+  estPose.velocity = g.tail<2>();
+  estPose.position = estPos - estPose.velocity * T;
+  estPose.headingRad = bearingOf(x[est::drkf::kVelX], x[est::drkf::kVelY]);
+  radar::MatchParams mp;
+  mp.rejectDistanceM = m.rejectDistanceM;
+  // An echo point's error: the sensor's, plus the picture's own resolution (a range bin; half the
+  // beam width, over which the half-power rule places a shore that is not square to the beam).
+  mp.rangeSdM = std::hypot(ip.rangeSdM, ip.binM());
+  mp.bearingSdRad = std::hypot(ip.bearingSdRad, 0.5 * ip.beamWidthRad);
+  const radar::MatchResult r = radar::matchEchoes(echoes, estPose, *coast_, mp);
+  RadarFixReport rep;
+  rep.timeUs = t;
+  rep.echoes = r.echoes;
+  rep.used = r.used;
+  rep.valid = r.valid;
+  const est::Mat<2> Pp = r.covariance.topLeftCorner<2, 2>();
+  const double worstPositionVar = 0.5 * (Pp.trace() + std::hypot(Pp(0, 0) - Pp(1, 1), 2.0 * Pp(0, 1)));
+  rep.informative = r.valid && worstPositionVar <= m.maxFixSdM * m.maxFixSdM &&
+                    r.covariance(2, 2) <= std::pow(degToRad(m.maxFixHeadingSdDeg), 2);
+  if (r.valid) {
+    rep.correction = r.correction;
+    rep.covariance = r.covariance;
+    const est::Vec<3> z(estPos[0] + r.correction[0], estPos[1] + r.correction[1],
+                        wrapTwoPi(estPose.headingRad + r.correction[2]));
+    rep.fixPosition = z.head<2>();
+    rep.fixHeadingRad = z[2];
+    if (rep.informative) rep.update = drkf_->updateRadarFix(t, z, r.covariance);
+    rep.echoPoints = r.echoPoints;
+    rep.chartPoints = r.chartPoints;
+  }
+  frame.radarFixes.push_back(std::move(rep));
 }
 
 void SimulationEngine::setTrackerKind(track::TrackerKind kind) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "navigation/drkf.h"
+#include "radar/coastline.h"
 #include "sensors/own_ship_simulators.h"
 #include "sensors/radar.h"
 #include "sim/scenario.h"
@@ -39,6 +40,20 @@ struct SweepSnapshot {
   std::vector<TrackSnapshot> tracks;
 };
 
+/// A radar picture matched to the chart and applied to the DRKF (seed 004).
+struct RadarFixReport {
+  TimeUs timeUs = 0;
+  int echoes = 0, used = 0;
+  bool valid = false;                            ///< the matching gave a correction
+  bool informative = false;                      ///< good enough to apply (RadarMatchingSpec limits)
+  est::Vec<3> correction = est::Vec<3>::Zero();  ///< to the estimated position (grid m) and heading (rad)
+  est::Mat<3> covariance = est::Mat<3>::Zero();
+  est::Vec<2> fixPosition = est::Vec<2>::Zero();     ///< the fix given to the DRKF: position (grid m) ...
+  double fixHeadingRad = 0.0;                        ///< ... and heading (grid)
+  est::UpdateReport<3> update;                       ///< the DRKF's update with it
+  std::vector<est::Vec<2>> echoPoints, chartPoints;  ///< matched echoes (corrected) and their chart points
+};
+
 struct SimFrame {
   TimeUs timeUs = 0;
   VesselTruth truth;
@@ -53,6 +68,7 @@ struct SimFrame {
   std::vector<sensors::RadarPlot> plots;    ///< radar plots of this cycle
   std::vector<int> plotSources;             ///< target id of each plot (-1: clutter); not given to trackers
   std::vector<TrackSnapshot> tracks;        ///< at timeUs
+  std::vector<RadarFixReport> radarFixes;   ///< radar pictures matched to the chart this cycle
   std::vector<SweepSnapshot> sweeps;        ///< sweeps that ended during this cycle
   std::vector<track::TrackEvent> trackEvents;
   bool capacityWarning = false;
@@ -95,6 +111,8 @@ class SimulationEngine {
   void setRadarPower(bool on);
   /// The filter of tracks started from now on (tracks keep theirs).
   void setTrackerKind(track::TrackerKind kind);
+  /// The chart contours for radar matching (scenario.radarMatching); null: none.
+  void setCoastline(std::shared_ptr<const radar::Coastline> coast) { coast_ = std::move(coast); }
   /// Adds a target that appears now at its spec's initial position; its id is replaced by a free one
   /// when negative or taken. Returns the id, or nullopt if the spec is invalid.
   std::optional<int> addTarget(TargetSpec target);
@@ -122,6 +140,7 @@ class SimulationEngine {
   [[nodiscard]] TrackSnapshot snapshotOf(const track::Track& t, TimeUs time, double convergence) const;
   void radarPlot(const PendingPlot& p, SimFrame& frame);
   void advanceTargetsTo(TimeUs t);
+  void matchRadar(TimeUs t, SimFrame& frame);
   [[nodiscard]] track::OwnShipInput ownShipInput() const;
 
   Scenario scenario_;
@@ -142,6 +161,10 @@ class SimulationEngine {
   TimeUs timeUs_ = 0;
   TimeUs gridTimeUs_ = -1;
   geo::GridInfo grid_;
+  std::shared_ptr<const radar::Coastline> coast_;
+  Rng radarImageRng_;
+  long sweepIndex_ = 0;
+  std::optional<double> lastSweepHeadingRad_;
 };
 
 /// The DRKF configuration a scenario implies (the filter is tuned with the sensors' specifications).

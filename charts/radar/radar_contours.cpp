@@ -39,4 +39,30 @@ radar::Coastline radarContours(const std::vector<CellPtr>& cells, const geo::Loc
   return radar::Coastline(std::move(segments));
 }
 
+radar::LandMask landMask(const std::vector<CellPtr>& cells, const geo::LocalFrame& frame,
+                         const geo::GridPoint& centre, double radiusM) {
+  std::vector<std::vector<est::Vec<2>>> rings;
+  const est::Vec<2> c(centre.xM, centre.yM);
+  for (const auto& cell : cells) {
+    if (!cell) continue;
+    for (const ChartFeature& f : cell->features()) {
+      if (f.objectClass != "LNDARE" || f.geometry.primitive != Primitive::Area) continue;
+      for (const auto& part : f.geometry.parts) {
+        std::vector<est::Vec<2>> ring;
+        est::Vec<2> lo = est::Vec<2>::Constant(1e300), hi = est::Vec<2>::Constant(-1e300);
+        for (const LatLon& ll : part) {
+          const geo::GridPoint g = frame.toLocal({ll.latDeg, ll.lonDeg});
+          ring.emplace_back(g.xM, g.yM);
+          lo = lo.cwiseMin(ring.back());
+          hi = hi.cwiseMax(ring.back());
+        }
+        // Kept when its bounding box meets the circle's (a ring around the centre has no vertex near it).
+        if ((lo.array() <= (c.array() + radiusM)).all() && (hi.array() >= (c.array() - radiusM)).all())
+          rings.push_back(std::move(ring));
+      }
+    }
+  }
+  return radar::LandMask(rings);
+}
+
 }  // namespace reckoner::charts

@@ -9,6 +9,7 @@
 #include "charts/model/chart_model.h"
 #include "geo/local_frame.h"
 #include "radar/coastline.h"
+#include "radar/land_mask.h"
 
 namespace reckoner::charts {
 
@@ -21,5 +22,9 @@ struct RadarContourParams {
 radar::Coastline radarContours(const std::vector<CellPtr>& cells, const geo::LocalFrame& frame,
                                const geo::GridPoint& centre, double radiusM,
                                const RadarContourParams& params = {});
+
+/// The land areas (LNDARE rings) of the cells within radiusM of `centre` (grid), for chart-aided ARPA.
+radar::LandMask landMask(const std::vector<CellPtr>& cells, const geo::LocalFrame& frame,
+                         const geo::GridPoint& centre, double radiusM);
 
 }  // namespace reckoner::charts

@@ -113,6 +113,8 @@ class SimulationEngine {
   void setTrackerKind(track::TrackerKind kind);
   /// The chart contours for radar matching (scenario.radarMatching); null: none.
   void setCoastline(std::shared_ptr<const radar::Coastline> coast) { coast_ = std::move(coast); }
+  /// Charted land for chart-aided acquisition (TrackManager::setLandMask); null: none.
+  void setLandMask(std::shared_ptr<const radar::LandMask> land) { manager_->setLandMask(std::move(land)); }
   /// Adds a target that appears now at its spec's initial position; its id is replaced by a free one
   /// when negative or taken. Returns the id, or nullopt if the spec is invalid.
   std::optional<int> addTarget(TargetSpec target);

@@ -247,6 +247,14 @@ bool TrackManager::inZones(const GridPlot& plot) const {
   return false;
 }
 
+bool TrackManager::onLand(const GridPlot& plot, const OwnShipInput& own) const {
+  if (!land_) return false;
+  const double dtS = toSeconds(plot.timeUs - own.timeUs);
+  const est::Vec<2> at(own.x[0] + own.x[2] * dtS + plot.rangeM * std::sin(plot.bearingRad),
+                       own.x[1] + own.x[3] * dtS + plot.rangeM * std::cos(plot.bearingRad));
+  return land_->contains(at);
+}
+
 std::optional<int> TrackManager::startTrack(const OwnShipInput& own, const GridPlot& plot, int tag,
                                             bool manual) {
   if (active_ >= config_.capacity) {
@@ -468,7 +476,9 @@ void TrackManager::associatePending() {
   for (std::size_t j = 0; j < pending_.size(); ++j) {
     if (taken[j]) continue;
     const Pending& p = pending_[j];
-    if (config_.autoAcquire && inZones(p.plot)) {
+    const bool land = config_.autoAcquire && onLand(p.plot, own);
+    counters_.plotsOnLand += land ? 1 : 0;
+    if (config_.autoAcquire && inZones(p.plot) && !land) {
       startTrack(own, p.plot, p.tag, false);
     } else {
       free_.push_back({p.plot, p.tag, own, sweep_});

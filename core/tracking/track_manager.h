@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "radar/land_mask.h"
 #include "tracking/cpa.h"
 #include "tracking/input_window.h"
 #include "tracking/track_filter.h"
@@ -116,6 +117,7 @@ struct TrackCounters {
   long plotsAssociated = 0;
   long plotsStale = 0;        ///< older than the last own-ship input: not usable
   long plotsRefusedFull = 0;  ///< would have started a track, bank full
+  long plotsOnLand = 0;       ///< unassociated plots on charted land: not acquired (chart-aided ARPA)
   long tracksStarted = 0;
   long tracksConfirmed = 0;
   long tracksLost = 0;
@@ -143,6 +145,9 @@ class TrackManager {
   std::optional<int> acquire(double xGridM, double yGridM);
   /// The filter of tracks started from now on (the operator's choice; tracks keep theirs).
   void setTrackerKind(TrackerKind kind) { config_.kind = kind; }
+  /// Chart-aided acquisition: unassociated plots on this land are not acquired automatically (they are
+  /// echoes of the shore, not targets). Null: no chart. Manual acquisition is the operator's call.
+  void setLandMask(std::shared_ptr<const radar::LandMask> land) { land_ = std::move(land); }
   bool cancel(int trackId);
   void cancelAll();
 
@@ -179,6 +184,7 @@ class TrackManager {
   void setManoeuvring(Track& t, bool flag, TimeUs time);
   std::optional<int> startTrack(const OwnShipInput& own, const GridPlot& plot, int tag, bool manual);
   bool inZones(const GridPlot& plot) const;
+  bool onLand(const GridPlot& plot, const OwnShipInput& own) const;
   void updateDanger(Track& t, TimeUs now);
   void event(TrackEvent::Kind k, TimeUs t, int id) { events_.push_back({k, t, id}); }
 
@@ -197,6 +203,7 @@ class TrackManager {
   int sweep_ = 0;
   bool capacityWarning_ = false;
   bool fullThisSweep_ = false;
+  std::shared_ptr<const radar::LandMask> land_;
 };
 
 }  // namespace reckoner::track

@@ -12,6 +12,7 @@
 #include "common/rng.h"
 #include "io/scenario_json.h"
 #include "radar/chart_matching.h"
+#include "radar/land_mask.h"
 #include "radar/radar_image.h"
 #include "resources/embedded.h"
 #include "sim/simulation_engine.h"
@@ -115,6 +116,35 @@ class TestRadarContours : public QObject {
     QVERIFY(applied > fixes / 2);
     QVERIFY(matched < 30.0);
     QVERIFY(matched < dr);
+  }
+  void landOfTheCharts() {
+    // The land mask (chart-aided ARPA): RK5SOUND around the default scenario's start is partly land,
+    // and own ship's start is water. On US5WA22M (when present) downtown Tacoma is land and
+    // Commencement Bay is water.
+    const auto cell = charts::loadCell(std::string(charts::kDefaultChartPath));
+    const geo::LocalFrame frame(49.5, -29.5);
+    const radar::LandMask land = charts::landMask({cell}, frame, {0, 0}, 10000.0);
+    QVERIFY(!land.empty());
+    QVERIFY(!land.contains({-2385.0, 3602.0}));
+    int onLand = 0, all = 0;
+    for (double x = -4000; x <= 4000; x += 200)
+      for (double y = -4000; y <= 4000; y += 200) {
+        ++all;
+        onLand += land.contains({x, y}) ? 1 : 0;
+      }
+    qInfo("RK5SOUND: %d of %d points within 4 km on land", onLand, all);
+    QVERIFY(onLand > 0 && onLand < all);
+    const std::string path = std::string(RECKONER_SHARED_DIR) + "/data/enc/US5WA22M";
+    if (!std::filesystem::exists(path)) return;
+    const auto cells = charts::loadCharts({path}).cells;
+    const geo::LocalFrame tacoma(47.27, -122.44);
+    const radar::LandMask l2 = charts::landMask(cells, tacoma, {0, 0}, 20000.0);
+    const auto at = [&](double lat, double lon) {
+      const geo::GridPoint g = tacoma.toLocal({lat, lon});
+      return l2.contains({g.xM, g.yM});
+    };
+    QVERIFY(at(47.2529, -122.4443));  // downtown Tacoma
+    QVERIFY(!at(47.285, -122.44));    // Commencement Bay
   }
   void noaaTacoma() {
     const std::string path = std::string(RECKONER_SHARED_DIR) + "/data/enc/US5WA22M";

@@ -9,8 +9,10 @@
 #include "estimation/ekf.h"
 #include "radar/chart_matching.h"
 #include "radar/coastline.h"
+#include "radar/land_mask.h"
 #include "radar/radar_image.h"
 #include "support/radar_fixtures.h"
+#include "tracking/track_manager.h"
 
 using namespace reckoner;
 using radar::CoastSegment;
@@ -46,6 +48,46 @@ class TestRadarMatching : public QObject {
     QVERIFY(!c.firstHit({0.0, 0.0}, degToRad(90.0), 50.0));                                // beyond the range
     QVERIFY(std::abs(*c.firstHit({-300.0, 0.0}, degToRad(90.0), 1000.0) - 200.0) < 1e-9);  // from outside
     QVERIFY(!c.firstHit({-300.0, 0.0}, degToRad(270.0), 1000.0));                          // away from it
+  }
+
+  void landMaskIsEvenOdd() {
+    // An island with a lake: inside the island is land, the lake and the sea are not; points on the
+    // cells' boundaries and beyond the mask's extent are handled.
+    const radar::LandMask m(
+        {{{0, 0}, {1000, 0}, {1000, 800}, {0, 800}}, {{300, 300}, {600, 300}, {600, 500}, {300, 500}}},
+        200.0);
+    QVERIFY(m.contains({100.0, 100.0}));
+    QVERIFY(m.contains({800.0, 600.0}));
+    QVERIFY(m.contains({400.0, 200.0}));    // on a cell boundary in y
+    QVERIFY(!m.contains({450.0, 400.0}));   // the lake
+    QVERIFY(!m.contains({-50.0, 400.0}));   // west of it
+    QVERIFY(!m.contains({1500.0, 400.0}));  // east of the mask
+    QVERIFY(!m.contains({500.0, 900.0}));   // north
+    QVERIFY(!m.contains({std::nan(""), 0.0}));
+  }
+
+  void plotsOnChartedLandAreNotAcquired() {
+    // GIVEN a track bank with the chart's land WHEN an unassociated plot falls on land and another on
+    // the water THEN only the one on the water starts a track, and the other is counted.
+    track::TrackManagerConfig c;
+    track::TrackManager bank(c);
+    bank.setLandMask(std::make_shared<const radar::LandMask>(
+        std::vector<std::vector<est::Vec<2>>>{{{1000, 1000}, {3000, 1000}, {3000, 3000}, {1000, 3000}}}));
+    track::OwnShipInput own;
+    own.x << 0, 0, 0, 0;
+    own.P = est::Mat<4>::Identity();
+    bank.feedOwnShip(own);
+    const auto plot = [](TimeUs t, double x, double y) {
+      return track::GridPlot{t, std::hypot(x, y), wrapTwoPi(std::atan2(x, y)), 100.0, 7.6e-5};
+    };
+    bank.addPlot(plot(100'000, 2000, 2000));   // land
+    bank.addPlot(plot(200'000, -2000, 2000));  // water
+    own.timeUs = 1'000'000;
+    bank.feedOwnShip(own);
+    QCOMPARE(bank.tracks().size(), std::size_t(1));
+    QCOMPARE(bank.counters().plotsOnLand, 1L);
+    const auto b = bank.beliefAt(bank.tracks().front(), 1'000'000);
+    QVERIFY(b.x[est::ttkf::kTgtX] < 0.0);
   }
 
   void echoesAreTheFrontContour() {

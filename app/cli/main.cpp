@@ -268,6 +268,8 @@ int cmdRadarFix(int argc, char** argv) {
   const geo::LocalFrame frame(s.origin.latDeg, s.origin.lonDeg);
   const auto coast = std::make_shared<const radar::Coastline>(
       charts::radarContours(loaded.cells, frame, {0.0, 0.0}, 100000.0));
+  const auto land =
+      std::make_shared<const radar::LandMask>(charts::landMask(loaded.cells, frame, {0.0, 0.0}, 100000.0));
   std::printf(
       "radar fixes on %s with %s (%zu contour segments), %d runs: dead reckoning alone against radar "
       "matching\n",
@@ -285,6 +287,7 @@ int cmdRadarFix(int argc, char** argv) {
     sim::parallelRuns(runs, threads, [&](int i) {
       sim::SimulationEngine e(sc, seed + static_cast<std::uint64_t>(i));
       e.setCoastline(coast);
+      e.setLandMask(land);
       Out& o = outs[static_cast<std::size_t>(i)];
       while (!e.finished()) {
         const sim::SimFrame f = e.step();

@@ -247,18 +247,25 @@ int cmdRun(int argc, char** argv) {
   return 0;
 }
 
+/// --runs (default given), --threads (default: the machine's) and --seed (default: the scenario's).
+struct MonteCarloOptions {
+  int runs;
+  int threads;
+  std::uint64_t seed;
+};
+MonteCarloOptions monteCarloOptions(const Args& a, int defaultRuns, std::uint64_t defaultSeed) {
+  const auto opt = [&a](const std::string& k) { return a.options.count(k) > 0; };
+  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return {opt("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : defaultRuns,
+          opt("threads") ? static_cast<int>(parseCount("threads", a.options.at("threads"), 1, 256)) : hw,
+          opt("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : defaultSeed};
+}
+
 int cmdRadarFix(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {"enc", "runs", "threads", "seed"});
   if (a.positional.size() != 1) throw UsageError("radar-fix needs exactly one SCENARIO");
   sim::Scenario s = loadScenario(a.positional[0]);
-  const int runs =
-      a.options.count("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 20;
-  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int threads = a.options.count("threads")
-                          ? static_cast<int>(parseCount("threads", a.options.at("threads"), 1, 256))
-                          : hw;
-  const std::uint64_t seed =
-      a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+  const auto [runs, threads, seed] = monteCarloOptions(a, 20, s.seed);
   const std::string enc =
       a.options.count("enc") ? a.options.at("enc") : std::string(charts::kDefaultChartPath);
   const charts::LoadResult loaded = charts::loadCharts({enc});
@@ -363,14 +370,7 @@ int cmdOwnShipCompare(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {"runs", "threads", "seed"});
   if (a.positional.size() != 1) throw UsageError("own-ship-compare needs exactly one SCENARIO");
   const sim::Scenario s = loadScenario(a.positional[0]);
-  const int runs =
-      a.options.count("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 20;
-  const int hw = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int threads = a.options.count("threads")
-                          ? static_cast<int>(parseCount("threads", a.options.at("threads"), 1, 256))
-                          : hw;
-  const std::uint64_t seed =
-      a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
+  const auto [runs, threads, seed] = monteCarloOptions(a, 20, s.seed);
   const auto all = sim::runOwnShipFiltersMonteCarlo(s, runs, threads, seed);
   const auto bounds = est::averageNeesBounds(4, runs);
   const auto stats = sim::summariseOwnShipFilters(all, fromSeconds(60.0), bounds);

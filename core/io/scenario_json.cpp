@@ -66,6 +66,14 @@ class Fields {
     const JsonValue* v = get(key);
     return v ? checkedNumber(*v, pathOf(key), check) : fallback;
   }
+  /// An optional integer in [lo, hi].
+  int integerOr(std::string_view key, int lo, int hi, int fallback) {
+    const JsonValue* c = get(key);
+    if (!c) return fallback;
+    if (!c->isNumber() || c->number < lo || c->number > hi || std::floor(c->number) != c->number)
+      fail(*c, pathOf(key), "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return static_cast<int>(c->number);
+  }
   double checkedNumber(const JsonValue& v, const std::string& path, Check check) const {
     if (!v.isNumber()) fail(v, path, std::string("must be a number, got ") + typeName(v.type));
     if (check == Check::Positive && !(v.number > 0.0))
@@ -349,17 +357,9 @@ void readRadarMatching(Fields& top, sim::Scenario& s) {
   auto& m = s.radarMatching;
   m.enabled = true;
   if (const JsonValue* e = f.get("enabled")) m.enabled = f.boolean(*e, f.pathOf("enabled"));
-  const auto integer = [&f](std::string_view key, int lo, int hi, int fallback) {
-    const JsonValue* c = f.get(key);
-    if (!c) return fallback;
-    if (!c->isNumber() || c->number < lo || c->number > hi || std::floor(c->number) != c->number)
-      f.fail(*c, f.pathOf(key),
-             "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return static_cast<int>(c->number);
-  };
-  m.azimuths = integer("azimuths", 64, 16384, m.azimuths);
-  m.rangeBins = integer("range_bins", 32, 8192, m.rangeBins);
-  m.everySweeps = integer("every_sweeps", 1, 1000, m.everySweeps);
+  m.azimuths = f.integerOr("azimuths", 64, 16384, m.azimuths);
+  m.rangeBins = f.integerOr("range_bins", 32, 8192, m.rangeBins);
+  m.everySweeps = f.integerOr("every_sweeps", 1, 1000, m.everySweeps);
   m.maxRangeM = nmToMetres(f.numberOr("max_range_nm", metresToNm(m.maxRangeM), Fields::Check::Positive));
   m.rejectDistanceM = f.numberOr("reject_distance_m", m.rejectDistanceM, Fields::Check::Positive);
   m.beamWidthDeg = f.numberOr("beam_width_deg", m.beamWidthDeg, Fields::Check::Positive);
@@ -400,15 +400,7 @@ void readTracker(Fields& top, sim::Scenario& s) {
       f.fail(*g, f.pathOf("gate_probability"), "must be in [0, 1) (0 disables gating)");
   }
   tr.initialSpeedSdMps = f.numberOr("initial_speed_sd_mps", tr.initialSpeedSdMps, Fields::Check::Positive);
-  const auto integer = [&f](std::string_view key, int lo, int hi, int fallback) {
-    const JsonValue* c = f.get(key);
-    if (!c) return fallback;
-    if (!c->isNumber() || c->number < lo || c->number > hi || std::floor(c->number) != c->number)
-      f.fail(*c, f.pathOf(key),
-             "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return static_cast<int>(c->number);
-  };
-  tr.capacity = static_cast<std::size_t>(integer("capacity", 1, 1000000, static_cast<int>(tr.capacity)));
+  tr.capacity = static_cast<std::size_t>(f.integerOr("capacity", 1, 1000000, static_cast<int>(tr.capacity)));
   if (const JsonValue* a = f.get("association")) {
     if (a->isString() && a->string == "nearest")
       tr.association = track::Association::Nearest;

@@ -173,14 +173,7 @@ GeodeticUpdate GeodeticKf::update(TimeUs t, std::span<const sensors::OwnShipSamp
                                   const geo::LocalFrame& frame) {
   GeodeticUpdate out;
   if (!predictTo(t)) return out;
-  const sensors::GpsSample* gps = nullptr;
-  const sensors::GyroSample* gyro = nullptr;
-  const sensors::SpeedlogSample* log = nullptr;
-  for (const auto& s : samples) {
-    if (const auto* g = std::get_if<sensors::GpsSample>(&s)) gps = g;
-    if (const auto* g = std::get_if<sensors::GyroSample>(&s)) gyro = g;
-    if (const auto* l = std::get_if<sensors::SpeedlogSample>(&s)) log = l;
-  }
+  const auto [gps, gyro, log] = sensors::epochSamples(samples);
   if (gps) {
     const geo::GeoPoint g = frame.toGeodetic(gps->position);
     const double scale = frame.gridInfo(gps->position).scale;

@@ -59,14 +59,7 @@ void LsqNavigator::deadReckonTo(TimeUs t) {
 bool LsqNavigator::update(TimeUs t, std::span<const sensors::OwnShipSample> samples,
                           const geo::LocalFrame& frame) {
   deadReckonTo(t);
-  const sensors::GpsSample* gps = nullptr;
-  const sensors::GyroSample* gyro = nullptr;
-  const sensors::SpeedlogSample* log = nullptr;
-  for (const auto& s : samples) {
-    if (const auto* g = std::get_if<sensors::GpsSample>(&s)) gps = g;
-    if (const auto* g = std::get_if<sensors::GyroSample>(&s)) gyro = g;
-    if (const auto* l = std::get_if<sensors::SpeedlogSample>(&s)) log = l;
-  }
+  const auto [gps, gyro, log] = sensors::epochSamples(samples);
   bool fused = false;
   if (gps) {
     const std::array<PositionFix, 2> fixes{PositionFix{est::Vec<2>(gps->position.xM, gps->position.yM),

@@ -60,4 +60,22 @@ inline SensorId sensorOf(const OwnShipSample& s) {
   return static_cast<SensorId>(s.index());
 }
 
+/// One epoch's GPS, gyro and speedlog samples (the last of each kind; null when absent), for filters
+/// that pair the gyro and the log into a dead-reckoning velocity (seed 002).
+struct EpochSamples {
+  const GpsSample* gps = nullptr;
+  const GyroSample* gyro = nullptr;
+  const SpeedlogSample* speedlog = nullptr;
+};
+template <class Range>
+EpochSamples epochSamples(const Range& samples) {
+  EpochSamples e;
+  for (const auto& s : samples) {
+    if (const auto* g = std::get_if<GpsSample>(&s)) e.gps = g;
+    if (const auto* g = std::get_if<GyroSample>(&s)) e.gyro = g;
+    if (const auto* l = std::get_if<SpeedlogSample>(&s)) e.speedlog = l;
+  }
+  return e;
+}
+
 }  // namespace reckoner::sensors

@@ -381,7 +381,12 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
   estPose.periodS = T;
   estPose.velocity = g.tail<2>();
   estPose.position = estPos - estPose.velocity * T;
-  estPose.headingRad = bearingOf(x[est::drkf::kVelX], x[est::drkf::kVelY]);
+  // The heading turns during the sweep as the estimated acceleration turns the velocity through the
+  // water: d/dt atan2(vx, vy) = (vy ax - vx ay) / |v|^2. Without it a fix taken in a turn would carry
+  // the sweep's mean heading, half a sweep old (1 deg at 1 deg/s and 2 s).
+  const double vx = x[est::drkf::kVelX], vy = x[est::drkf::kVelY], v2 = vx * vx + vy * vy;
+  estPose.turnRateRadPerS = v2 > 0.25 ? (vy * x[est::drkf::kAccX] - vx * x[est::drkf::kAccY]) / v2 : 0.0;
+  estPose.headingRad = bearingOf(vx, vy) - estPose.turnRateRadPerS * T;
   radar::MatchParams mp;
   mp.rejectDistanceM = m.rejectDistanceM;
   // An echo point's error: the sensor's, plus the picture's own resolution (a range bin; half the
@@ -402,7 +407,7 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
     rep.correction = r.correction;
     rep.covariance = r.covariance;
     const est::Vec<3> z(estPos[0] + r.correction[0], estPos[1] + r.correction[1],
-                        wrapTwoPi(estPose.headingRad + r.correction[2]));
+                        wrapTwoPi(estPose.headingAt(T) + r.correction[2]));
     rep.fixPosition = z.head<2>();
     rep.fixHeadingRad = z[2];
     if (rep.informative) rep.update = drkf_->updateRadarFix(t, z, r.covariance);

@@ -8,35 +8,6 @@
 #include "estimation/ekf.h"
 
 namespace reckoner::sim {
-namespace {
-
-/// An OwnShipRow from a grid estimate [x, y, vx, vy] with covariance, against the frame's truth.
-OwnShipRow rowOf(const SimFrame& f, const est::Gaussian<4>& g, const geo::LocalFrame& geo, int rowsApplied) {
-  OwnShipRow r;
-  r.timeUs = f.timeUs;
-  r.trueXM = f.truth.position.xM;
-  r.trueYM = f.truth.position.yM;
-  r.trueVxMps = f.truth.groundVxMps();
-  r.trueVyMps = f.truth.groundVyMps();
-  r.estXM = g.x[0];
-  r.estYM = g.x[1];
-  r.estVxMps = g.x[2];
-  r.estVyMps = g.x[3];
-  r.sdXM = std::sqrt(g.P(0, 0));
-  r.sdYM = std::sqrt(g.P(1, 1));
-  r.sdVxMps = std::sqrt(g.P(2, 2));
-  r.sdVyMps = std::sqrt(g.P(3, 3));
-  const geo::GeoPoint ll = geo.toGeodetic({g.x[0], g.x[1]});
-  r.estLatDeg = ll.latDeg;
-  r.estLonDeg = ll.lonDeg;
-  const est::Vec<4> truth(r.trueXM, r.trueYM, r.trueVxMps, r.trueVyMps);
-  r.nees = est::nees<4>(truth - g.x, g.P);
-  r.sensors = f.sensors;
-  r.rowsApplied = rowsApplied;
-  return r;
-}
-}  // namespace
-
 const char* ownShipFilterName(OwnShipFilter f) {
   switch (f) {
     case OwnShipFilter::Drkf:
@@ -126,14 +97,14 @@ OwnShipFilterRun runOwnShipFilters(const Scenario& scenario, std::uint64_t seed)
     run.rows.push_back(makeRow(f, geo));
     appendSweepRows(f, scenario, geo, run.trackRows, run.targetRows);
     seed002.feed(f);
-    OwnShipRow d = run.rows.back();
-    const est::Gaussian<4> dg{nav::groundStateOf(f.estimate), nav::groundCovarianceOf(f.estimate)};
-    d.nees = est::nees<4>(est::Vec<4>(d.trueXM, d.trueYM, d.trueVxMps, d.trueVyMps) - dg.x, dg.P);
+    OwnShipRow d = groundRow(f, {nav::groundStateOf(f.estimate), nav::groundCovarianceOf(f.estimate)}, geo);
+    d.rowsApplied = run.rows.back().rowsApplied;
     out.rows[static_cast<std::size_t>(OwnShipFilter::Drkf)].push_back(d);
-    out.rows[static_cast<std::size_t>(OwnShipFilter::Geodetic)].push_back(
-        rowOf(f, seed002.ground(OwnShipFilter::Geodetic), geo, seed002.geodeticRowsApplied()));
+    OwnShipRow g = groundRow(f, seed002.ground(OwnShipFilter::Geodetic), geo);
+    g.rowsApplied = seed002.geodeticRowsApplied();
+    out.rows[static_cast<std::size_t>(OwnShipFilter::Geodetic)].push_back(g);
     out.rows[static_cast<std::size_t>(OwnShipFilter::Lsq)].push_back(
-        rowOf(f, seed002.ground(OwnShipFilter::Lsq), geo, 0));
+        groundRow(f, seed002.ground(OwnShipFilter::Lsq), geo));
   }
   run.counters = engine.drkf().counters();
   run.trackCounters = engine.trackers().counters();

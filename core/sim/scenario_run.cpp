@@ -73,26 +73,32 @@ TrackRow trackEstimateRow(TimeUs t, int trackId, int targetId, track::TrackStatu
   return r;
 }
 
-OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo) {
+OwnShipRow groundRow(const SimFrame& f, const est::Gaussian<4>& g, const geo::LocalFrame& geo) {
   OwnShipRow r;
   r.timeUs = f.timeUs;
   r.trueXM = f.truth.position.xM;
   r.trueYM = f.truth.position.yM;
   r.trueVxMps = f.truth.groundVxMps();
   r.trueVyMps = f.truth.groundVyMps();
-  const GroundEstimate g = groundEstimateOf(f.estimate, geo);
-  r.estXM = g.xM;
-  r.estYM = g.yM;
-  r.estVxMps = g.vxMps;
-  r.estVyMps = g.vyMps;
-  r.sdXM = g.sdXM;
-  r.sdYM = g.sdYM;
-  r.sdVxMps = g.sdVxMps;
-  r.sdVyMps = g.sdVyMps;
-  r.estLatDeg = g.latDeg;
-  r.estLonDeg = g.lonDeg;
-  r.nees = est::nees<est::drkf::kStateDim>(f.trueState - f.estimate.x, f.estimate.P);
+  r.estXM = g.x[0];
+  r.estYM = g.x[1];
+  r.estVxMps = g.x[2];
+  r.estVyMps = g.x[3];
+  r.sdXM = std::sqrt(g.P(0, 0));
+  r.sdYM = std::sqrt(g.P(1, 1));
+  r.sdVxMps = std::sqrt(g.P(2, 2));
+  r.sdVyMps = std::sqrt(g.P(3, 3));
+  const geo::GeoPoint ll = geo.toGeodetic({g.x[0], g.x[1]});
+  r.estLatDeg = ll.latDeg;
+  r.estLonDeg = ll.lonDeg;
+  r.nees = est::nees<4>(est::Vec<4>(r.trueXM, r.trueYM, r.trueVxMps, r.trueVyMps) - g.x, g.P);
   r.sensors = f.sensors;
+  return r;
+}
+
+OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo) {
+  OwnShipRow r = groundRow(f, {nav::groundStateOf(f.estimate), nav::groundCovarianceOf(f.estimate)}, geo);
+  r.nees = est::nees<est::drkf::kStateDim>(f.trueState - f.estimate.x, f.estimate.P);
   for (const auto& u : f.updates) r.rowsApplied += u.dim;
   return r;
 }

@@ -30,6 +30,9 @@ struct OwnShipRow {
 };
 
 OwnShipRow makeRow(const SimFrame& frame, const geo::LocalFrame& geo);
+/// The row of any estimate of position and velocity over ground [x, y, vx, vy] (grid) with covariance;
+/// nees is that of those 4 states, rowsApplied 0.
+OwnShipRow groundRow(const SimFrame& frame, const est::Gaussian<4>& estimate, const geo::LocalFrame& geo);
 
 /// A DRKF estimate as output columns: position and velocity over ground, their sds, latitude/longitude.
 struct GroundEstimate {

@@ -51,6 +51,7 @@
 #include "sim/manoeuvre_trial.h"
 #include "sim/nmea_export.h"
 #include "sim/own_ship_filters.h"
+#include "sim/radar_fix_study.h"
 #include "sim/replay.h"
 #include "sim/scenario_run.h"
 #include "sim/seed001.h"
@@ -282,84 +283,19 @@ int cmdRadarFix(int argc, char** argv) {
       "matching\n",
       s.name.c_str(), enc.c_str(), coast->segments().size(), runs);
   const auto study = [&](bool matching) {
-    sim::Scenario sc = s;
-    sc.radarMatching.enabled = matching;
-    struct Out {
-      std::vector<double> posErr, hdgErr;
-      double nees = 0.0, fixNees = 0.0;
-      std::vector<double> fixPosErr, fixHdgErr;
-      long rows = 0, fixes = 0, applied = 0, echoes = 0, used = 0, valid = 0;
-    };
-    std::vector<Out> outs(static_cast<std::size_t>(runs));
-    sim::parallelRuns(runs, threads, [&](int i) {
-      sim::SimulationEngine e(sc, seed + static_cast<std::uint64_t>(i));
-      e.setCoastline(coast);
-      e.setLandMask(land);
-      Out& o = outs[static_cast<std::size_t>(i)];
-      while (!e.finished()) {
-        const sim::SimFrame f = e.step();
-        for (const auto& r : f.radarFixes) {
-          ++o.fixes;
-          o.applied += r.update.applied() ? 1 : 0;
-          o.echoes += r.echoes;
-          o.used += r.used;
-          if (!r.informative || r.timeUs != f.timeUs) continue;
-          // The fix itself against the truth at its time (before the DRKF used it).
-          const est::Vec<3> err(r.fixPosition[0] - f.truth.position.xM,
-                                r.fixPosition[1] - f.truth.position.yM,
-                                angleDiff(r.fixHeadingRad, f.truth.headingRad));
-          o.fixPosErr.push_back(err.head<2>().norm());
-          o.fixHdgErr.push_back(std::abs(err[2]));
-          o.fixNees += est::nees<3>(err, r.covariance);
-          ++o.valid;
-        }
-        if (f.sensors.isOn(sensors::SensorId::Gps) || f.timeUs < fromSeconds(60.0)) continue;
-        const auto& x = f.estimate.x;
-        o.posErr.push_back(
-            std::hypot(x[est::drkf::kPosX] - f.truth.position.xM, x[est::drkf::kPosY] - f.truth.position.yM));
-        o.hdgErr.push_back(
-            std::abs(angleDiff(bearingOf(x[est::drkf::kVelX], x[est::drkf::kVelY]), f.truth.headingRad)));
-        o.nees += est::nees<est::drkf::kStateDim>(f.trueState - f.estimate.x, f.estimate.P);
-        ++o.rows;
-      }
-    });
-    Out all;
-    for (const auto& o : outs) {
-      all.posErr.insert(all.posErr.end(), o.posErr.begin(), o.posErr.end());
-      all.hdgErr.insert(all.hdgErr.end(), o.hdgErr.begin(), o.hdgErr.end());
-      all.nees += o.nees;
-      all.rows += o.rows;
-      all.fixes += o.fixes;
-      all.applied += o.applied;
-      all.echoes += o.echoes;
-      all.used += o.used;
-      all.valid += o.valid;
-      all.fixNees += o.fixNees;
-      all.fixPosErr.insert(all.fixPosErr.end(), o.fixPosErr.begin(), o.fixPosErr.end());
-      all.fixHdgErr.insert(all.fixHdgErr.end(), o.fixHdgErr.begin(), o.fixHdgErr.end());
-    }
-    const auto p95 = [](std::vector<double> v) {
-      if (v.empty()) return std::nan("");
-      std::sort(v.begin(), v.end());
-      return v[static_cast<std::size_t>(0.95 * static_cast<double>(v.size() - 1))];
-    };
-    const double rows = static_cast<double>(std::max(1L, all.rows));
-    double rms = 0.0;
-    for (const double e : all.posErr) rms += e * e;
+    const sim::RadarFixStudy r = sim::runRadarFixStudy(s, coast, land, matching, runs, threads, seed);
     std::printf(
-        "  %-22s without GPS: position p95 %7.1f m, RMS %7.1f m, heading p95 %6.3f deg, mean NEES (11) %6.2f",
-        matching ? "with radar matching" : "dead reckoning alone", p95(all.posErr), std::sqrt(rms / rows),
-        radToDeg(p95(all.hdgErr)), all.nees / rows);
-    if (matching)
-      std::printf(
-          "\n    %ld pictures, %ld fixes applied, %.0f echoes per picture, %.0f matched; the fixes "
-          "themselves: "
-          "position p95 %.1f m, heading p95 %.3f deg, mean NEES (3) %.2f",
-          all.fixes, all.applied,
-          static_cast<double>(all.echoes) / static_cast<double>(std::max(1L, all.fixes)),
-          static_cast<double>(all.used) / static_cast<double>(std::max(1L, all.fixes)), p95(all.fixPosErr),
-          radToDeg(p95(all.fixHdgErr)), all.fixNees / static_cast<double>(std::max(1L, all.valid)));
-    std::printf("\n");
+        "  %-22s without GPS: position p95 %7.1f m, RMS %7.1f m, heading p95 %6.3f deg, mean NEES (11) "
+        "%6.2f\n",
+        matching ? "with radar matching" : "dead reckoning alone", r.positionP95M, r.positionRmsM,
+        r.headingP95Deg, r.meanNees);
+    if (!matching) return;
+    std::printf(
+        "    %ld pictures, %ld fixes applied, %.0f echoes per picture, %.0f matched\n"
+        "    the fixes (less the DRKF's motion error they carry): position p95 %.1f m, heading p95 %.3f deg, "
+        "mean NEES %.2f (3 dof; position %.2f of 2, heading %.2f of 1)\n",
+        r.pictures, r.applied, r.echoesPerPicture, r.matchedPerPicture, r.fixPositionP95M, r.fixHeadingP95Deg,
+        r.fixNees, r.fixPositionNees, r.fixHeadingNees);
   };
   study(false);
   study(true);

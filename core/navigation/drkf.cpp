@@ -243,7 +243,8 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
   return report;
 }
 
-est::UpdateReport<3> Drkf::updateRadarFix(TimeUs t, const est::Vec<3>& z, const est::Mat<3>& R) {
+est::UpdateReport<3> Drkf::updateRadarFix(TimeUs t, const est::Vec<3>& z, const est::Mat<3>& R,
+                                          const est::Mat<3>& sensitivity, const est::Vec<3>& assumedMotion) {
   est::UpdateReport<3> rep;
   if (!predictTo(t)) {
     rep.status = t < timeUs_ ? est::UpdateStatus::RejectedStale : est::UpdateStatus::RejectedNumerical;
@@ -251,10 +252,12 @@ est::UpdateReport<3> Drkf::updateRadarFix(TimeUs t, const est::Vec<3>& z, const 
   }
   const State& x = belief_.x;
   if (std::hypot(x[kVelX], x[kVelY]) >= linearisableSpeed(false)) {
-    return est::update(belief_, est::drkf::RadarFixModel(), z, R, gates_[3]);
+    return est::update(belief_, est::drkf::RadarFixModel(sensitivity, assumedMotion), z, R, gates_[3]);
   }
-  const auto r2 = est::update(belief_, est::drkf::RadarPositionModel(), est::Vec<2>(z.head<2>()),
-                              est::Mat<2>(R.topLeftCorner<2, 2>()), gates_[2]);
+  const auto r2 = est::update(belief_,
+                              est::drkf::RadarPositionModel(est::Mat<2>(sensitivity.topLeftCorner<2, 2>()),
+                                                            est::Vec<2>(assumedMotion.head<2>())),
+                              est::Vec<2>(z.head<2>()), est::Mat<2>(R.topLeftCorner<2, 2>()), gates_[2]);
   rep.dim = r2.dim;
   rep.status = r2.status;
   rep.nis = r2.nis;

@@ -77,9 +77,13 @@ class Drkf {
   /// Predicts to t and applies every sample (all stamped t; others are counted stale and skipped).
   DrkfUpdateReport update(TimeUs t, std::span<const sensors::OwnShipSample> samples);
   /// A radar fix at t (seed 004): position (grid m) and heading (grid, the direction of the velocity
-  /// through the water) with their joint covariance. Predicts to t, gates at the filter's probability
-  /// (3 dof) and applies it; below the linearisable speed only the position is used.
-  est::UpdateReport<3> updateRadarFix(TimeUs t, const est::Vec<3>& z, const est::Mat<3>& R);
+  /// through the water) with their joint covariance, and how the fix moves with the filter's velocity
+  /// and turn rate it was taken with (`sensitivity` to `assumedMotion`, drkf_radar_fix.h; zero for a
+  /// plain fix). Predicts to t, gates at the filter's probability (3 dof) and applies it; below the
+  /// linearisable speed only the position is used.
+  est::UpdateReport<3> updateRadarFix(TimeUs t, const est::Vec<3>& z, const est::Mat<3>& R,
+                                      const est::Mat<3>& sensitivity = est::Mat<3>::Zero(),
+                                      const est::Vec<3>& assumedMotion = est::Vec<3>::Zero());
 
   [[nodiscard]] const drkf::Belief& belief() const { return belief_; }
   [[nodiscard]] TimeUs timeUs() const { return timeUs_; }

@@ -14,19 +14,20 @@ MatchResult matchEchoes(const std::vector<EchoPoint>& echoes, const SweepPose& p
   // Each echo's own pose (eq. 2) and bearing from grid north.
   struct Seen {
     est::Vec<2> s;
-    double theta, r;
+    double theta, r, beforeEndS;
   };
   std::vector<Seen> seen;
   seen.reserve(echoes.size());
   for (const auto& e : echoes) {
     const double dt = pose.timeOffsetS(e.azimuthRad);
-    seen.push_back({pose.positionAt(dt), pose.headingAt(dt) + e.azimuthRad, e.rangeM});
+    seen.push_back({pose.positionAt(dt), pose.headingAt(dt) + e.azimuthRad, e.rangeM, pose.periodS - dt});
   }
   est::Vec<3> x = est::Vec<3>::Zero();
-  est::Mat<3> A = est::Mat<3>::Zero();
+  est::Mat<3> A = est::Mat<3>::Zero(), M = est::Mat<3>::Zero();
   std::vector<char> used(echoes.size(), 0);
   for (int it = 0; it < p.maxIterations; ++it) {
     A.setZero();
+    M.setZero();
     est::Vec<3> b = est::Vec<3>::Zero();
     int n = 0;
     for (std::size_t i = 0; i < seen.size(); ++i) {
@@ -47,6 +48,7 @@ MatchResult matchEchoes(const std::vector<EchoPoint>& echoes, const SweepPose& p
       // object's (a ship alongside, a wrong contour): robust rejection.
       if (it > 0 && d * d > p.outlierSigmas * p.outlierSigmas * var) continue;
       A += a * a.transpose() / var;
+      M -= s.beforeEndS * a * a.transpose() / var;
       b += a * d / var;
       used[i] = 1;
       ++n;
@@ -69,6 +71,7 @@ MatchResult matchEchoes(const std::vector<EchoPoint>& echoes, const SweepPose& p
   out.correction = x;
   out.covariance = ldlt.solve(est::Mat<3>::Identity());
   est::symmetrise(out.covariance);
+  out.motionSensitivity = ldlt.solve(M);
   out.valid = out.correction.allFinite() && out.covariance.allFinite();
   out.rejected = out.echoes - out.used;
   out.usedMask = used;

@@ -40,6 +40,13 @@ struct MatchResult {
   std::vector<est::Vec<2>> echoPoints, chartPoints;  ///< world positions of the matched echoes (after the
                                                      ///< correction) and their chart points
   double rmsNormalizedResidual = 0.0;  ///< of the used echoes after the correction (about 1 if honest)
+  /// How the correction answers an error in the pose's motion. The echoes were placed with the pose's
+  /// velocity and turn rate; if the ship's were larger by d = (dvx, dvy, domega), echo i (seen dt_i
+  /// before the sweep's end) needed the correction at the end plus (-dt_i) d, and the least squares
+  /// returns correction = (correction at the sweep's end) + S d, S = N^-1 sum_i w_i (-dt_i) a_i a_i'.
+  /// A filter that knows its velocity and turn rate only roughly takes S into its measurement model
+  /// (drkf_radar_fix.h) instead of treating the picture's end-of-sweep pose as independent of them.
+  est::Mat<3> motionSensitivity = est::Mat<3>::Zero();
 };
 
 /// The echoes of one sweep against the contours, starting from `pose` (the filter's estimate).

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "common/angles.h"
+#include "estimation/models/drkf_radar_fix.h"
 #include "radar/chart_matching.h"
 
 namespace reckoner::sim {
@@ -375,17 +376,17 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
   // (the direction of the velocity through the water) at t, no turn.
   const auto& x = drkf_->belief().x;
   const est::Vec<2> estPos(x[est::drkf::kPosX], x[est::drkf::kPosY]);
-  const est::Vec<4> g = nav::groundStateOf(drkf_->belief());
+  const est::Vec<3> motion = est::drkf::sweepMotionOf(x);
   radar::SweepPose estPose;
   estPose.startUs = truePose.startUs;
   estPose.periodS = T;
-  estPose.velocity = g.tail<2>();
+  estPose.velocity = motion.head<2>();
   estPose.position = estPos - estPose.velocity * T;
   // The heading turns during the sweep as the estimated acceleration turns the velocity through the
   // water: d/dt atan2(vx, vy) = (vy ax - vx ay) / |v|^2. Without it a fix taken in a turn would carry
   // the sweep's mean heading, half a sweep old (1 deg at 1 deg/s and 2 s).
-  const double vx = x[est::drkf::kVelX], vy = x[est::drkf::kVelY], v2 = vx * vx + vy * vy;
-  estPose.turnRateRadPerS = v2 > 0.25 ? (vy * x[est::drkf::kAccX] - vx * x[est::drkf::kAccY]) / v2 : 0.0;
+  const double vx = x[est::drkf::kVelX], vy = x[est::drkf::kVelY];
+  estPose.turnRateRadPerS = std::hypot(vx, vy) > 0.5 ? motion[2] : 0.0;
   estPose.headingRad = bearingOf(vx, vy) - estPose.turnRateRadPerS * T;
   radar::MatchParams mp;
   mp.rejectDistanceM = m.rejectDistanceM;
@@ -410,7 +411,11 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
                         wrapTwoPi(estPose.headingAt(T) + r.correction[2]));
     rep.fixPosition = z.head<2>();
     rep.fixHeadingRad = z[2];
-    if (rep.informative) rep.update = drkf_->updateRadarFix(t, z, r.covariance);
+    // The fix moves with the velocity and turn rate the picture was placed with (drkf_radar_fix.h).
+    rep.assumedMotion = est::Vec<3>(estPose.velocity[0], estPose.velocity[1], estPose.turnRateRadPerS);
+    rep.motionSensitivity = r.motionSensitivity;
+    if (rep.informative)
+      rep.update = drkf_->updateRadarFix(t, z, r.covariance, r.motionSensitivity, rep.assumedMotion);
     rep.echoPoints = r.echoPoints;
     rep.chartPoints = r.chartPoints;
   }

@@ -48,8 +48,12 @@ struct RadarFixReport {
   bool informative = false;                      ///< good enough to apply (RadarMatchingSpec limits)
   est::Vec<3> correction = est::Vec<3>::Zero();  ///< to the estimated position (grid m) and heading (rad)
   est::Mat<3> covariance = est::Mat<3>::Zero();
-  est::Vec<2> fixPosition = est::Vec<2>::Zero();     ///< the fix given to the DRKF: position (grid m) ...
-  double fixHeadingRad = 0.0;                        ///< ... and heading (grid)
+  est::Vec<2> fixPosition = est::Vec<2>::Zero();  ///< the fix given to the DRKF: position (grid m) ...
+  double fixHeadingRad = 0.0;                     ///< ... and heading (grid)
+  /// The velocity over ground and turn rate the picture was placed with, and how the fix moves with
+  /// an error in them (radar::MatchResult::motionSensitivity): fix = truth + S (true - assumed) + noise.
+  est::Vec<3> assumedMotion = est::Vec<3>::Zero();
+  est::Mat<3> motionSensitivity = est::Mat<3>::Zero();
   est::UpdateReport<3> update;                       ///< the DRKF's update with it
   std::vector<est::Vec<2>> echoPoints, chartPoints;  ///< matched echoes (corrected) and their chart points
 };

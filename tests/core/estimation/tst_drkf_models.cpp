@@ -5,6 +5,7 @@
 #include "estimation/models/drkf_gyro.h"
 #include "estimation/models/drkf_position_fix.h"
 #include "estimation/models/drkf_process.h"
+#include "estimation/models/drkf_radar_fix.h"
 #include "estimation/models/drkf_speedlog.h"
 #include "estimation/numeric_jacobian.h"
 
@@ -56,6 +57,27 @@ class TestDrkfModels : public QObject {
     checkJacobian(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0.0), x);
     checkJacobian(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0.0), x);
     checkJacobian(GyroHeadingModel(0.0), x);
+    // The radar fix, plain and with a sensitivity to the velocity and turn rate it was taken with.
+    checkJacobian(RadarFixModel(), x);
+    Mat<3> S;
+    S << -0.4, 0.1, -150.0, 0.2, -0.7, 320.0, 0.01, -0.02, -1.1;
+    checkJacobian(RadarFixModel(S, sweepMotionOf(x) + Vec<3>(0.1, -0.05, 0.002)), x);
+    checkJacobian(RadarPositionModel(Mat<2>(S.topLeftCorner<2, 2>()), Vec<2>(0.3, 0.1)), x);
+  }
+  void radarFixMovesWithTheAssumedMotion() {
+    // GIVEN a fix taken with the filter's own motion, WHEN the state's turn rate differs from the one the
+    // picture was placed with, THEN the predicted fix moves by S times the difference.
+    const State x = makeState(3.0, 4.0);
+    Mat<3> S = Mat<3>::Zero();
+    S(2, 2) = -1.0;  // heading at mid-sweep of a 2 s sweep
+    S(1, 2) = 500.0;
+    const Vec<3> r = sweepMotionOf(x);
+    QVERIFY(std::abs(r[2] - (4.0 * 0.1 - 3.0 * -0.05) / 25.0) < 1e-15);
+    const Vec<3> same = RadarFixModel(S, r).h(x);
+    QVERIFY((same - RadarFixModel().h(x)).norm() < 1e-12);
+    const Vec<3> turned = RadarFixModel(S, r - Vec<3>(0.0, 0.0, 0.01)).h(x);
+    QVERIFY(std::abs(turned[1] - same[1] - 5.0) < 1e-9);
+    QVERIFY(std::abs(angleDiff(turned[2], same[2]) + 0.01) < 1e-12);
   }
   void measurementFunctions() {
     const State x = makeState(3.0, 4.0, 0.0, 1.0);

@@ -160,6 +160,53 @@ class TestRadarMatching : public QObject {
     QVERIFY(nees / runs < band.upper && nees / runs > 1.0);
   }
 
+  void motionSensitivityExplainsAWrongTurnRate() {
+    // GIVEN a noise-free picture taken while turning at 1.3 deg/s, WHEN it is matched from a pose that is
+    // right at the sweep's end but placed the echoes with no turn and a velocity 0.6 m/s off, THEN the
+    // end-of-sweep correction is off by what the matcher's motion sensitivity S predicts for that motion
+    // error (to a tenth of it), which is what the DRKF's fix model relies on.
+    const radar::Coastline c = harbour();
+    radar::RadarImageParams p;
+    p.rangeSdM = 0.0;
+    p.bearingSdRad = 0.0;
+    p.noiseProbability = 0.0;
+    p.clutterProbability = 0.0;
+    radar::SweepPose truth = truePose();
+    truth.turnRateRadPerS = degToRad(1.3);
+    const double T = truth.periodS;
+    Rng rng(5, 0);
+    const auto img = radar::simulateRadarImage(c, {}, truth, p, rng);
+    const auto echoes = radar::extractEchoes(img, p.azStepRad(), {});
+    bool allValid = true;
+    const auto match = [&](const radar::SweepPose& guess) -> est::Vec<3> {
+      const auto m = radar::matchEchoes(echoes, guess, c, {});
+      allValid = allValid && m.valid;
+      // Error of the corrected pose at the sweep's end.
+      return est::Vec<3>(guess.positionAt(T)[0] + m.correction[0] - truth.positionAt(T)[0],
+                         guess.positionAt(T)[1] + m.correction[1] - truth.positionAt(T)[1],
+                         angleDiff(guess.headingAt(T) + m.correction[2], truth.headingAt(T)));
+    };
+    const est::Vec<3> base = match(truth);
+    radar::SweepPose guess = truth;
+    guess.velocity += est::Vec<2>(0.5, -0.3);
+    guess.turnRateRadPerS = 0.0;
+    guess.position = truth.positionAt(T) - guess.velocity * T;
+    guess.headingRad = truth.headingAt(T);
+    const auto m = radar::matchEchoes(echoes, guess, c, {});
+    const est::Vec<3> err = match(guess);
+    QVERIFY(allValid);
+    const est::Vec<3> delta(truth.velocity[0] - guess.velocity[0], truth.velocity[1] - guess.velocity[1],
+                            truth.turnRateRadPerS - guess.turnRateRadPerS);
+    const est::Vec<3> predicted = m.motionSensitivity * delta;
+    qInfo("end-of-sweep error %.2f m %.2f m %.4f deg; predicted by S %.2f m %.2f m %.4f deg",
+          err[0] - base[0], err[1] - base[1], radToDeg(err[2] - base[2]), predicted[0], predicted[1],
+          radToDeg(predicted[2]));
+    QVERIFY(std::abs(radToDeg(predicted[2])) > 1.0);  // the effect is large: about T/2 times 1.3 deg/s
+    const est::Vec<3> miss = err - base - predicted;
+    QVERIFY(miss.head<2>().norm() < 0.1 * predicted.head<2>().norm() + 0.5);
+    QVERIFY(std::abs(miss[2]) < 0.1 * std::abs(predicted[2]));
+  }
+
   void shipsAndClutterAreRejected() {
     // GIVEN 20 vessels within 150 m of the shore (and 10 in open water) WHEN the image is matched
     // THEN at least 95% of the echo points from vessels are rejected as not the chart's, and the pose

@@ -1,0 +1,113 @@
+#include "sim/radar_fix_study.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "common/angles.h"
+#include "estimation/chi_square.h"
+#include "estimation/models/drkf_radar_fix.h"
+#include "sim/scenario_run.h"
+#include "sim/simulation_engine.h"
+
+namespace reckoner::sim {
+
+namespace {
+struct RunOut {
+  std::vector<double> posErr, hdgErr, fixPosErr, fixHdgErr;
+  double nees = 0.0, fixNees = 0.0, fixPosNees = 0.0, fixHdgNees = 0.0;
+  long pictures = 0, applied = 0, echoes = 0, used = 0, fixes = 0;
+};
+
+double p95(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(0.95 * static_cast<double>(v.size() - 1))];
+}
+
+void scoreFix(const RadarFixReport& r, const SimFrame& f, RunOut& o) {
+  const est::Vec<3> motionErr = est::drkf::sweepMotionOf(f.trueState) - r.assumedMotion;
+  est::Vec<3> err(r.fixPosition[0] - f.truth.position.xM, r.fixPosition[1] - f.truth.position.yM,
+                  angleDiff(r.fixHeadingRad, f.truth.headingRad));
+  err -= r.motionSensitivity * motionErr;
+  o.fixPosErr.push_back(err.head<2>().norm());
+  o.fixHdgErr.push_back(std::abs(err[2]));
+  o.fixNees += est::nees<3>(err, r.covariance);
+  o.fixPosNees += est::nees<2>(est::Vec<2>(err.head<2>()), est::Mat<2>(r.covariance.topLeftCorner<2, 2>()));
+  o.fixHdgNees += err[2] * err[2] / r.covariance(2, 2);
+  ++o.fixes;
+}
+}  // namespace
+
+RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const radar::Coastline> coast,
+                               std::shared_ptr<const radar::LandMask> land, bool matching, int runs,
+                               int threads, std::uint64_t seed) {
+  Scenario sc = scenario;
+  sc.radarMatching.enabled = matching;
+  std::vector<RunOut> outs(static_cast<std::size_t>(std::max(0, runs)));
+  parallelRuns(runs, threads, [&](int i) {
+    SimulationEngine e(sc, seed + static_cast<std::uint64_t>(i));
+    e.setCoastline(coast);
+    e.setLandMask(land);
+    RunOut& o = outs[static_cast<std::size_t>(i)];
+    while (!e.finished()) {
+      const SimFrame f = e.step();
+      for (const auto& r : f.radarFixes) {
+        ++o.pictures;
+        o.applied += r.update.applied() ? 1 : 0;
+        o.echoes += r.echoes;
+        o.used += r.used;
+        // Fixes are taken at sweep starts; the frame's truth is at its end, so only fixes at it.
+        if (r.informative && r.timeUs == f.timeUs) scoreFix(r, f, o);
+      }
+      if (f.sensors.isOn(sensors::SensorId::Gps) || f.timeUs < fromSeconds(60.0)) continue;
+      const auto& x = f.estimate.x;
+      o.posErr.push_back(
+          std::hypot(x[est::drkf::kPosX] - f.truth.position.xM, x[est::drkf::kPosY] - f.truth.position.yM));
+      o.hdgErr.push_back(
+          std::abs(angleDiff(bearingOf(x[est::drkf::kVelX], x[est::drkf::kVelY]), f.truth.headingRad)));
+      o.nees += est::nees<est::drkf::kStateDim>(f.trueState - f.estimate.x, f.estimate.P);
+    }
+  });
+  RadarFixStudy s;
+  s.runs = runs;
+  RunOut all;
+  for (const auto& o : outs) {
+    all.posErr.insert(all.posErr.end(), o.posErr.begin(), o.posErr.end());
+    all.hdgErr.insert(all.hdgErr.end(), o.hdgErr.begin(), o.hdgErr.end());
+    all.fixPosErr.insert(all.fixPosErr.end(), o.fixPosErr.begin(), o.fixPosErr.end());
+    all.fixHdgErr.insert(all.fixHdgErr.end(), o.fixHdgErr.begin(), o.fixHdgErr.end());
+    all.nees += o.nees;
+    all.fixNees += o.fixNees;
+    all.fixPosNees += o.fixPosNees;
+    all.fixHdgNees += o.fixHdgNees;
+    all.pictures += o.pictures;
+    all.applied += o.applied;
+    all.echoes += o.echoes;
+    all.used += o.used;
+    all.fixes += o.fixes;
+  }
+  s.rows = static_cast<long>(all.posErr.size());
+  const double rows = static_cast<double>(std::max(1L, s.rows));
+  double sq = 0.0;
+  for (const double e : all.posErr) sq += e * e;
+  s.positionP95M = p95(all.posErr);
+  s.positionRmsM = std::sqrt(sq / rows);
+  s.headingP95Deg = radToDeg(p95(all.hdgErr));
+  s.meanNees = all.nees / rows;
+  s.pictures = all.pictures;
+  s.applied = all.applied;
+  const double pictures = static_cast<double>(std::max(1L, all.pictures));
+  s.echoesPerPicture = static_cast<double>(all.echoes) / pictures;
+  s.matchedPerPicture = static_cast<double>(all.used) / pictures;
+  s.fixes = all.fixes;
+  const double fixes = static_cast<double>(std::max(1L, all.fixes));
+  s.fixPositionP95M = p95(all.fixPosErr);
+  s.fixHeadingP95Deg = radToDeg(p95(all.fixHdgErr));
+  s.fixNees = all.fixNees / fixes;
+  s.fixPositionNees = all.fixPosNees / fixes;
+  s.fixHeadingNees = all.fixHdgNees / fixes;
+  return s;
+}
+
+}  // namespace reckoner::sim

@@ -291,11 +291,14 @@ int cmdRadarFix(int argc, char** argv) {
         r.headingP95Deg, r.meanNees);
     if (!matching) return;
     std::printf(
-        "    %ld pictures, %ld fixes applied, %.0f echoes per picture, %.0f matched\n"
+        "    %ld pictures, %ld fixes applied, %.0f echoes per picture, %.0f matched; echoes from vessels "
+        "%ld, "
+        "from clutter and noise %ld: %.1f%% of them rejected\n"
         "    the fixes (less the DRKF's motion error they carry): position p95 %.1f m, heading p95 %.3f deg, "
         "mean NEES %.2f (3 dof; position %.2f of 2, heading %.2f of 1)\n",
-        r.pictures, r.applied, r.echoesPerPicture, r.matchedPerPicture, r.fixPositionP95M, r.fixHeadingP95Deg,
-        r.fixNees, r.fixPositionNees, r.fixHeadingNees);
+        r.pictures, r.applied, r.echoesPerPicture, r.matchedPerPicture, r.vesselEchoes, r.clutterEchoes,
+        100.0 * r.spuriousRejectedFraction(), r.fixPositionP95M, r.fixHeadingP95Deg, r.fixNees,
+        r.fixPositionNees, r.fixHeadingNees);
   };
   study(false);
   study(true);

@@ -1,6 +1,7 @@
 #include "radar/radar_image.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -53,12 +54,15 @@ PolarImage simulateRadarImage(const Coastline& coast, const std::vector<RadarTar
   // from a - w to a + w, its range blurred by the pulse and jittered by the sensor's errors.
   const int halfBeam = std::max(0, static_cast<int>(std::lround(0.5 * p.beamWidthRad / step)));
   const int pulseBins = std::max(1, static_cast<int>(std::lround(p.pulseLengthM / img.binM)));
-  const auto light = [&](int az, double fromM, double toM) {
+  // Land marks only unlit bins; a target's echo is drawn over the land's (a ship alongside a quay).
+  const auto light = [&](int az, double fromM, double toM, BinSource src) {
     const int a = ((az % p.azimuths) + p.azimuths) % p.azimuths;
     const int r0 = std::max(0, static_cast<int>(std::floor(fromM / img.binM)));
     const int r1 = std::min(p.rangeBins - 1, static_cast<int>(std::floor(toM / img.binM)) + pulseBins - 1);
     auto* row = &img.bins[static_cast<std::size_t>(a) * static_cast<std::size_t>(p.rangeBins)];
-    for (int r = r0; r <= r1; ++r) row[r] = 1;
+    const auto v = static_cast<std::uint8_t>(src);
+    for (int r = r0; r <= r1; ++r)
+      if (src == BinSource::Target || !row[r]) row[r] = v;
   };
   // Each beam returns its echoes with the sensor's errors: range noise, and a bearing error that shifts
   // where the beam's return is drawn.
@@ -92,7 +96,7 @@ PolarImage simulateRadarImage(const Coastline& coast, const std::vector<RadarTar
       std::nth_element(window.begin(), window.begin() + static_cast<std::ptrdiff_t>(window.size() / 2),
                        window.end());
       const double r = window[window.size() / 2];
-      light(a, r, r + p.landDepthM);
+      light(a, r, r + p.landDepthM, BinSource::Echo);
     }
     // Targets: the same half-power rule on each disc.
     for (int k = -halfBeam; k <= halfBeam; ++k) {
@@ -104,7 +108,7 @@ PolarImage simulateRadarImage(const Coastline& coast, const std::vector<RadarTar
           const Beam& ob = beams[static_cast<std::size_t>(((a + j) % p.azimuths + p.azimuths) % p.azimuths)];
           for (const auto& sp : ob.spans) seen += std::abs(sp.first - from) < 60.0 ? 1 : 0;
         }
-        if (2 * seen >= 2 * halfBeam + 1) light(a, from, to);
+        if (2 * seen >= 2 * halfBeam + 1) light(a, from, to, BinSource::Target);
       }
     }
   }
@@ -114,7 +118,8 @@ PolarImage simulateRadarImage(const Coastline& coast, const std::vector<RadarTar
     for (int r = 0; r < p.rangeBins; ++r) {
       const double range = (r + 0.5) * img.binM;
       const double pc = p.clutterProbability * std::exp(-range / p.clutterScaleM);
-      if (rng.uniform() < p.noiseProbability + pc) row[r] = 1;
+      if (rng.uniform() < p.noiseProbability + pc && !row[r])
+        row[r] = static_cast<std::uint8_t>(BinSource::Noise);
     }
   }
   return img;
@@ -174,6 +179,7 @@ std::vector<EchoPoint> extractEchoes(const PolarImage& image, double azStepRad,
   struct Front {
     std::uint32_t root;
     int az, r;
+    std::uint8_t src;
   };
   std::vector<Front> front;
   for (int a = 0; a < A; ++a) {
@@ -185,7 +191,10 @@ std::vector<EchoPoint> extractEchoes(const PolarImage& image, double azStepRad,
       bool seen = false;  // an earlier run of the same object on this beam (around a gap)
       for (std::size_t k = rowStart[static_cast<std::size_t>(a)]; k < i && !seen; ++k)
         seen = find(static_cast<std::uint32_t>(k)) == root;
-      if (!seen) front.push_back({root, a, runs[i].r0});
+      if (!seen)
+        front.push_back({root, a, runs[i].r0,
+                         image.bins[static_cast<std::size_t>(a) * static_cast<std::size_t>(R) +
+                                    static_cast<std::size_t>(runs[i].r0)]});
       last = root;
     }
   }
@@ -203,8 +212,10 @@ std::vector<EchoPoint> extractEchoes(const PolarImage& image, double azStepRad,
   while (i < front.size()) {
     std::size_t j = i;
     double sumR = 0.0, sumS = 0.0, sumC = 0.0;
+    std::array<int, 4> bySource{};
     while (j < front.size() && j - i < k && front[j].root == front[i].root &&
            (j == i || front[j].az - front[j - 1].az <= 2)) {
+      ++bySource[std::min<std::size_t>(front[j].src, 3)];
       sumR += (front[j].r + 0.5) * image.binM;
       sumS += std::sin(front[j].az * azStepRad);
       sumC += std::cos(front[j].az * azStepRad);
@@ -214,7 +225,9 @@ std::vector<EchoPoint> extractEchoes(const PolarImage& image, double azStepRad,
     const auto it = std::find(roots.begin(), roots.end(), front[i].root);
     const int obj = static_cast<int>(it - roots.begin());
     if (it == roots.end()) roots.push_back(front[i].root);
-    out.push_back({sumR / n, wrapTwoPi(std::atan2(sumS, sumC)), obj, area[front[i].root]});
+    const auto src =
+        static_cast<BinSource>(std::max_element(bySource.begin() + 1, bySource.end()) - bySource.begin());
+    out.push_back({sumR / n, wrapTwoPi(std::atan2(sumS, sumC)), obj, area[front[i].root], src});
     i = j;
   }
   return out;

@@ -49,10 +49,15 @@ struct RadarImageParams {
   [[nodiscard]] double azStepRad() const;
 };
 
+/// What lit a bin. A radar's own picture has only None and Echo; the simulator also says which bins
+/// its targets and its noise and clutter lit, for scoring the matching (never given to it).
+enum class BinSource : std::uint8_t { None = 0, Echo = 1, Target = 2, Noise = 3 };
+
 struct PolarImage {
   int azimuths = 0, rangeBins = 0;
   double binM = 0.0;
-  std::vector<std::uint8_t> bins;  ///< azimuth-major: bins[az * rangeBins + r], 1 = echo
+  /// azimuth-major: bins[az * rangeBins + r], a BinSource (non-zero: an echo)
+  std::vector<std::uint8_t> bins;
   [[nodiscard]] bool at(int az, int r) const {
     return bins[static_cast<std::size_t>(az) * static_cast<std::size_t>(rangeBins) +
                 static_cast<std::size_t>(r)] != 0;
@@ -69,9 +74,10 @@ PolarImage simulateRadarImage(const Coastline& coast, const std::vector<RadarTar
 
 struct EchoPoint {
   double rangeM = 0.0;
-  double azimuthRad = 0.0;  ///< relative to the heading, [0, 2 pi)
-  int object = 0;           ///< index of its radar object
-  int area = 0;             ///< the object's area in bins
+  double azimuthRad = 0.0;             ///< relative to the heading, [0, 2 pi)
+  int object = 0;                      ///< index of its radar object
+  int area = 0;                        ///< the object's area in bins
+  BinSource source = BinSource::Echo;  ///< what lit most of its contour's bins (simulated pictures)
 };
 
 struct EchoExtractionParams {

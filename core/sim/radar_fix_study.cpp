@@ -17,6 +17,7 @@ struct RunOut {
   std::vector<double> posErr, hdgErr, fixPosErr, fixHdgErr;
   double nees = 0.0, fixNees = 0.0, fixPosNees = 0.0, fixHdgNees = 0.0;
   long pictures = 0, applied = 0, echoes = 0, used = 0, fixes = 0;
+  long vessel = 0, clutter = 0, spuriousUsed = 0;
 };
 
 double p95(std::vector<double> v) {
@@ -57,6 +58,9 @@ RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const r
         o.applied += r.update.applied() ? 1 : 0;
         o.echoes += r.echoes;
         o.used += r.used;
+        o.vessel += r.vesselEchoes;
+        o.clutter += r.clutterEchoes;
+        o.spuriousUsed += r.spuriousUsed;
         // Fixes are taken at sweep starts; the frame's truth is at its end, so only fixes at it.
         if (r.informative && r.timeUs == f.timeUs) scoreFix(r, f, o);
       }
@@ -86,6 +90,9 @@ RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const r
     all.echoes += o.echoes;
     all.used += o.used;
     all.fixes += o.fixes;
+    all.vessel += o.vessel;
+    all.clutter += o.clutter;
+    all.spuriousUsed += o.spuriousUsed;
   }
   s.rows = static_cast<long>(all.posErr.size());
   const double rows = static_cast<double>(std::max(1L, s.rows));
@@ -101,6 +108,9 @@ RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const r
   s.echoesPerPicture = static_cast<double>(all.echoes) / pictures;
   s.matchedPerPicture = static_cast<double>(all.used) / pictures;
   s.fixes = all.fixes;
+  s.vesselEchoes = all.vessel;
+  s.clutterEchoes = all.clutter;
+  s.spuriousUsed = all.spuriousUsed;
   const double fixes = static_cast<double>(std::max(1L, all.fixes));
   s.fixPositionP95M = p95(all.fixPosErr);
   s.fixHeadingP95Deg = radToDeg(p95(all.fixHdgErr));

@@ -21,6 +21,13 @@ struct RadarFixStudy {
   double meanNees = 0.0;       ///< the DRKF's, 11 dof
   long pictures = 0, applied = 0;
   double echoesPerPicture = 0.0, matchedPerPicture = 0.0;
+  /// Echo points from vessels and from clutter or noise (scored from the truth), and how many of them
+  /// the matching used.
+  long vesselEchoes = 0, clutterEchoes = 0, spuriousUsed = 0;
+  [[nodiscard]] double spuriousRejectedFraction() const {
+    const long n = vesselEchoes + clutterEchoes;
+    return n > 0 ? 1.0 - static_cast<double>(spuriousUsed) / static_cast<double>(n) : 1.0;
+  }
   /// The fixes the DRKF was given (informative ones), against the truth at their time.
   long fixes = 0;
   double fixPositionP95M = 0.0, fixHeadingP95Deg = 0.0;

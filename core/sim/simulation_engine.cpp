@@ -396,6 +396,14 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
   mp.bearingSdRad = std::hypot(ip.bearingSdRad, 0.5 * ip.beamWidthRad);
   const radar::MatchResult r = radar::matchEchoes(echoes, estPose, *coast_, mp);
   RadarFixReport rep;
+  // Where each echo point came from (the simulator's record of what lit its bins), for scoring.
+  for (std::size_t i = 0; i < echoes.size(); ++i) {
+    const bool vessel = echoes[i].source == radar::BinSource::Target;
+    const bool noise = echoes[i].source == radar::BinSource::Noise;
+    rep.vesselEchoes += vessel ? 1 : 0;
+    rep.clutterEchoes += noise ? 1 : 0;
+    if ((vessel || noise) && i < r.usedMask.size() && r.usedMask[i]) ++rep.spuriousUsed;
+  }
   rep.timeUs = t;
   rep.echoes = r.echoes;
   rep.used = r.used;

@@ -54,7 +54,10 @@ struct RadarFixReport {
   /// an error in them (radar::MatchResult::motionSensitivity): fix = truth + S (true - assumed) + noise.
   est::Vec<3> assumedMotion = est::Vec<3>::Zero();
   est::Mat<3> motionSensitivity = est::Mat<3>::Zero();
-  est::UpdateReport<3> update;                       ///< the DRKF's update with it
+  est::UpdateReport<3> update;  ///< the DRKF's update with it
+  /// Scoring only (the simulator's record of what lit each echo point's bins, not given to the
+  /// matching): echo points from vessels and from clutter and noise, and how many of those it used.
+  int vesselEchoes = 0, clutterEchoes = 0, spuriousUsed = 0;
   std::vector<est::Vec<2>> echoPoints, chartPoints;  ///< matched echoes (corrected) and their chart points
 };
 

@@ -57,8 +57,8 @@ Outcome matchAt(const std::vector<charts::CellPtr>& cells, double latDeg, double
 }  // namespace
 
 namespace {
-void checkOutageStudy(const sim::Scenario& base, const std::vector<charts::CellPtr>& cells,
-                      const char* name) {
+void checkOutageStudy(const sim::Scenario& base, const std::vector<charts::CellPtr>& cells, const char* name,
+                      sim::RadarFixStudy* result = nullptr) {
   const geo::LocalFrame frame(base.origin.latDeg, base.origin.lonDeg);
   const auto coast =
       std::make_shared<const radar::Coastline>(charts::radarContours(cells, frame, {0, 0}, 100000.0));
@@ -70,6 +70,7 @@ void checkOutageStudy(const sim::Scenario& base, const std::vector<charts::CellP
       "%ld fixes applied); heading p95 %.3f deg (fixes %.3f deg); NEES DRKF %.2f of 11, fixes %.2f of 3",
       name, dr.positionP95M, m.positionP95M, m.pictures, m.applied, m.headingP95Deg, m.fixHeadingP95Deg,
       m.meanNees, m.fixNees);
+  if (result) *result = m;
   QCOMPARE(dr.pictures, 0L);
   QVERIFY(m.pictures > 900);
   QVERIFY(m.applied > m.pictures / 2);
@@ -108,6 +109,22 @@ class TestRadarContours : public QObject {
     const sim::Scenario base =
         io::parseScenario(resources::findScenario("radar-fix")->text, "builtin:radar-fix");
     checkOutageStudy(base, {cell}, "RK5SOUND");
+  }
+  void vesselsAlongsideTheShoreAreRejected() {
+    // GIVEN the busy-shore scenario (20 vessels lying 60-120 m off RK5SOUND's shore near the route)
+    // WHEN 4 runs are matched THEN at least 95% of the echo points from vessels, clutter and noise are
+    // rejected, and the outage study still holds.
+    const auto cell = charts::loadCell(std::string(charts::kDefaultChartPath));
+    const sim::Scenario base = io::parseScenario(resources::findScenario("radar-fix-busy-shore")->text,
+                                                 "builtin:radar-fix-busy-shore");
+    QCOMPARE(base.targets.size(), std::size_t{23});
+    sim::RadarFixStudy m;
+    checkOutageStudy(base, {cell}, "RK5SOUND with 20 vessels alongside", &m);
+    if (QTest::currentTestFailed()) return;
+    qInfo("echo points from vessels %ld, from clutter and noise %ld; %ld used: %.1f%% rejected",
+          m.vesselEchoes, m.clutterEchoes, m.spuriousUsed, 100.0 * m.spuriousRejectedFraction());
+    QVERIFY(m.vesselEchoes > 1000);
+    QVERIFY(m.spuriousRejectedFraction() >= 0.95);
   }
   void radarFixesAlongTheTacomaShore() {
     // The same on the NOAA cell US5WA22M (when ../shared/data/enc is present): along the south-west

@@ -76,6 +76,7 @@ enum RngStream : std::uint64_t {
   kStreamRadar = 7,
   kStreamClutter = 8,        ///< radar clutter and per-sweep gyro scatter
   kStreamRadarImage = 9,     ///< the simulated radar image for chart matching (seed 004)
+  kStreamRadarDisplay = 10,  ///< radar pictures made only for display (never disturbs a run's stream)
   kStreamTargetBase = 1000,  ///< target i uses kStreamTargetBase + i
 };
 

@@ -355,8 +355,10 @@ void readRadarMatching(Fields& top, sim::Scenario& s) {
   if (!v) return;
   Fields f(top.file(), *v, "radar_matching");
   auto& m = s.radarMatching;
-  m.enabled = true;
-  if (const JsonValue* e = f.get("enabled")) m.enabled = f.boolean(*e, f.pathOf("enabled"));
+  bool enabled = true;
+  if (const JsonValue* e = f.get("enabled")) enabled = f.boolean(*e, f.pathOf("enabled"));
+  m.active = StepSchedule<bool>(enabled);
+  readPowerSchedule(f, m.active, s.durationUs);
   m.azimuths = f.integerOr("azimuths", 64, 16384, m.azimuths);
   m.rangeBins = f.integerOr("range_bins", 32, 8192, m.rangeBins);
   m.everySweeps = f.integerOr("every_sweeps", 1, 1000, m.everySweeps);
@@ -810,9 +812,11 @@ std::string writeScenario(const sim::Scenario& s) {
   w.endObject();
 
   const auto& t = s.tracker;
-  if (s.radarMatching.enabled) {
+  if (s.radarMatching.active.initial() || !s.radarMatching.active.changes().empty()) {
     const auto& m = s.radarMatching;
     w.key("radar_matching").beginObject();
+    w.key("enabled").value(m.active.initial());
+    if (!m.active.changes().empty()) writeSchedule(w, m.active, nullptr);
     w.key("azimuths").value(m.azimuths);
     w.key("range_bins").value(m.rangeBins);
     w.key("every_sweeps").value(m.everySweeps);

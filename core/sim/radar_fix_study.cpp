@@ -44,7 +44,7 @@ RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const r
                                std::shared_ptr<const radar::LandMask> land, bool matching, int runs,
                                int threads, std::uint64_t seed) {
   Scenario sc = scenario;
-  sc.radarMatching.enabled = matching;
+  sc.radarMatching.active = StepSchedule<bool>(matching);
   std::vector<RunOut> outs(static_cast<std::size_t>(std::max(0, runs)));
   parallelRuns(runs, threads, [&](int i) {
     SimulationEngine e(sc, seed + static_cast<std::uint64_t>(i));

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/step_schedule.h"
 #include "common/time.h"
 #include "estimation/gauss_markov.h"
 #include "geo/local_frame.h"
@@ -103,7 +104,9 @@ struct FilterSpec {
 /// position and heading fix (docs/radar_matching.md). The contours come from the charts loaded by
 /// the program (SimulationEngine::setCoastline); without them nothing is matched.
 struct RadarMatchingSpec {
-  bool enabled = false;
+  /// Matching on or off over the run: the block's "enabled" (true when the block is there) and its
+  /// "schedule" of {t_s, on} changes; the window's operator switch adds changes.
+  StepSchedule<bool> active{false};
   int azimuths = 1024;
   int rangeBins = 512;
   double maxRangeM = 6000.0;

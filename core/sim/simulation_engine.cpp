@@ -67,7 +67,8 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
       speedlog_(scenario.speedlog, Rng(seed, kStreamSpeedlog), 0),
       gyro_(scenario.gyro, Rng(seed, kStreamGyro)),
       radar_(scenario.radar, Rng(seed, kStreamRadar), Rng(seed, kStreamClutter)),
-      radarImageRng_(seed, kStreamRadarImage) {
+      radarImageRng_(seed, kStreamRadarImage),
+      radarDisplayRng_(seed, kStreamRadarDisplay) {
   const std::array<std::pair<bool, double>, sensors::kOwnShipSensorCount> rates{
       {{scenario.gps.fitted, scenario.gps.rateHz},
        {scenario.loran.fitted, scenario.loran.rateHz},
@@ -350,8 +351,11 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
   const VesselTruth& tr = truth_.state();
   const std::optional<double> lastHeading = lastSweepHeadingRad_;
   lastSweepHeadingRad_ = tr.headingRad;
-  if (!m.enabled || !coast_ || coast_->empty() || !scenario_.radar.power.at(t)) return;
-  if (++sweepIndex_ % m.everySweeps != 0) return;
+  if (!scenario_.radar.power.at(t)) return;
+  const bool matchNow = m.active.at(t) && coast_ && !coast_->empty() && ++sweepIndex_ % m.everySweeps == 0;
+  if (!matchNow && !picturesWanted_) return;
+  static const radar::Coastline kNoCoast{std::vector<radar::CoastSegment>{}};
+  const radar::Coastline& coast = coast_ ? *coast_ : kNoCoast;
   radar::SweepPose truePose;
   truePose.startUs = t - fromSeconds(T);
   truePose.periodS = T;
@@ -370,8 +374,8 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
   ip.rangeBins = m.rangeBins;
   ip.maxRangeM = m.maxRangeM;
   ip.beamWidthRad = degToRad(m.beamWidthDeg);
-  const radar::PolarImage image = radar::simulateRadarImage(*coast_, targets, truePose, ip, radarImageRng_);
-  const std::vector<radar::EchoPoint> echoes = radar::extractEchoes(image, ip.azStepRad(), {});
+  const auto image = std::make_shared<const radar::PolarImage>(
+      radar::simulateRadarImage(coast, targets, truePose, ip, matchNow ? radarImageRng_ : radarDisplayRng_));
   // The estimated pose over the same sweep: the DRKF's position, velocity over ground and heading
   // (the direction of the velocity through the water) at t, no turn.
   const auto& x = drkf_->belief().x;
@@ -388,6 +392,9 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
   const double vx = x[est::drkf::kVelX], vy = x[est::drkf::kVelY];
   estPose.turnRateRadPerS = std::hypot(vx, vy) > 0.5 ? motion[2] : 0.0;
   estPose.headingRad = bearingOf(vx, vy) - estPose.turnRateRadPerS * T;
+  frame.radarPicture = RadarPicture{t, image, estPose, ip.maxRangeM};
+  if (!matchNow) return;
+  const std::vector<radar::EchoPoint> echoes = radar::extractEchoes(*image, ip.azStepRad(), {});
   radar::MatchParams mp;
   mp.rejectDistanceM = m.rejectDistanceM;
   // An echo point's error: the sensor's, plus the picture's own resolution (a range bin; half the
@@ -435,6 +442,10 @@ void SimulationEngine::setTrackerKind(track::TrackerKind kind) {
   const TimeUs t = commandTimeUs();
   while (!changes.empty() && changes.back().first >= t) changes.pop_back();
   changes.emplace_back(t, kind);
+}
+
+void SimulationEngine::setRadarMatching(bool on) {
+  scenario_.radarMatching.active.overrideFrom(commandTimeUs(), on);
 }
 
 void SimulationEngine::setRadarPower(bool on) {

@@ -3,11 +3,13 @@
 // snapshot (SimFrame). Plain C++: the GUI's worker thread and the headless runs drive it the same way.
 #include <array>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "navigation/drkf.h"
 #include "radar/coastline.h"
+#include "radar/radar_image.h"
 #include "sensors/own_ship_simulators.h"
 #include "sensors/radar.h"
 #include "sim/scenario.h"
@@ -61,6 +63,14 @@ struct RadarFixReport {
   std::vector<est::Vec<2>> echoPoints, chartPoints;  ///< matched echoes (corrected) and their chart points
 };
 
+/// One sweep's simulated radar picture (seed 004) and the estimated pose the radar draws it from.
+struct RadarPicture {
+  TimeUs timeUs = 0;  ///< the sweep's end
+  std::shared_ptr<const radar::PolarImage> image;
+  radar::SweepPose estimatedPose;  ///< own ship through the sweep as the DRKF has it
+  double maxRangeM = 0.0;
+};
+
 struct SimFrame {
   TimeUs timeUs = 0;
   VesselTruth truth;
@@ -69,14 +79,15 @@ struct SimFrame {
   std::vector<sensors::OwnShipSample> measurements;  ///< taken during this cycle
   std::vector<nav::DrkfUpdateReport> updates;        ///< one per measurement epoch of this cycle
   SensorStates sensors;
-  std::optional<HelmOrder> order;           ///< own ship's helm order in force, if any
-  std::vector<VesselTruth> targets;         ///< in scenario order
-  std::vector<std::uint8_t> targetPresent;  ///< per target: 1 once it has appeared (appear_s)
-  std::vector<sensors::RadarPlot> plots;    ///< radar plots of this cycle
-  std::vector<int> plotSources;             ///< target id of each plot (-1: clutter); not given to trackers
-  std::vector<TrackSnapshot> tracks;        ///< at timeUs
-  std::vector<RadarFixReport> radarFixes;   ///< radar pictures matched to the chart this cycle
-  std::vector<SweepSnapshot> sweeps;        ///< sweeps that ended during this cycle
+  std::optional<HelmOrder> order;            ///< own ship's helm order in force, if any
+  std::vector<VesselTruth> targets;          ///< in scenario order
+  std::vector<std::uint8_t> targetPresent;   ///< per target: 1 once it has appeared (appear_s)
+  std::vector<sensors::RadarPlot> plots;     ///< radar plots of this cycle
+  std::vector<int> plotSources;              ///< target id of each plot (-1: clutter); not given to trackers
+  std::vector<TrackSnapshot> tracks;         ///< at timeUs
+  std::vector<RadarFixReport> radarFixes;    ///< radar pictures matched to the chart this cycle
+  std::optional<RadarPicture> radarPicture;  ///< the latest simulated picture of this cycle, if any
+  std::vector<SweepSnapshot> sweeps;         ///< sweeps that ended during this cycle
   std::vector<track::TrackEvent> trackEvents;
   bool capacityWarning = false;
 };
@@ -120,6 +131,11 @@ class SimulationEngine {
   void setTrackerKind(track::TrackerKind kind);
   /// The chart contours for radar matching (scenario.radarMatching); null: none.
   void setCoastline(std::shared_ptr<const radar::Coastline> coast) { coast_ = std::move(coast); }
+  /// Radar matching on or off from now (an operator change, recorded in radarMatching.active).
+  void setRadarMatching(bool on);
+  /// Simulate a radar picture at every sweep for display (SimFrame::radarPicture), besides those
+  /// matched. Display pictures draw their noise from their own stream: the run does not change.
+  void setRadarPicturesWanted(bool on) { picturesWanted_ = on; }
   /// Charted land for chart-aided acquisition (TrackManager::setLandMask); null: none.
   void setLandMask(std::shared_ptr<const radar::LandMask> land) { manager_->setLandMask(std::move(land)); }
   /// Adds a target that appears now at its spec's initial position; its id is replaced by a free one
@@ -171,7 +187,8 @@ class SimulationEngine {
   TimeUs gridTimeUs_ = -1;
   geo::GridInfo grid_;
   std::shared_ptr<const radar::Coastline> coast_;
-  Rng radarImageRng_;
+  Rng radarImageRng_, radarDisplayRng_;
+  bool picturesWanted_ = false;
   long sweepIndex_ = 0;
   std::optional<double> lastSweepHeadingRad_;
 };

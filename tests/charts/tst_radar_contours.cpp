@@ -126,6 +126,58 @@ class TestRadarContours : public QObject {
     QVERIFY(m.vesselEchoes > 1000);
     QVERIFY(m.spuriousRejectedFraction() >= 0.95);
   }
+  void displayPicturesAndTheOperatorSwitch() {
+    // GIVEN the radar-fix scenario with matching off WHEN the operator asks for display pictures and
+    // switches matching on at 400 s THEN there is a picture at every sweep, the display pictures leave
+    // the run as it was without them, fixes start at 400 s, and the saved scenario replays the switch.
+    const auto cell = charts::loadCell(std::string(charts::kDefaultChartPath));
+    sim::Scenario base = io::parseScenario(resources::findScenario("radar-fix")->text, "builtin:radar-fix");
+    base.radarMatching.active = StepSchedule<bool>(false);
+    const geo::LocalFrame frame(base.origin.latDeg, base.origin.lonDeg);
+    const auto coast =
+        std::make_shared<const radar::Coastline>(charts::radarContours({cell}, frame, {0, 0}, 100000.0));
+    const auto run = [&](const sim::Scenario& sc, bool pictures, bool operatorSwitch, int& shown, int& fixes,
+                         TimeUs& firstFix) {
+      sim::SimulationEngine e(sc, 3);
+      e.setCoastline(coast);
+      e.setRadarPicturesWanted(pictures);
+      est::drkf::State last;
+      while (!e.finished()) {
+        if (operatorSwitch && e.timeUs() == fromSeconds(400.0)) e.setRadarMatching(true);
+        const sim::SimFrame f = e.step();
+        shown += f.radarPicture ? 1 : 0;
+        for (const auto& r : f.radarFixes) {
+          if (fixes++ == 0) firstFix = r.timeUs;
+        }
+        last = f.estimate.x;
+      }
+      return std::make_pair(last, e.scenario());
+    };
+    int shownA = 0, fixesA = 0, shownB = 0, fixesB = 0, shownC = 0, fixesC = 0;
+    TimeUs firstA = 0, firstB = 0, firstC = 0;
+    const auto [plain, unusedA] = run(base, false, false, shownA, fixesA, firstA);
+    const auto [withPictures, unusedB] = run(base, true, false, shownB, fixesB, firstB);
+    QCOMPARE(shownA, 0);
+    QCOMPARE(fixesA + fixesB, 0);
+    QVERIFY(shownB >= 740);  // a sweep every 2 s
+    QVERIFY((plain - withPictures).norm() == 0.0);
+    const auto [switched, recorded] = run(base, true, true, shownC, fixesC, firstC);
+    QVERIFY(fixesC > 20);
+    QVERIFY(firstC >= fromSeconds(400.0) && firstC <= fromSeconds(408.0));
+    sim::Scenario reread;
+    try {
+      reread = io::parseScenario(io::writeScenario(recorded), "saved");
+    } catch (const std::exception& ex) {
+      QFAIL(ex.what());
+    }
+    QVERIFY(!reread.radarMatching.active.at(fromSeconds(399.0)));
+    QVERIFY(reread.radarMatching.active.at(fromSeconds(400.0) + 1));  // commands act from now + 1 us
+    int shownD = 0, fixesD = 0;
+    TimeUs firstD = 0;
+    const auto [replayed, unusedD] = run(reread, false, false, shownD, fixesD, firstD);
+    QCOMPARE(fixesD, fixesC);
+    QVERIFY((replayed - switched).norm() < 1e-6);
+  }
   void radarFixesAlongTheTacomaShore() {
     // The same on the NOAA cell US5WA22M (when ../shared/data/enc is present): along the south-west
     // shore of Commencement Bay.

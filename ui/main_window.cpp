@@ -403,6 +403,81 @@ void MainWindow::buildActions() {
   });
   viewMenu->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu->addAction(d->toggleViewAction());
+  buildRadarMenu();
+}
+
+void MainWindow::buildRadarMenu() {
+  // Seed 004: the radar picture matched to the loaded charts, and the radar overlay.
+  QMenu* radar = menuBar()->addMenu(tr("&Radar"));
+  radar->setObjectName(QStringLiteral("radarMenu"));
+  radarMatchAction_ =
+      radar->addAction(tr("Match the radar picture to the chart (position and heading fixes)"));
+  radarMatchAction_->setObjectName(QStringLiteral("radarMatching"));
+  radarMatchAction_->setCheckable(true);
+  connect(radarMatchAction_, &QAction::triggered, this,
+          [this](bool on) { controller_->setRadarMatching(on); });
+  QAction* picture = radar->addAction(tr("Show the radar picture"));
+  picture->setObjectName(QStringLiteral("radarPicture"));
+  picture->setCheckable(true);
+  picture->setChecked(view_->overlay().showRadarPicture);
+  connect(picture, &QAction::toggled, this, [this](bool on) {
+    OverlaySettings s = view_->overlay();
+    s.showRadarPicture = on;
+    view_->setOverlay(s);
+    controller_->setRadarPicturesWanted(on);
+  });
+  QAction* echoes = radar->addAction(tr("Show matched echoes and their chart points"));
+  echoes->setObjectName(QStringLiteral("radarEchoes"));
+  echoes->setCheckable(true);
+  echoes->setChecked(view_->overlay().showRadarEchoes);
+  connect(echoes, &QAction::toggled, this, [this](bool on) {
+    OverlaySettings s = view_->overlay();
+    s.showRadarEchoes = on;
+    view_->setOverlay(s);
+  });
+  radar->addSeparator();
+  auto* layer = new QActionGroup(this);
+  const std::pair<QString, bool> layers[] = {{tr("Radar over the chart"), true},
+                                             {tr("Radar under the chart's land (shown on water)"), false}};
+  for (const auto& [name, over] : layers) {
+    QAction* a = radar->addAction(name);
+    a->setObjectName(over ? QStringLiteral("radarOver") : QStringLiteral("radarUnder"));
+    a->setCheckable(true);
+    a->setChecked(view_->overlay().radarOverChart == over);
+    layer->addAction(a);
+    connect(a, &QAction::triggered, this, [this, over = over] {
+      OverlaySettings s = view_->overlay();
+      s.radarOverChart = over;
+      view_->setOverlay(s);
+    });
+  }
+  QMenu* opacity = radar->addMenu(tr("Radar opacity"));
+  auto* opacities = new QActionGroup(this);
+  for (const int pct : {25, 40, 60, 80, 100}) {
+    QAction* a = opacity->addAction(tr("%1%").arg(pct));
+    a->setObjectName(QStringLiteral("radarOpacity%1").arg(pct));
+    a->setCheckable(true);
+    a->setChecked(std::abs(view_->overlay().radarOpacity * 100.0 - pct) < 1.0);
+    opacities->addAction(a);
+    connect(a, &QAction::triggered, this, [this, pct] {
+      OverlaySettings s = view_->overlay();
+      s.radarOpacity = pct / 100.0;
+      view_->setOverlay(s);
+    });
+  }
+  QMenu* colours = radar->addMenu(tr("Radar colour"));
+  auto* colourGroup = new QActionGroup(this);
+  for (int i = 0; i < static_cast<int>(std::size(kRadarColours)); ++i) {
+    QAction* a = colours->addAction(tr(kRadarColours[i].name));
+    a->setCheckable(true);
+    a->setChecked(view_->overlay().radarColour == i);
+    colourGroup->addAction(a);
+    connect(a, &QAction::triggered, this, [this, i] {
+      OverlaySettings s = view_->overlay();
+      s.radarColour = i;
+      view_->setOverlay(s);
+    });
+  }
 }
 
 bool MainWindow::openScenario(const QString& path) {
@@ -475,6 +550,7 @@ void MainWindow::openCharts(const QString& path) {
           if (!failures.isEmpty()) reportError(failures.join(QLatin1Char('\n')));
           if (result.cells.empty()) return;
           view_->setCells(result.cells);
+          controller_->setCharts(result.cells);
           chartSource_ = path;
           if (!path.startsWith(kBuiltinPrefix)) addRecent(QStringLiteral("recent/charts"), path);
         },
@@ -574,6 +650,10 @@ void MainWindow::repaintTick() {
   sensors_->setStates(live.frame.sensors, live.radarOn);
   for (QAction* a : trackerKindActions_)
     if (a->data().toInt() == static_cast<int>(live.trackerKind) && !a->isChecked()) a->setChecked(true);
+  if (radarMatchAction_) {
+    radarMatchAction_->setChecked(live.radarMatching);
+    radarMatchAction_->setEnabled(live.chartContourSegments > 0 || live.radarMatching);
+  }
   const std::optional<int> selected = view_->selectedTrack();
   model_->setTracks(live.frame.tracks);
   if (selected) {

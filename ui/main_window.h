@@ -85,6 +85,7 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
 
  private:
+  void buildRadarMenu();
   void buildActions();
   void buildDocks();
   void onFrame(const LiveFrame& frame);
@@ -120,6 +121,7 @@ class MainWindow : public QMainWindow {
   QComboBox* rateBox_ = nullptr;
   QAction* runAction_ = nullptr;
   std::vector<QAction*> trackerKindActions_;  ///< Tracking > Filter for new tracks
+  QAction* radarMatchAction_ = nullptr;       ///< Radar > Match (follows the scenario's own switch)
   QMenu* recentMenu_ = nullptr;
   QTimer repaintTimer_;
   QTimer plotTimer_;

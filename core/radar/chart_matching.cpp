@@ -96,6 +96,7 @@ MatchResult matchEchoes(const std::vector<EchoPoint>& echoes, const SweepPose& p
     sumSq += d * d / var;
     out.echoPoints.push_back(e);
     out.chartPoints.push_back(k->point);
+    out.rawEchoPoints.push_back(s.s + s.r * est::Vec<2>(std::sin(s.theta), std::cos(s.theta)));
   }
   out.rmsNormalizedResidual =
       out.echoPoints.empty() ? 0.0 : std::sqrt(sumSq / static_cast<double>(out.echoPoints.size()));

@@ -39,7 +39,8 @@ struct MatchResult {
   std::vector<char> usedMask;                        ///< per echo: matched to the chart in the last iteration
   std::vector<est::Vec<2>> echoPoints, chartPoints;  ///< world positions of the matched echoes (after the
                                                      ///< correction) and their chart points
-  double rmsNormalizedResidual = 0.0;  ///< of the used echoes after the correction (about 1 if honest)
+  std::vector<est::Vec<2>> rawEchoPoints;  ///< the same echoes placed from the pose before the correction
+  double rmsNormalizedResidual = 0.0;      ///< of the used echoes after the correction (about 1 if honest)
   /// How the correction answers an error in the pose's motion. The echoes were placed with the pose's
   /// velocity and turn rate; if the ship's were larger by d = (dvx, dvy, domega), echo i (seen dt_i
   /// before the sweep's end) needed the correction at the end plus (-dt_i) d, and the least squares

@@ -14,6 +14,7 @@ LandMask::LandMask(const std::vector<std::vector<est::Vec<2>>>& rings, double ce
     bool finite = true;
     for (const auto& p : r) finite = finite && p.allFinite();
     if (!finite) continue;
+    rings_.push_back(r);
     for (std::size_t i = 0; i < r.size(); ++i) {
       const est::Vec<2>& a = r[i];
       const est::Vec<2>& b = r[(i + 1) % r.size()];

@@ -15,12 +15,15 @@ class LandMask {
   explicit LandMask(const std::vector<std::vector<est::Vec<2>>>& rings, double cellM = 200.0);
   [[nodiscard]] bool contains(const est::Vec<2>& p) const;
   [[nodiscard]] bool empty() const { return edges_.empty(); }
+  /// The rings kept (at least three finite points each), for drawing.
+  [[nodiscard]] const std::vector<std::vector<est::Vec<2>>>& rings() const { return rings_; }
 
  private:
   struct Edge {
     est::Vec<2> a, b;
   };
   std::vector<Edge> edges_;
+  std::vector<std::vector<est::Vec<2>>> rings_;
   double cellM_;
   std::int64_t minX_ = 0, minY_ = 0, nx_ = 0, ny_ = 0;
   std::vector<std::vector<std::uint32_t>> cells_;

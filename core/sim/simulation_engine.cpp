@@ -432,6 +432,8 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
     if (rep.informative)
       rep.update = drkf_->updateRadarFix(t, z, r.covariance, r.motionSensitivity, rep.assumedMotion);
     rep.echoPoints = r.echoPoints;
+    rep.rawEchoPoints = r.rawEchoPoints;
+    rep.rmsNormalizedResidual = r.rmsNormalizedResidual;
     rep.chartPoints = r.chartPoints;
   }
   frame.radarFixes.push_back(std::move(rep));

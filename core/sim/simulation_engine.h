@@ -61,6 +61,9 @@ struct RadarFixReport {
   /// matching): echo points from vessels and from clutter and noise, and how many of those it used.
   int vesselEchoes = 0, clutterEchoes = 0, spuriousUsed = 0;
   std::vector<est::Vec<2>> echoPoints, chartPoints;  ///< matched echoes (corrected) and their chart points
+  std::vector<est::Vec<2>>
+      rawEchoPoints;                   ///< the matched echoes as placed from the estimate (before the fix)
+  double rmsNormalizedResidual = 0.0;  ///< of the matched echoes off their contours, in their sd (about 1)
 };
 
 /// One sweep's simulated radar picture (seed 004) and the estimated pose the radar draws it from.

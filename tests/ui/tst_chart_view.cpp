@@ -10,6 +10,7 @@
 
 #include "charts/s57/s57_loader.h"
 #include "ui/map/chart_view.h"
+#include "ui/map/radar_raster.h"
 
 using namespace reckoner;
 
@@ -31,6 +32,42 @@ bool near(const charts::ScreenPoint& a, double x, double y) {
 class TestChartView : public QObject {
   Q_OBJECT
  private slots:
+  void radarPictureRasterPlacesEchoesFromThePose() {
+    // GIVEN a 360 x 100 picture (10 m bins) with one lit bin at 90.5 deg relative, 505 m WHEN it is
+    // rasterised from a pose at the origin heading north, and heading east THEN the echo lands east of
+    // own ship, and south of it, in north-up pixels; nothing is drawn where nothing was seen.
+    radar::PolarImage img;
+    img.azimuths = 360;
+    img.rangeBins = 100;
+    img.binM = 10.0;
+    img.bins.assign(360 * 100, 0);
+    img.bins[90 * 100 + 50] = 1;
+    radar::SweepPose pose;
+    pose.periodS = 2.0;
+    const ui::RadarRaster north = ui::rasteriseRadarPicture(img, pose, 2.0);
+    QCOMPARE(north.mask.width(), 208);
+    QCOMPARE(north.metresPerPixel, 10.0);
+    const auto lit = [](const ui::RadarRaster& r, double x, double y) {
+      const int half = r.mask.width() / 2;
+      const int px = half + static_cast<int>(std::floor(x / r.metresPerPixel));
+      const int py = half + static_cast<int>(std::floor(-y / r.metresPerPixel));
+      return r.mask.constScanLine(py)[px] != 0;
+    };
+    const double a = 90.5 * M_PI / 180.0;  // the bin's centre
+    QVERIFY(lit(north, 505.0 * std::sin(a), 505.0 * std::cos(a)));
+    QVERIFY(!lit(north, -505.0, 0.0));
+    QVERIFY(!lit(north, 0.0, 505.0));
+    pose.headingRad = M_PI / 2;
+    const ui::RadarRaster east = ui::rasteriseRadarPicture(img, pose, 2.0);
+    QVERIFY(lit(east, 505.0 * std::sin(a + M_PI / 2), 505.0 * std::cos(a + M_PI / 2)));
+    QVERIFY(!lit(east, 505.0, 0.0));
+    int count = 0;
+    for (int y = 0; y < east.mask.height(); ++y)
+      for (int x = 0; x < east.mask.width(); ++x) count += east.mask.constScanLine(y)[x] ? 1 : 0;
+    QVERIFY(count >= 1 && count <= 12);  // one bin: about its arc (8.8 m) by its depth (10 m)
+    img.bins.resize(10);                 // inconsistent: a null raster, no crash
+    QVERIFY(ui::rasteriseRadarPicture(img, pose, 2.0).isNull());
+  }
   void rendersPansZoomsAndPicks() {
     ui::ChartView view;
     view.resize(800, 600);

@@ -203,6 +203,89 @@ class TestMainWindow : public QObject {
     saveWindowShot(w, QStringLiteral("seed002-geodetic"));
   }
 
+  void radarPictureMatchingAndOverlay() {
+    // GIVEN the busy-shore radar-fix scenario (20 vessels alongside) on the embedded chart, with matching
+    // switched off in it WHEN the operator switches Radar > Match on at 100 s, shows the picture, its
+    // matched echoes and the chart points THEN fixes arrive and are applied, the picture is drawn
+    // (over the chart and under its land), a vessel lying on charted land is not acquired, and the
+    // plots offer the fixes against the truth with their NEES.
+    MainWindowOptions o = freshOptions();
+    o.scenarioPath = "builtin:radar-fix-busy-shore";
+    MainWindow w(o);
+    showAndWait(w);
+    QAction* match = w.findChild<QAction*>(QStringLiteral("radarMatching"));
+    QAction* picture = w.findChild<QAction*>(QStringLiteral("radarPicture"));
+    QAction* echoes = w.findChild<QAction*>(QStringLiteral("radarEchoes"));
+    QVERIFY(match && picture && echoes);
+    QTRY_VERIFY_WITH_TIMEOUT(w.history().latest().chartContourSegments > 100, kTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(match->isChecked(), kTimeoutMs);  // the scenario's own setting
+    match->trigger();                                          // off
+    QTRY_VERIFY_WITH_TIMEOUT(!w.history().latest().radarMatching, kTimeoutMs);
+    runUntil(w, 100.0);
+    QVERIFY(w.history().radarFixes().empty());
+    match->trigger();  // on again, from 100 s
+    picture->trigger();
+    echoes->trigger();
+    runUntil(w, 400.0);
+    const auto& fixes = w.history().radarFixes();
+    QVERIFY(!fixes.empty());
+    QVERIFY(fixes.front().tS >= 100.0);
+    int applied = 0;
+    double nees = 0.0;
+    for (const auto& f : fixes) {
+      applied += f.applied ? 1 : 0;
+      nees += f.nees;
+    }
+    qInfo("%zu fixes from 100 to 400 s, %d applied, mean NEES %.2f (3 dof)", fixes.size(), applied,
+          nees / static_cast<double>(fixes.size()));
+    QVERIFY(fixes.size() >= 45);  // every third 2 s sweep
+    QVERIFY(applied >= static_cast<int>(fixes.size()) / 2);
+    QVERIFY(nees / static_cast<double>(fixes.size()) < 6.0);
+    const LiveFrame& live = w.history().latest();
+    QVERIFY(live.radarRaster && !live.radarRaster->isNull());
+    QVERIFY(live.radarMatch && live.radarMatch->raw.size() >= 50);
+    QVERIFY(live.land && !live.land->empty());
+    w.chart()->setView(w.chart()->viewport().centre(), 40000.0, 0.0);
+    saveWindowShot(w, QStringLiteral("radar-over-chart"));
+    QAction* under = w.findChild<QAction*>(QStringLiteral("radarUnder"));
+    QVERIFY(under);
+    under->trigger();
+    QVERIFY(!w.chart()->overlay().radarOverChart);
+    saveWindowShot(w, QStringLiteral("radar-under-land"));
+    // The plots: Radar fix x against the truth.
+    QComboBox* quantity = w.ownPlots()->quantityBox();
+    const int idx = quantity->findText(QStringLiteral("Radar fix x (east)"));
+    QVERIFY(idx >= 0);
+    quantity->setCurrentIndex(idx);
+    w.ownPlots()->refresh();
+    QVERIFY(w.ownPlots()->pointCount() >= 90);
+    saveShot(*w.ownPlots(), QStringLiteral("radar-fix-plots"));
+    // Close up on the nearest island, under and over.
+    {
+      OverlaySettings s = w.chart()->overlay();
+      s.followOwnShip = false;
+      w.chart()->setOverlay(s);
+    }
+    const auto& x = live.frame.estimate.x;
+    est::Vec<2> nearest(0, 0);
+    double best = 1e300;
+    for (const auto& ring : *live.land) {
+      est::Vec<2> c(0, 0);
+      for (const auto& q : ring) c += q;
+      c /= static_cast<double>(ring.size());
+      const double d = std::hypot(c[0] - x[0], c[1] - x[4]);
+      if (d < best) {
+        best = d;
+        nearest = c;
+      }
+    }
+    const QPointF at = w.chart()->gridToWidget(nearest[0], nearest[1]);
+    w.chart()->setView(w.chart()->viewport().toLatLon({at.x(), at.y()}), 12000.0, 0.0);
+    saveWindowShot(w, QStringLiteral("radar-under-land-close"));
+    w.findChild<QAction*>(QStringLiteral("radarOver"))->trigger();
+    saveWindowShot(w, QStringLiteral("radar-over-chart-close"));
+  }
+
   void contextMenuAddsATargetThatIsTrackedWithinThreeSweeps() {
     MainWindow w(freshOptions());
     showAndWait(w);

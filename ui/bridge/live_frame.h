@@ -5,12 +5,14 @@
 // nothing. Plain values only: no pointers into the worker's state.
 #include <QMetaType>
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "sim/own_ship_filters.h"
 #include "sim/scenario.h"
 #include "sim/simulation_engine.h"
+#include "ui/map/radar_raster.h"
 
 namespace reckoner::ui {
 
@@ -55,6 +57,29 @@ struct LastFix {
   bool accepted = false;
 };
 
+/// A radar picture matched to the chart (seed 004): the fix it gave against the truth at its time.
+struct RadarFixSample {
+  double tS = 0.0;
+  bool informative = false, applied = false;
+  int echoes = 0, used = 0;
+  double x = 0.0, y = 0.0, headingDeg = 0.0;  ///< the fix: grid m and grid heading
+  double sdX = 0.0, sdY = 0.0, sdHeadingDeg = 0.0;
+  double trueX = 0.0, trueY = 0.0, trueHeadingDeg = 0.0;
+  /// NEES (3 dof) of the fix less the part of its error the DRKF's motion error explains
+  /// (RadarFixReport::motionSensitivity), i.e. of what its covariance claims.
+  double nees = 0.0;
+  double rmsResidual = 0.0;  ///< matched echoes off their contours, in their sd
+  double nis = 0.0;          ///< the DRKF's update with it
+  int dim = 0;
+};
+
+/// The echoes of the latest matched picture: as placed from the estimate, after the fix, and the chart
+/// contour points they were matched to (grid m).
+struct RadarMatchShown {
+  double tS = 0.0;
+  std::vector<est::Vec<2>> raw, corrected, chart;
+};
+
 /// The last update of one DRKF measurement block.
 struct BlockStatus {
   bool seen = false;
@@ -81,6 +106,16 @@ struct LiveFrame {
   /// Seed 002's own-ship filters beside the DRKF (geodetic KF, least squares): [x, y, vx, vy] over
   /// ground, grid frame, with covariance; empty before the first step.
   std::optional<std::array<est::Gaussian<4>, 2>> seed002;
+  /// Radar overlay (seed 004): the latest picture as a raster (when pictures are wanted), the echoes
+  /// of the latest match, every fix since the previous frame, the charted land (grid rings), and
+  /// whether matching is on and the loaded charts give contours to match.
+  std::shared_ptr<const RadarRaster> radarRaster;
+  std::shared_ptr<const RadarMatchShown> radarMatch;
+  std::vector<RadarFixSample> radarFixes;
+  std::optional<RadarFixSample> lastRadarFix;  ///< the latest, kept across frames
+  std::shared_ptr<const std::vector<std::vector<est::Vec<2>>>> land;
+  bool radarMatching = false;
+  int chartContourSegments = 0;
   double rate = 0.0;          ///< requested rate (0: paused, < 0: as fast as possible)
   double achievedRate = 0.0;  ///< simulated seconds per wall second, measured
   bool radarOn = false;

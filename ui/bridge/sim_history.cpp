@@ -14,6 +14,7 @@ void SimHistory::clear() {
   latest_ = LiveFrame{};
   own_.clear();
   tracks_.clear();
+  radarFixes_.clear();
   alarms_.clear();
 }
 
@@ -21,6 +22,7 @@ void SimHistory::append(const LiveFrame& frame) {
   latest_ = frame;
   own_.insert(own_.end(), frame.ownHistory.begin(), frame.ownHistory.end());
   for (const TrackSample& s : frame.trackHistory) tracks_[s.trackId].push_back(s);
+  radarFixes_.insert(radarFixes_.end(), frame.radarFixes.begin(), frame.radarFixes.end());
   for (const auto& e : frame.events) {
     using K = track::TrackEvent::Kind;
     const double t = toSeconds(e.timeUs);

@@ -34,6 +34,8 @@ class SimHistory {
   /// Sweep-end samples of one track, oldest first (empty if unknown).
   [[nodiscard]] const std::vector<TrackSample>& track(int trackId) const;
   [[nodiscard]] const std::map<int, std::vector<TrackSample>>& tracks() const { return tracks_; }
+  /// Every radar fix (matched picture) of the run, oldest first.
+  [[nodiscard]] const std::vector<RadarFixSample>& radarFixes() const { return radarFixes_; }
 
   [[nodiscard]] const std::set<Alarm>& alarms() const { return alarms_; }
   [[nodiscard]] bool unacknowledged(Alarm::Kind kind, int trackId) const;
@@ -43,6 +45,7 @@ class SimHistory {
   LiveFrame latest_;
   std::vector<OwnSample> own_;
   std::map<int, std::vector<TrackSample>> tracks_;
+  std::vector<RadarFixSample> radarFixes_;
   std::set<Alarm> alarms_;
 };
 

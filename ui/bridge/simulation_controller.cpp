@@ -76,6 +76,15 @@ void SimulationController::setSpeedlogMode(sensors::SpeedlogMode mode) {
 void SimulationController::setRadarPower(bool on) {
   post([w = worker_, on] { w->setRadarPower(on); });
 }
+void SimulationController::setCharts(const std::vector<charts::CellPtr>& cells) {
+  post([w = worker_, cells] { w->setCharts(cells); });
+}
+void SimulationController::setRadarMatching(bool on) {
+  post([w = worker_, on] { w->setRadarMatching(on); });
+}
+void SimulationController::setRadarPicturesWanted(bool on) {
+  post([w = worker_, on] { w->setRadarPicturesWanted(on); });
+}
 void SimulationController::setTrackerKind(track::TrackerKind kind) {
   post([w = worker_, kind] { w->setTrackerKind(kind); });
 }

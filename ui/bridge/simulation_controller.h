@@ -27,6 +27,10 @@ class SimulationController : public QObject {
   void setSpeedlogMode(sensors::SpeedlogMode mode);
   void setRadarPower(bool on);
   void setTrackerKind(track::TrackerKind kind);
+  /// The charts the window shows, for radar matching and chart-aided acquisition (SimulationWorker).
+  void setCharts(const std::vector<charts::CellPtr>& cells);
+  void setRadarMatching(bool on);
+  void setRadarPicturesWanted(bool on);
   void addTarget(double xM, double yM, double vxMps, double vyMps);
   void acquireAt(double xM, double yM);
   void cancelTrack(int trackId);

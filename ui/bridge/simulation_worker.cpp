@@ -5,7 +5,9 @@
 #include <cmath>
 #include <exception>
 
+#include "charts/radar/radar_contours.h"
 #include "common/angles.h"
+#include "estimation/models/drkf_radar_fix.h"
 #include "navigation/dr_horizon.h"
 
 namespace reckoner::ui {
@@ -17,6 +19,8 @@ constexpr double kMaxBacklogS = 2.0;               // wall seconds of simulated 
 constexpr double kFixRecentS = 3.0;                // a position fix this recent means "not dead reckoning"
 constexpr int kSweepsShown = 6;
 constexpr double kDrHorizonMaxS = 4.0 * 3600.0;
+constexpr qint64 kRasterIntervalNs = 100'000'000;  // radar pictures rasterised at most 10 times a second
+constexpr double kChartRadiusM = 100000.0;         // contours and land taken within this of the origin
 
 /// NEES of a Gaussian error e with covariance P (LDLT solve; NaN when P is not positive definite).
 template <int N>
@@ -24,6 +28,31 @@ double neesOf(const est::Vec<N>& e, const est::Mat<N>& P) {
   const Eigen::LDLT<est::Mat<N>> ldlt(P);
   if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return std::nan("");
   return e.dot(ldlt.solve(e));
+}
+
+RadarFixSample radarFixSampleOf(const sim::RadarFixReport& r, const sim::SimFrame& f) {
+  RadarFixSample s;
+  s.tS = toSeconds(r.timeUs);
+  s.informative = r.informative;
+  s.applied = r.update.applied();
+  s.echoes = r.echoes;
+  s.used = r.used;
+  s.x = r.fixPosition[0];
+  s.y = r.fixPosition[1];
+  s.headingDeg = radToDeg(r.fixHeadingRad);
+  s.sdX = std::sqrt(r.covariance(0, 0));
+  s.sdY = std::sqrt(r.covariance(1, 1));
+  s.sdHeadingDeg = radToDeg(std::sqrt(r.covariance(2, 2)));
+  s.trueX = f.truth.position.xM;
+  s.trueY = f.truth.position.yM;
+  s.trueHeadingDeg = s.headingDeg - radToDeg(angleDiff(r.fixHeadingRad, f.truth.headingRad));
+  est::Vec<3> e(s.x - s.trueX, s.y - s.trueY, angleDiff(r.fixHeadingRad, f.truth.headingRad));
+  e -= r.motionSensitivity * (est::drkf::sweepMotionOf(f.trueState) - r.assumedMotion);
+  s.nees = neesOf<3>(e, r.covariance);
+  s.rmsResidual = r.rmsNormalizedResidual;
+  s.nis = r.update.nis;
+  s.dim = r.update.dim;
+  return s;
 }
 
 OwnSample ownSampleOf(const sim::SimFrame& f) {
@@ -107,6 +136,11 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
     emit failed(QString::fromStdString(std::string("cannot start the scenario: ") + e.what()));
     return;
   }
+  picture_.reset();
+  match_.reset();
+  lastRadarFixS_ = -1e9;
+  applyCharts();
+  engine_->setRadarPicturesWanted(picturesWanted_);
   rate_ = 0.0;
   timer_->stop();
   targetS_ = 0.0;
@@ -239,6 +273,25 @@ void SimulationWorker::absorb(sim::SimFrame&& f) {
     }
   }
   pending_.events.insert(pending_.events.end(), f.trackEvents.begin(), f.trackEvents.end());
+  // Radar fixes are taken at sweep ends, inside the cycle; the truth they are scored against is the
+  // cycle's end, which is the fix's time when the sweep ends on a step (the usual 1 s step and 2 s
+  // sweep). Fixes in between are scored against it too: the plot shows them; their NEES is only
+  // indicative.
+  for (const auto& r : f.radarFixes) {
+    if (!r.valid) continue;
+    pending_.radarFixes.push_back(radarFixSampleOf(r, f));
+    if (pending_.radarFixes.back().applied) lastRadarFixS_ = toSeconds(r.timeUs);
+    pending_.lastRadarFix = pending_.radarFixes.back();
+    if (r.echoPoints.empty()) continue;
+    auto shown = std::make_shared<RadarMatchShown>();
+    shown->tS = toSeconds(r.timeUs);
+    shown->raw = r.rawEchoPoints;
+    shown->corrected = r.echoPoints;
+    shown->chart = r.chartPoints;
+    match_ = std::move(shown);
+  }
+  if (f.radarPicture) picture_ = std::move(f.radarPicture);
+  f.radarFixes.clear();
   f.sweeps.clear();
   pending_.frame = std::move(f);
 }
@@ -250,7 +303,11 @@ void SimulationWorker::updateDeadReckoning() {
     const BlockStatus& s = pending_.blocks[static_cast<std::size_t>(b)];
     return s.seen && s.accepted && t - s.tS <= kFixRecentS;
   };
-  pending_.positionFixUsed = recentAccepted(nav::kGpsPosition) || recentAccepted(nav::kLoranPosition);
+  // A radar fix (seed 004) is a position fix too; they come every few sweeps.
+  const double radarFixRecentS = 4.0 * engine_->scenario().radar.sweepPeriodS *
+                                 std::max(1, engine_->scenario().radarMatching.everySweeps);
+  pending_.positionFixUsed = recentAccepted(nav::kGpsPosition) || recentAccepted(nav::kLoranPosition) ||
+                             t - lastRadarFixS_ <= radarFixRecentS;
   pending_.error95M = nav::positionError95M(f.estimate);
   pending_.drLimitM = drLimitM_;
   if (pending_.positionFixUsed) {
@@ -290,6 +347,18 @@ void SimulationWorker::maybeEmit(bool force) {
   pending_.radarOn =
       engine_->scenario().radar.fitted && engine_->scenario().radar.power.at(engine_->timeUs());
   pending_.trackerKind = sim::trackerKindAt(engine_->scenario().tracker, engine_->commandTimeUs());
+  pending_.radarMatching = engine_->scenario().radarMatching.active.at(engine_->commandTimeUs());
+  pending_.chartContourSegments = coast_ ? static_cast<int>(coast_->segments().size()) : 0;
+  pending_.land = land_;
+  pending_.radarMatch = match_;
+  if (!picturesWanted_) {
+    pending_.radarRaster.reset();
+  } else if (picture_ && (force || now - rasterisedNs_ >= kRasterIntervalNs)) {
+    pending_.radarRaster = std::make_shared<const RadarRaster>(
+        rasteriseRadarPicture(*picture_->image, picture_->estimatedPose, toSeconds(picture_->timeUs)));
+    picture_.reset();
+    rasterisedNs_ = now;
+  }
   pending_.running = rate_ != 0.0;
   pending_.finished = engine_->finished();
   pending_.durationS = toSeconds(engine_->scenario().durationUs);
@@ -308,6 +377,7 @@ void SimulationWorker::maybeEmit(bool force) {
   pending_.ownHistory.clear();
   pending_.trackHistory.clear();
   pending_.events.clear();
+  pending_.radarFixes.clear();
 }
 
 void SimulationWorker::orderOwnShip(double trueHeadingRad, double speedMps) {
@@ -339,6 +409,54 @@ void SimulationWorker::setSpeedlogMode(sensors::SpeedlogMode mode) {
   if (!engine_) return;
   engine_->setSpeedlogMode(mode);
   pending_.frame.sensors = sim::sensorStatesAt(engine_->scenario(), engine_->commandTimeUs());
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::setCharts(std::vector<charts::CellPtr> cells) {
+  cells_ = std::move(cells);
+  chartsOrigin_.reset();
+  applyCharts();
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::applyCharts() {
+  if (!engine_) return;
+  const sim::Scenario& s = engine_->scenario();
+  if (!chartsOrigin_ || chartsOrigin_->latDeg != s.origin.latDeg ||
+      chartsOrigin_->lonDeg != s.origin.lonDeg) {
+    coast_.reset();
+    landMask_.reset();
+    land_.reset();
+    if (!cells_.empty()) {
+      try {
+        coast_ = std::make_shared<const radar::Coastline>(
+            charts::radarContours(cells_, engine_->frame(), {0.0, 0.0}, kChartRadiusM));
+        landMask_ = std::make_shared<const radar::LandMask>(
+            charts::landMask(cells_, engine_->frame(), {0.0, 0.0}, kChartRadiusM));
+        land_ = std::make_shared<const std::vector<std::vector<est::Vec<2>>>>(landMask_->rings());
+      } catch (const std::exception& e) {
+        emit failed(QString::fromStdString(std::string("radar contours of the charts: ") + e.what()));
+      }
+    }
+    chartsOrigin_ = s.origin;
+  }
+  engine_->setCoastline(coast_);
+  engine_->setLandMask(landMask_);
+}
+
+void SimulationWorker::setRadarMatching(bool on) {
+  if (!engine_) return;
+  engine_->setRadarMatching(on);
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::setRadarPicturesWanted(bool on) {
+  picturesWanted_ = on;
+  if (engine_) engine_->setRadarPicturesWanted(on);
+  if (!on) picture_.reset();
   dirty_ = true;
   maybeEmit(true);
 }

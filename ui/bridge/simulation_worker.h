@@ -11,6 +11,8 @@
 #include <memory>
 #include <optional>
 
+#include "charts/model/chart_model.h"
+#include "radar/land_mask.h"
 #include "ui/bridge/live_frame.h"
 
 namespace reckoner::ui {
@@ -49,6 +51,13 @@ class SimulationWorker : public QObject {
   void setDrLimit(double metres);
   /// Emits scenarioSnapshot() with the scenario as edited so far (for saving).
   void requestScenario();
+  /// The charts the window shows: their radar contours and land areas (around the scenario's origin)
+  /// go to the engine for radar matching and chart-aided acquisition, now and at every load.
+  void setCharts(std::vector<charts::CellPtr> cells);
+  /// Radar matching on or off from now (an operator change recorded in the scenario).
+  void setRadarMatching(bool on);
+  /// A radar picture at every sweep for the overlay (rasterised at most every 100 ms of wall time).
+  void setRadarPicturesWanted(bool on);
 
  signals:
   void frameReady(const reckoner::ui::LiveFrame& frame);
@@ -62,6 +71,7 @@ class SimulationWorker : public QObject {
   void absorb(sim::SimFrame&& f);
   void maybeEmit(bool force);
   void updateDeadReckoning();
+  void applyCharts();
 
   std::unique_ptr<sim::SimulationEngine> engine_;
   std::unique_ptr<sim::Seed002Filters> seed002_;  ///< beside the DRKF, on the same samples (display)
@@ -80,7 +90,17 @@ class SimulationWorker : public QObject {
   std::deque<std::pair<qint64, double>> rateWindow_;  // (wall ns, sim s) for the achieved rate
   int sweepCounter_ = 0;
   std::deque<ShownPlot> plots_;
-  double drLimitM_ = 185.2;  // 0.1 NM
+  std::vector<charts::CellPtr> cells_;
+  std::shared_ptr<const radar::Coastline> coast_;
+  std::shared_ptr<const radar::LandMask> landMask_;
+  std::shared_ptr<const std::vector<std::vector<est::Vec<2>>>> land_;
+  std::optional<geo::GeoPoint> chartsOrigin_;  // the origin coast_ and land_ were made for
+  bool picturesWanted_ = false;
+  std::optional<sim::RadarPicture> picture_;  // latest, not yet rasterised
+  qint64 rasterisedNs_ = 0;
+  std::shared_ptr<const RadarMatchShown> match_;
+  double lastRadarFixS_ = -1e9;  // simulated time of the last radar fix the DRKF applied
+  double drLimitM_ = 185.2;      // 0.1 NM
   double drComputedAtS_ = -1e9;
   sim::SensorStates drSensors_{};
 };

@@ -8,7 +8,9 @@
 // speed; Ctrl+click steers towards a point; click a target to select it; the right button opens the
 // context menu (add a target by dragging its vector, acquire, cancel a track, EBL/VRM, pick report).
 // Keys: left/right alter course 5 deg (1 with Shift), up/down speed 0.5 kn.
+#include <QImage>
 #include <QMenu>
+#include <QPainterPath>
 #include <optional>
 
 #include "geo/local_frame.h"
@@ -35,6 +37,26 @@ struct OverlaySettings {
   /// Also draw one of seed 002's own-ship estimates (position and 95% ellipse): 0 none, 1 the
   /// geodetic KF, 2 least squares.
   int seed002Shown = 0;
+  /// Radar overlay (seed 004): the simulated picture, drawn over the whole chart or under the chart's
+  /// land areas (it then shows on water only), in one of the radar colours with this opacity; and the
+  /// echoes of the latest match with the chart points they were matched to.
+  bool showRadarPicture = false;
+  bool radarOverChart = true;
+  double radarOpacity = 0.6;
+  int radarColour = 0;  ///< kRadarColours
+  bool showRadarEchoes = false;
+};
+
+/// The radar picture's colours: name and day colour (dimmed at dusk and night).
+struct RadarColour {
+  const char* name;
+  QRgb day;
+};
+inline constexpr RadarColour kRadarColours[] = {
+    {"Amber", qRgb(255, 170, 0)},
+    {"Green", qRgb(40, 200, 40)},
+    {"Yellow", qRgb(235, 225, 0)},
+    {"Cyan", qRgb(0, 200, 230)},
 };
 
 class EcdisView : public ChartView {
@@ -100,6 +122,10 @@ class EcdisView : public ChartView {
   void paintOwnShip(QPainter& p);
   void paintTargets(QPainter& p);
   void paintPlots(QPainter& p);
+  void paintRadarPicture(QPainter& p);
+  void paintRadarEchoes(QPainter& p);
+  /// The radar colour for the palette (dimmed at dusk and night).
+  [[nodiscard]] QColor radarColour() const;
   void paintScaleBar(QPainter& p, const charts::Viewport& view);
   void paintReadouts(QPainter& p);
   [[nodiscard]] QString cursorText(QPointF p) const;
@@ -121,6 +147,13 @@ class EcdisView : public ChartView {
     quint64 sequence;      // the latest frame when it was given
   };
   std::optional<PendingOrder> pendingOrder_;
+  // The radar picture coloured (rebuilt when the raster or the colour changes), and the charted land
+  // as one even-odd path in grid metres with a surrounding rectangle: the water, to clip to.
+  QImage radarImage_;
+  const void* radarImageOf_ = nullptr;
+  QRgb radarImageColour_ = 0;
+  QPainterPath water_;
+  const void* waterOf_ = nullptr;
 };
 
 }  // namespace reckoner::ui

@@ -67,6 +67,7 @@ OwnShipPanel::OwnShipPanel(QWidget* parent) : QWidget(parent) {
   static const char* const kBlocks[] = {"NIS GPS position", "NIS GPS velocity", "NIS Loran-C", "NIS speedlog",
                                         "NIS gyro"};
   for (std::size_t i = 0; i < nis_.size(); ++i) nis_[i] = add(tr(kBlocks[i]));
+  radarFix_ = add(tr("Radar fix (chart matching)"));
 }
 
 QLabel* OwnShipPanel::add(const QString& name) {
@@ -131,6 +132,18 @@ void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame)
                          .arg(b.nis, 0, 'f', 2)
                          .arg(b.dim)
                          .arg(b.accepted ? QString() : tr(" rejected")));
+  }
+  if (const auto& r = live.lastRadarFix; r && now - r->tS <= 30.0) {
+    radarFix_->setText(r->applied ? tr("%1 of %2 echoes, NIS %3 (%4 dof)")
+                                        .arg(r->used)
+                                        .arg(r->echoes)
+                                        .arg(r->nis, 0, 'f', 2)
+                                        .arg(r->dim)
+                       : r->informative
+                           ? tr("%1 of %2 echoes, rejected by the gate").arg(r->used).arg(r->echoes)
+                           : tr("%1 of %2 echoes, too weak a fix").arg(r->used).arg(r->echoes));
+  } else {
+    radarFix_->setText(QStringLiteral("–"));
   }
   if (live.positionFixUsed) {
     dr_->hide();

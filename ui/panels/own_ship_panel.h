@@ -26,6 +26,7 @@ class OwnShipPanel : public QWidget {
   QLabel *estPos_, *truePos_, *estCog_, *trueCog_, *heading_, *current_, *log_, *loran_, *sensors_, *error_;
   std::array<QLabel*, 2> seed002_{};  ///< error and 95% semi-major axis of seed 002's two filters
   std::array<QLabel*, 5> nis_{};
+  QLabel* radarFix_ = nullptr;
   QWidget* form_;
 };
 

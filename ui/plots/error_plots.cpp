@@ -24,10 +24,22 @@ struct Quantity {
   const char* unit;
 };
 const Quantity kOwnQuantities[] = {
-    {"Position x (east)", "m"},        {"Position y (north)", "m"}, {"Velocity x over ground", "m/s"},
-    {"Velocity y over ground", "m/s"}, {"Current x", "m/s"},        {"Current y", "m/s"},
-    {"Loran-C error x", "m"},          {"Loran-C error y", "m"},    {"Speedlog error", "m/s"},
+    {"Position x (east)", "m"},
+    {"Position y (north)", "m"},
+    {"Velocity x over ground", "m/s"},
+    {"Velocity y over ground", "m/s"},
+    {"Current x", "m/s"},
+    {"Current y", "m/s"},
+    {"Loran-C error x", "m"},
+    {"Loran-C error y", "m"},
+    {"Speedlog error", "m/s"},
+    // Seed 004's radar fixes (matched pictures) against the truth at their time; NEES of 3 dof.
+    {"Radar fix x (east)", "m"},
+    {"Radar fix y (north)", "m"},
+    {"Radar fix heading (grid)", "deg"},
+    {"Radar echo residual (rms, in sd)", "sd"},
 };
+constexpr int kFirstRadarQuantity = 9;
 const Quantity kTargetQuantities[] = {
     {"Target position x (east)", "m"},
     {"Target position y (north)", "m"},
@@ -166,6 +178,29 @@ std::vector<ErrorPlots::Row> ErrorPlots::rows(std::vector<double>* nees, bool de
   if (!history_ || history_->empty()) return out;
   const double window = window_->currentData().toDouble();
   const int q = quantity_->currentIndex();
+  if (subject_ == Subject::OwnShip && q >= kFirstRadarQuantity) {
+    const auto& fixes = history_->radarFixes();
+    const double t0 = window > 0.0 && !fixes.empty() ? fixes.back().tS - window : -1e300;
+    const double nan = std::nan("");
+    forWindow(fixes, t0, decimate, [&](const RadarFixSample& s) {
+      switch (q - kFirstRadarQuantity) {
+        case 0:
+          out.push_back({s.tS, s.x, s.trueX, s.sdX});
+          break;
+        case 1:
+          out.push_back({s.tS, s.y, s.trueY, s.sdY});
+          break;
+        case 2:
+          out.push_back({s.tS, s.headingDeg, s.trueHeadingDeg, s.sdHeadingDeg});
+          break;
+        default:
+          out.push_back({s.tS, s.rmsResidual, nan, nan});
+          break;
+      }
+      if (nees) nees->push_back(s.nees);
+    });
+    return out;
+  }
   if (subject_ == Subject::OwnShip) {
     const auto& own = history_->own();
     const double t0 = window > 0.0 && !own.empty() ? own.back().tS - window : -1e300;
@@ -236,7 +271,9 @@ void ErrorPlots::refresh() {
   const std::vector<Row> samples = rows(&nees, true);
   QList<QPointF> est, truth, err, plus, minus, ne, lo, hi;
   est.reserve(static_cast<qsizetype>(samples.size()));
-  const double dof = subject_ == Subject::OwnShip ? 11.0 : 4.0;
+  const double dof = subject_ == Subject::Target                        ? 4.0
+                     : quantity_->currentIndex() >= kFirstRadarQuantity ? 3.0
+                                                                        : 11.0;
   const double qLo = est::chiSquareQuantile(0.025, dof), qHi = est::chiSquareQuantile(0.975, dof);
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const Row& r = samples[i];
@@ -245,8 +282,10 @@ void ErrorPlots::refresh() {
       truth << QPointF(r.t, r.truth);
       err << QPointF(r.t, r.est - r.truth);
     }
-    plus << QPointF(r.t, 2.0 * r.sd);
-    minus << QPointF(r.t, -2.0 * r.sd);
+    if (std::isfinite(r.sd)) {
+      plus << QPointF(r.t, 2.0 * r.sd);
+      minus << QPointF(r.t, -2.0 * r.sd);
+    }
     if (std::isfinite(nees[i])) ne << QPointF(r.t, nees[i]);
   }
   if (!samples.empty()) {

@@ -175,26 +175,33 @@ std::vector<EchoPoint> extractEchoes(const PolarImage& image, double azStepRad,
   std::vector<int> area(runs.size(), 0);
   for (std::uint32_t i = 0; i < runs.size(); ++i) area[find(i)] += runs[i].r1 - runs[i].r0 + 1;
   // The front contour: the first run of each object on each beam faces own ship (a second object
-  // behind a gap on the same beam is a front too).
+  // behind a gap on the same beam is a front too). Runs shorter than a pulse are not fronts.
   struct Front {
     std::uint32_t root;
     int az, r;
     std::uint8_t src;
   };
   std::vector<Front> front;
+  // What lit most of a run's bins (a noise bin just in front of the land joins the land's run).
+  const auto runSource = [&image, R](int a, const Run& run) {
+    std::array<int, 4> n{};
+    const std::uint8_t* row = &image.bins[static_cast<std::size_t>(a) * static_cast<std::size_t>(R)];
+    for (int r = run.r0; r <= run.r1; ++r) ++n[std::min<std::size_t>(row[r], 3)];
+    return static_cast<std::uint8_t>(std::max_element(n.begin() + 1, n.end()) - n.begin());
+  };
   for (int a = 0; a < A; ++a) {
     std::uint32_t last = UINT32_MAX;
     for (std::size_t i = rowStart[static_cast<std::size_t>(a)]; i < rowStart[static_cast<std::size_t>(a) + 1];
          ++i) {
       const std::uint32_t root = find(static_cast<std::uint32_t>(i));
-      if (area[root] < params.minObjectArea || root == last) continue;
-      bool seen = false;  // an earlier run of the same object on this beam (around a gap)
+      const auto longEnough = [&](std::size_t k) {
+        return runs[k].r1 - runs[k].r0 + 1 >= params.minFrontRunBins;
+      };
+      if (area[root] < params.minObjectArea || root == last || !longEnough(i)) continue;
+      bool seen = false;  // an earlier front-worthy run of the same object on this beam (around a gap)
       for (std::size_t k = rowStart[static_cast<std::size_t>(a)]; k < i && !seen; ++k)
-        seen = find(static_cast<std::uint32_t>(k)) == root;
-      if (!seen)
-        front.push_back({root, a, runs[i].r0,
-                         image.bins[static_cast<std::size_t>(a) * static_cast<std::size_t>(R) +
-                                    static_cast<std::size_t>(runs[i].r0)]});
+        seen = longEnough(k) && find(static_cast<std::uint32_t>(k)) == root;
+      if (!seen) front.push_back({root, a, runs[i].r0, runSource(a, runs[i])});
       last = root;
     }
   }

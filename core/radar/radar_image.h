@@ -82,6 +82,9 @@ struct EchoPoint {
 
 struct EchoExtractionParams {
   int minObjectArea = 12;  ///< smaller objects are noise
+  /// A run shorter than this (in bins) is no front: an echo lasts at least a pulse, so a single lit
+  /// bin is receiver noise or a clutter spike, also where it touches the land in front of it.
+  int minFrontRunBins = 2;
   int targetPoints = 200;  ///< about this many echo points per image
 };
 

@@ -32,12 +32,17 @@ PolarImage simulateRadarImage(const Coastline& coast, const std::vector<RadarTar
     double landM = -1.0;
     std::vector<std::pair<double, double>> spans;  ///< target echoes [from, to] in metres
   };
+  // The sensor's errors, per beam: the bearing error turns the direction the beam really looks in away
+  // from the azimuth it is drawn at (so each azimuth shows exactly one beam: no two returns compete for
+  // one azimuth, which would bias the shore inwards), and the range error shifts all its echoes.
   std::vector<Beam> beams(static_cast<std::size_t>(p.azimuths));
+  std::vector<double> rangeError(static_cast<std::size_t>(p.azimuths));
   for (int a = 0; a < p.azimuths; ++a) {
     const double az = step * a;
     const double dt = pose.timeOffsetS(az);
     const est::Vec<2> o = pose.positionAt(dt);
-    const double gridAz = pose.headingAt(dt) + az;
+    const double gridAz = pose.headingAt(dt) + az + rng.normal(0.0, p.bearingSdRad);
+    rangeError[static_cast<std::size_t>(a)] = rng.normal(0.0, p.rangeSdM);
     Beam& b = beams[static_cast<std::size_t>(a)];
     if (const auto hit = coast.firstHit(o, gridAz, p.maxRangeM)) b.landM = *hit;
     const est::Vec<2> u(std::sin(gridAz), std::cos(gridAz));
@@ -64,18 +69,11 @@ PolarImage simulateRadarImage(const Coastline& coast, const std::vector<RadarTar
     for (int r = r0; r <= r1; ++r)
       if (src == BinSource::Target || !row[r]) row[r] = v;
   };
-  // Each beam returns its echoes with the sensor's errors: range noise, and a bearing error that shifts
-  // where the beam's return is drawn.
   std::vector<double> land(static_cast<std::size_t>(p.azimuths), -1.0);
   for (int a = 0; a < p.azimuths; ++a) {
     Beam& b = beams[static_cast<std::size_t>(a)];
-    const int shift = static_cast<int>(std::lround(rng.normal(0.0, p.bearingSdRad) / step));
-    const double dr = rng.normal(0.0, p.rangeSdM);
-    if (b.landM >= 0.0) {
-      const int at = ((a + shift) % p.azimuths + p.azimuths) % p.azimuths;
-      double& l = land[static_cast<std::size_t>(at)];
-      l = l < 0.0 ? b.landM + dr : std::min(l, b.landM + dr);
-    }
+    const double dr = rangeError[static_cast<std::size_t>(a)];
+    if (b.landM >= 0.0) land[static_cast<std::size_t>(a)] = b.landM + dr;
     for (auto& [from, to] : b.spans) {
       from += dr;
       to += dr;

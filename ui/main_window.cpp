@@ -379,14 +379,7 @@ void MainWindow::buildActions() {
     }
   }
   const auto toggle = [&](const QString& name, bool OverlaySettings::*member) {
-    QAction* a = viewMenu->addAction(name);
-    a->setCheckable(true);
-    a->setChecked(view_->overlay().*member);
-    connect(a, &QAction::toggled, this, [this, member](bool on) {
-      OverlaySettings s = view_->overlay();
-      s.*member = on;
-      view_->setOverlay(s);
-    });
+    addOverlayToggle(viewMenu, name, member);
   };
   toggle(tr("Truth"), &OverlaySettings::showTruth);
   toggle(tr("Covariance ellipses (95%)"), &OverlaySettings::showEllipses);
@@ -406,6 +399,18 @@ void MainWindow::buildActions() {
   buildRadarMenu();
 }
 
+QAction* MainWindow::addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member) {
+  QAction* a = menu->addAction(name);
+  a->setCheckable(true);
+  a->setChecked(view_->overlay().*member);
+  connect(a, &QAction::toggled, this, [this, member](bool on) {
+    OverlaySettings s = view_->overlay();
+    s.*member = on;
+    view_->setOverlay(s);
+  });
+  return a;
+}
+
 void MainWindow::buildRadarMenu() {
   // Seed 004: the radar picture matched to the loaded charts, and the radar overlay.
   QMenu* radar = menuBar()->addMenu(tr("&Radar"));
@@ -416,25 +421,12 @@ void MainWindow::buildRadarMenu() {
   radarMatchAction_->setCheckable(true);
   connect(radarMatchAction_, &QAction::triggered, this,
           [this](bool on) { controller_->setRadarMatching(on); });
-  QAction* picture = radar->addAction(tr("Show the radar picture"));
+  QAction* picture =
+      addOverlayToggle(radar, tr("Show the radar picture"), &OverlaySettings::showRadarPicture);
   picture->setObjectName(QStringLiteral("radarPicture"));
-  picture->setCheckable(true);
-  picture->setChecked(view_->overlay().showRadarPicture);
-  connect(picture, &QAction::toggled, this, [this](bool on) {
-    OverlaySettings s = view_->overlay();
-    s.showRadarPicture = on;
-    view_->setOverlay(s);
-    controller_->setRadarPicturesWanted(on);
-  });
-  QAction* echoes = radar->addAction(tr("Show matched echoes and their chart points"));
-  echoes->setObjectName(QStringLiteral("radarEchoes"));
-  echoes->setCheckable(true);
-  echoes->setChecked(view_->overlay().showRadarEchoes);
-  connect(echoes, &QAction::toggled, this, [this](bool on) {
-    OverlaySettings s = view_->overlay();
-    s.showRadarEchoes = on;
-    view_->setOverlay(s);
-  });
+  connect(picture, &QAction::toggled, this, [this](bool on) { controller_->setRadarPicturesWanted(on); });
+  addOverlayToggle(radar, tr("Show matched echoes and their chart points"), &OverlaySettings::showRadarEchoes)
+      ->setObjectName(QStringLiteral("radarEchoes"));
   radar->addSeparator();
   auto* layer = new QActionGroup(this);
   const std::pair<QString, bool> layers[] = {{tr("Radar over the chart"), true},

@@ -86,6 +86,8 @@ class MainWindow : public QMainWindow {
 
  private:
   void buildRadarMenu();
+  /// A checkable action in `menu` that switches one overlay setting.
+  QAction* addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member);
   void buildActions();
   void buildDocks();
   void onFrame(const LiveFrame& frame);

@@ -367,6 +367,9 @@ void readRadarMatching(Fields& top, sim::Scenario& s) {
   m.beamWidthDeg = f.numberOr("beam_width_deg", m.beamWidthDeg, Fields::Check::Positive);
   m.maxFixSdM = f.numberOr("max_fix_sd_m", m.maxFixSdM, Fields::Check::Positive);
   m.maxFixHeadingSdDeg = f.numberOr("max_fix_heading_sd_deg", m.maxFixHeadingSdDeg, Fields::Check::Positive);
+  m.errorCorrelation = f.numberOr("error_correlation", m.errorCorrelation);
+  if (!(m.errorCorrelation >= 0.0 && m.errorCorrelation <= 0.95))
+    f.fail(*f.get("error_correlation"), f.pathOf("error_correlation"), "must be in [0, 0.95]");
   if (m.beamWidthDeg > 10.0)
     f.fail(*f.get("beam_width_deg"), f.pathOf("beam_width_deg"), "must be at most 10");
   f.finish();
@@ -825,6 +828,7 @@ std::string writeScenario(const sim::Scenario& s) {
     w.key("beam_width_deg").value(m.beamWidthDeg, kExact);
     w.key("max_fix_sd_m").value(m.maxFixSdM, kExact);
     w.key("max_fix_heading_sd_deg").value(m.maxFixHeadingSdDeg, kExact);
+    w.key("error_correlation").value(m.errorCorrelation, kExact);
     w.endObject();
   }
   w.key("tracker").beginObject();

@@ -18,6 +18,20 @@ struct RunOut {
   double nees = 0.0, fixNees = 0.0, fixPosNees = 0.0, fixHdgNees = 0.0;
   long pictures = 0, applied = 0, echoes = 0, used = 0, fixes = 0;
   long vessel = 0, clutter = 0, spuriousUsed = 0;
+
+  void add(const RunOut& o) {
+    for (auto [to, from] : {std::pair{&posErr, &o.posErr}, std::pair{&hdgErr, &o.hdgErr},
+                            std::pair{&fixPosErr, &o.fixPosErr}, std::pair{&fixHdgErr, &o.fixHdgErr}})
+      to->insert(to->end(), from->begin(), from->end());
+    for (auto [to, from] : {std::pair{&nees, o.nees}, std::pair{&fixNees, o.fixNees},
+                            std::pair{&fixPosNees, o.fixPosNees}, std::pair{&fixHdgNees, o.fixHdgNees}})
+      *to += from;
+    for (auto [to, from] :
+         {std::pair{&pictures, o.pictures}, std::pair{&applied, o.applied}, std::pair{&echoes, o.echoes},
+          std::pair{&used, o.used}, std::pair{&fixes, o.fixes}, std::pair{&vessel, o.vessel},
+          std::pair{&clutter, o.clutter}, std::pair{&spuriousUsed, o.spuriousUsed}})
+      *to += from;
+  }
 };
 
 double p95(std::vector<double> v) {
@@ -76,24 +90,7 @@ RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const r
   RadarFixStudy s;
   s.runs = runs;
   RunOut all;
-  for (const auto& o : outs) {
-    all.posErr.insert(all.posErr.end(), o.posErr.begin(), o.posErr.end());
-    all.hdgErr.insert(all.hdgErr.end(), o.hdgErr.begin(), o.hdgErr.end());
-    all.fixPosErr.insert(all.fixPosErr.end(), o.fixPosErr.begin(), o.fixPosErr.end());
-    all.fixHdgErr.insert(all.fixHdgErr.end(), o.fixHdgErr.begin(), o.fixHdgErr.end());
-    all.nees += o.nees;
-    all.fixNees += o.fixNees;
-    all.fixPosNees += o.fixPosNees;
-    all.fixHdgNees += o.fixHdgNees;
-    all.pictures += o.pictures;
-    all.applied += o.applied;
-    all.echoes += o.echoes;
-    all.used += o.used;
-    all.fixes += o.fixes;
-    all.vessel += o.vessel;
-    all.clutter += o.clutter;
-    all.spuriousUsed += o.spuriousUsed;
-  }
+  for (const auto& o : outs) all.add(o);
   s.rows = static_cast<long>(all.posErr.size());
   const double rows = static_cast<double>(std::max(1L, s.rows));
   double sq = 0.0;

@@ -118,6 +118,10 @@ struct RadarMatchingSpec {
   /// fix carries little and its linearisation (errors of several degrees) is not to be trusted.
   double maxFixSdM = 30.0;
   double maxFixHeadingSdDeg = 0.5;
+  /// Correlation rho of consecutive fixes' errors (the same shore seen sweep after sweep pulls them the
+  /// same way). The DRKF takes each fix with its covariance times (1 + rho) / (1 - rho), the long-run
+  /// variance of such errors over the short-term one, so frequent fixes do not make it overconfident.
+  double errorCorrelation = 0.0;
 };
 
 struct Scenario {

@@ -429,8 +429,11 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
     // The fix moves with the velocity and turn rate the picture was placed with (drkf_radar_fix.h).
     rep.assumedMotion = est::Vec<3>(estPose.velocity[0], estPose.velocity[1], estPose.turnRateRadPerS);
     rep.motionSensitivity = r.motionSensitivity;
+    // Errors persisting from sweep to sweep: the long-run variance (radar_matching.error_correlation).
+    const double rho = m.errorCorrelation;
     if (rep.informative)
-      rep.update = drkf_->updateRadarFix(t, z, r.covariance, r.motionSensitivity, rep.assumedMotion);
+      rep.update = drkf_->updateRadarFix(t, z, r.covariance * ((1.0 + rho) / (1.0 - rho)),
+                                         r.motionSensitivity, rep.assumedMotion);
     rep.echoPoints = r.echoPoints;
     rep.rawEchoPoints = r.rawEchoPoints;
     rep.rmsNormalizedResidual = r.rmsNormalizedResidual;

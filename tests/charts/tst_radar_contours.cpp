@@ -77,7 +77,8 @@ void checkOutageStudy(const sim::Scenario& base, const std::vector<charts::CellP
   QVERIFY(m.positionP95M < 30.0);
   QVERIFY(m.positionP95M < dr.positionP95M);
   QVERIFY(m.fixHeadingP95Deg < 0.5);
-  QVERIFY(m.fixNees > 1.0 && m.fixNees < 4.0);
+  QVERIFY(m.fixNees > 0.5 && m.fixNees < 4.0);  // honest, or conservative (RK5SOUND's simple contours)
+  QVERIFY(m.headingP95Deg < 0.5);
   QVERIFY(m.meanNees < 1.25 * 11.0);
 }
 }  // namespace
@@ -100,10 +101,11 @@ class TestRadarContours : public QObject {
   }
   void radarFixesBoundTheDeadReckoningError() {
     // GIVEN the radar-fix scenario on RK5SOUND (GPS off 300-1200 s, no Loran-C) WHEN 4 runs go by dead
-    // reckoning alone and 4 with the radar picture matched to the chart every third sweep THEN with
-    // matching the 95th-percentile position error without GPS is under 30 m and below dead reckoning's,
-    // the fixes' heading p95 is under 0.5 deg, the fixes' covariance is honest (mean NEES, 3 dof, between
-    // 1 and 4) and the DRKF stays consistent (mean NEES within 25% of its 11 dof).
+    // reckoning alone and 4 with the radar picture matched to the chart every sweep THEN with matching
+    // the 95th-percentile position error without GPS is under 30 m and below dead reckoning's, the
+    // DRKF's and the fixes' heading p95 are under 0.5 deg, the fixes' covariance is honest or
+    // conservative (mean NEES, 3 dof, between 0.5 and 4) and the DRKF is not overconfident (mean NEES
+    // within 25% of its 11 dof).
     // (50 runs and the open questions: docs/radar_matching.md.)
     const auto cell = charts::loadCell(std::string(charts::kDefaultChartPath));
     const sim::Scenario base =

@@ -238,7 +238,7 @@ class TestMainWindow : public QObject {
     }
     qInfo("%zu fixes from 100 to 400 s, %d applied, mean NEES %.2f (3 dof)", fixes.size(), applied,
           nees / static_cast<double>(fixes.size()));
-    QVERIFY(fixes.size() >= 45);  // every third 2 s sweep
+    QVERIFY(fixes.size() >= 140);  // every 2 s sweep
     QVERIFY(applied >= static_cast<int>(fixes.size()) / 2);
     QVERIFY(nees / static_cast<double>(fixes.size()) < 6.0);
     const LiveFrame& live = w.history().latest();

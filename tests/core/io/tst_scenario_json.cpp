@@ -99,6 +99,16 @@ class TestScenarioJson : public QObject {
                                    << "t.json:6: current.beta_per_s: must be positive";
     QTest::newRow("not an object") << "[1, 2]"
                                    << "t.json:1: must be an object, got an array";
+    QTest::newRow("radar matching correlation")
+        << QString::fromStdString(
+               variant("\"duration_s\": 100,",
+                       "\"duration_s\": 100, \"radar_matching\": {\"error_correlation\": 1.2},"))
+        << "radar_matching.error_correlation: must be in [0, 0.95]";
+    QTest::newRow("radar matching schedule")
+        << QString::fromStdString(variant(
+               "\"duration_s\": 100,",
+               "\"duration_s\": 100, \"radar_matching\": {\"schedule\": [{\"t_s\": 50, \"on\": 1}]},"))
+        << "radar_matching.schedule[0].on: must be";
     QTest::newRow("empty event") << QString::fromStdString(
                                         variant("{\"t_s\": 10, \"turn_rate_dps\": 1.5}", "{\"t_s\": 10}"))
                                  << "own_ship.schedule[0].velocity_mps: event needs";

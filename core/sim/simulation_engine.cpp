@@ -377,7 +377,7 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
   const auto image = std::make_shared<const radar::PolarImage>(
       radar::simulateRadarImage(coast, targets, truePose, ip, matchNow ? radarImageRng_ : radarDisplayRng_));
   // The estimated pose over the same sweep: the DRKF's position, velocity over ground and heading
-  // (the direction of the velocity through the water) at t, no turn.
+  // (the direction of the velocity through the water) at t, turning as below.
   const auto& x = drkf_->belief().x;
   const est::Vec<2> estPos(x[est::drkf::kPosX], x[est::drkf::kPosY]);
   const est::Vec<3> motion = est::drkf::sweepMotionOf(x);

@@ -41,10 +41,7 @@ double p95(std::vector<double> v) {
 }
 
 void scoreFix(const RadarFixReport& r, const SimFrame& f, RunOut& o) {
-  const est::Vec<3> motionErr = est::drkf::sweepMotionOf(f.trueState) - r.assumedMotion;
-  est::Vec<3> err(r.fixPosition[0] - f.truth.position.xM, r.fixPosition[1] - f.truth.position.yM,
-                  angleDiff(r.fixHeadingRad, f.truth.headingRad));
-  err -= r.motionSensitivity * motionErr;
+  const est::Vec<3> err = radarFixError(r, f);
   o.fixPosErr.push_back(err.head<2>().norm());
   o.fixHdgErr.push_back(std::abs(err[2]));
   o.fixNees += est::nees<3>(err, r.covariance);
@@ -53,6 +50,12 @@ void scoreFix(const RadarFixReport& r, const SimFrame& f, RunOut& o) {
   ++o.fixes;
 }
 }  // namespace
+
+est::Vec<3> radarFixError(const RadarFixReport& r, const SimFrame& f) {
+  const est::Vec<3> err(r.fixPosition[0] - f.truth.position.xM, r.fixPosition[1] - f.truth.position.yM,
+                        angleDiff(r.fixHeadingRad, f.truth.headingRad));
+  return err - r.motionSensitivity * (est::drkf::sweepMotionOf(f.trueState) - r.assumedMotion);
+}
 
 RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const radar::Coastline> coast,
                                std::shared_ptr<const radar::LandMask> land, bool matching, int runs,

@@ -10,6 +10,7 @@
 #include "radar/coastline.h"
 #include "radar/land_mask.h"
 #include "sim/scenario.h"
+#include "sim/simulation_engine.h"
 
 namespace reckoner::sim {
 
@@ -33,6 +34,11 @@ struct RadarFixStudy {
   double fixPositionP95M = 0.0, fixHeadingP95Deg = 0.0;
   double fixNees = 0.0, fixPositionNees = 0.0, fixHeadingNees = 0.0;  ///< 3, 2 and 1 dof
 };
+
+/// A radar fix's error against the frame's truth (position grid m, heading rad), less what the error of
+/// the motion it was placed with explains (S times the true minus the assumed velocity and turn rate):
+/// the part its covariance claims. For fixes taken at the frame's time.
+est::Vec<3> radarFixError(const RadarFixReport& fix, const SimFrame& frame);
 
 /// `runs` runs (seeds seed, seed + 1, ...) on `threads` threads, with radar matching on or off.
 RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const radar::Coastline> coast,

@@ -269,7 +269,7 @@ class TestMainWindow : public QObject {
     const auto& x = live.frame.estimate.x;
     est::Vec<2> nearest(0, 0);
     double best = 1e300;
-    for (const auto& ring : *live.land) {
+    for (const auto& ring : live.land->rings()) {
       est::Vec<2> c(0, 0);
       for (const auto& q : ring) c += q;
       c /= static_cast<double>(ring.size());

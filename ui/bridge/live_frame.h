@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "radar/land_mask.h"
 #include "sim/own_ship_filters.h"
 #include "sim/scenario.h"
 #include "sim/simulation_engine.h"
@@ -113,7 +114,7 @@ struct LiveFrame {
   std::shared_ptr<const RadarMatchShown> radarMatch;
   std::vector<RadarFixSample> radarFixes;
   std::optional<RadarFixSample> lastRadarFix;  ///< the latest, kept across frames
-  std::shared_ptr<const std::vector<std::vector<est::Vec<2>>>> land;
+  std::shared_ptr<const radar::LandMask> land;
   bool radarMatching = false;
   int chartContourSegments = 0;
   double rate = 0.0;          ///< requested rate (0: paused, < 0: as fast as possible)

@@ -7,8 +7,8 @@
 
 #include "charts/radar/radar_contours.h"
 #include "common/angles.h"
-#include "estimation/models/drkf_radar_fix.h"
 #include "navigation/dr_horizon.h"
+#include "sim/radar_fix_study.h"
 
 namespace reckoner::ui {
 namespace {
@@ -46,9 +46,7 @@ RadarFixSample radarFixSampleOf(const sim::RadarFixReport& r, const sim::SimFram
   s.trueX = f.truth.position.xM;
   s.trueY = f.truth.position.yM;
   s.trueHeadingDeg = s.headingDeg - radToDeg(angleDiff(r.fixHeadingRad, f.truth.headingRad));
-  est::Vec<3> e(s.x - s.trueX, s.y - s.trueY, angleDiff(r.fixHeadingRad, f.truth.headingRad));
-  e -= r.motionSensitivity * (est::drkf::sweepMotionOf(f.trueState) - r.assumedMotion);
-  s.nees = neesOf<3>(e, r.covariance);
+  s.nees = neesOf<3>(sim::radarFixError(r, f), r.covariance);
   s.rmsResidual = r.rmsNormalizedResidual;
   s.nis = r.update.nis;
   s.dim = r.update.dim;
@@ -349,7 +347,7 @@ void SimulationWorker::maybeEmit(bool force) {
   pending_.trackerKind = sim::trackerKindAt(engine_->scenario().tracker, engine_->commandTimeUs());
   pending_.radarMatching = engine_->scenario().radarMatching.active.at(engine_->commandTimeUs());
   pending_.chartContourSegments = coast_ ? static_cast<int>(coast_->segments().size()) : 0;
-  pending_.land = land_;
+  pending_.land = landMask_;
   pending_.radarMatch = match_;
   if (!picturesWanted_) {
     pending_.radarRaster.reset();
@@ -428,14 +426,12 @@ void SimulationWorker::applyCharts() {
       chartsOrigin_->lonDeg != s.origin.lonDeg) {
     coast_.reset();
     landMask_.reset();
-    land_.reset();
     if (!cells_.empty()) {
       try {
         coast_ = std::make_shared<const radar::Coastline>(
             charts::radarContours(cells_, engine_->frame(), {0.0, 0.0}, kChartRadiusM));
         landMask_ = std::make_shared<const radar::LandMask>(
             charts::landMask(cells_, engine_->frame(), {0.0, 0.0}, kChartRadiusM));
-        land_ = std::make_shared<const std::vector<std::vector<est::Vec<2>>>>(landMask_->rings());
       } catch (const std::exception& e) {
         emit failed(QString::fromStdString(std::string("radar contours of the charts: ") + e.what()));
       }

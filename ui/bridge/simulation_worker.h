@@ -93,7 +93,6 @@ class SimulationWorker : public QObject {
   std::vector<charts::CellPtr> cells_;
   std::shared_ptr<const radar::Coastline> coast_;
   std::shared_ptr<const radar::LandMask> landMask_;
-  std::shared_ptr<const std::vector<std::vector<est::Vec<2>>>> land_;
   std::optional<geo::GeoPoint> chartsOrigin_;  // the origin coast_ and land_ were made for
   bool picturesWanted_ = false;
   std::optional<sim::RadarPicture> picture_;  // latest, not yet rasterised

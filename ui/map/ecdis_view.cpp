@@ -621,7 +621,7 @@ void EcdisView::paintRadarPicture(QPainter& p) {
       water_ = QPainterPath();
       water_.setFillRule(Qt::OddEvenFill);
       double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-      for (const auto& ring : *live.land) {
+      for (const auto& ring : live.land->rings()) {
         QPolygonF poly;
         poly.reserve(static_cast<qsizetype>(ring.size()));
         for (const auto& q : ring) {

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -161,7 +162,7 @@ class Chart {
  private:
   std::map<std::pair<long, long>, std::pair<int, P>> nodes_;
   std::vector<Edge> edges_;
-  std::vector<Feature> features_;
+  std::deque<Feature> features_;  // add() hands out references: they must survive later add()s
 };
 
 std::map<std::string, int> objectCodes() {

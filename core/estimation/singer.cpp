@@ -41,12 +41,14 @@ SingerAxis singerDiscretisation(const GaussMarkov& acc, double dtS) {
   SingerAxis d;
   d.Phi = singerTransition(acc, T);
 
-  // Q = alpha^2 * integral of phi phi^T over [0, T], by panels of at most b T = 1.
-  const int panels = std::max(1, static_cast<int>(std::ceil(b * T)));
-  const double h = T / panels;
+  // Q = alpha^2 * integral of phi phi^T over [0, T], by panels of at most b T = 1 up to b T =
+  // kTailBT; beyond it phi is a polynomial of degree 1 in s (its exponentials are below 2e-9), which
+  // one 8-point panel integrates exactly, so a gap of any length costs at most kTailBT + 1 panels.
+  constexpr double kTailBT = 20.0;
+  const double head = std::min(T, kTailBT / b);
+  const int panels = std::max(1, static_cast<int>(std::ceil(b * head)));
   Mat<3> integral = Mat<3>::Zero();
-  for (int k = 0; k < panels; ++k) {
-    const double mid = (k + 0.5) * h;
+  const auto panel = [&](double mid, double h) {
     for (std::size_t i = 0; i < kNodes.size(); ++i) {
       for (const double sign : {-1.0, 1.0}) {
         const double s = mid + sign * kNodes[i] * 0.5 * h;
@@ -54,7 +56,10 @@ SingerAxis singerDiscretisation(const GaussMarkov& acc, double dtS) {
         integral += (kWeights[i] * 0.5 * h) * (phi * phi.transpose());
       }
     }
-  }
+  };
+  const double h = head / panels;
+  for (int k = 0; k < panels; ++k) panel((k + 0.5) * h, h);
+  if (T > head) panel(0.5 * (head + T), T - head);
   const double alpha2 = 2.0 * acc.sigma * acc.sigma * b;
   d.Q = alpha2 * integral;
   symmetrise(d.Q);

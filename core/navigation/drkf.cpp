@@ -18,6 +18,10 @@ namespace {
 using namespace est::drkf;
 // The grid convergence changes by ~0.005 deg per 500 m; recompute it only after moving that far.
 constexpr double kGridRefreshM = 500.0;
+// Longest single prediction step: beta dt at most kMaxBetaDt keeps Van Loan's exponential accurate
+// (cancellation ~ 1e-16 exp(2 beta dt) ~ 3e-13), and never more than a minute.
+constexpr double kMaxBetaDt = 4.0;
+constexpr double kMaxPredictStepS = 60.0;
 
 template <class... Ts>
 struct Overloaded : Ts... {
@@ -98,6 +102,10 @@ Drkf::Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const Belief&
     gates_[3] = est::chiSquareQuantile(config.gateProbability, 3.0);
   }
   rejectedSinceUs_.fill(-1);
+  const auto& p = config.process;
+  const double betaMax = std::max(
+      {p.current.betaPerS, p.acceleration.betaPerS, p.loranError.betaPerS, p.speedlogError.betaPerS});
+  maxStepUs_ = std::max<TimeUs>(1, fromSeconds(std::min(kMaxPredictStepS, kMaxBetaDt / betaMax)));
 }
 
 const Drkf::Transition& Drkf::discretisation(TimeUs dtUs) {
@@ -131,8 +139,39 @@ void Drkf::setBelief(const Belief& b, TimeUs t) {
 bool Drkf::predictTo(TimeUs t) {
   if (t < timeUs_) return false;
   if (t == timeUs_) return true;
-  const auto& d = discretisation(t - timeUs_);
-  if (!est::predictLinear(belief_, d.Phi, d.Q)) {
+  const TimeUs dtUs = t - timeUs_;
+  bool ok = false;
+  if (dtUs <= maxStepUs_) {
+    const auto& d = discretisation(dtUs);
+    ok = est::predictLinear(belief_, d.Phi, d.Q);
+  } else {
+    // Van Loan's exponential holds exp(+beta dt) beside exp(-beta dt): past beta dt of a few units
+    // its Q is lost to cancellation (a 200 s gap at beta 1 /s gave a covariance that is not positive
+    // definite). A long interval is n steps of at most maxStepUs_ and a remainder, composed exactly
+    // by binary powering (O(log n) products, so a gap of days costs microseconds).
+    const TimeUs n = dtUs / maxStepUs_, rest = dtUs % maxStepUs_;
+    const Transition& step = discretisation(maxStepUs_);
+    est::Mat<kStateDim> Phi = est::Mat<kStateDim>::Identity(), Q = est::Mat<kStateDim>::Zero();
+    est::Mat<kStateDim> basePhi = step.Phi.dense(), baseQ = step.Q;
+    for (TimeUs k = n; k > 0; k >>= 1) {
+      if (k & 1) {  // append the current power of the step (powers of one step commute)
+        Q = basePhi * Q * basePhi.transpose() + baseQ;
+        Phi = basePhi * Phi;
+      }
+      if (k > 1) {
+        baseQ = basePhi * baseQ * basePhi.transpose() + baseQ;
+        basePhi = basePhi * basePhi;
+      }
+    }
+    if (rest > 0) {
+      const Transition& r = discretisation(rest);
+      Q = r.Phi.dense() * Q * r.Phi.dense().transpose() + r.Q;
+      Phi = r.Phi.dense() * Phi;
+    }
+    est::symmetrise(Q);
+    ok = est::predictLinear(belief_, Phi, Q);
+  }
+  if (!ok) {
     ++counters_.predictFailures;
     return false;
   }

@@ -118,6 +118,7 @@ class Drkf {
     Transition d;
   };
   std::array<CacheEntry, 4> cache_{};
+  TimeUs maxStepUs_ = 1;  ///< longest single prediction step (predictTo composes longer ones)
   std::size_t cacheNext_ = 0;
   geo::GridPoint gridPoint_{std::numeric_limits<double>::quiet_NaN(), 0.0};
   geo::GridInfo grid_;

@@ -34,6 +34,10 @@ class TestTtkfModels : public QObject {
     QTest::newRow("fast manoeuvre model, 30 s") << 0.5 << 1.0 << 30.0;
     QTest::newRow("microsecond step") << 0.3 << 0.5 << 1e-6;
     QTest::newRow("zero step") << 0.3 << 0.5 << 0.0;
+    // Gaps of a replay: the panels stop at beta T = 20 and one panel takes the polynomial tail (the
+    // 4000-year gap of a bit-flipped year overflowed the panel count).
+    QTest::newRow("one hour without plots") << 0.5 << 1.0 << 3600.0;
+    QTest::newRow("4000-year clock error") << 0.1 << 0.5 << 1.26e11;
   }
   void singerEqualsVanLoan() {
     QFETCH(double, sigma);
@@ -44,8 +48,8 @@ class TestTtkfModels : public QObject {
     F << 0, 1, 0, 0, 0, 1, 0, 0, -beta;
     auto vl = discretiseVanLoan<3, 1>(F, MatRC<3, 1>(0.0, 0.0, gm.alpha()), dt);
     if (beta * dt > 5.0) {
-      // Van Loan forms Q as Phi (Phi^-1 Q), with entries ~ e^(beta dt): it loses digits here. Use
-      // Singer's closed form (no cancellation at large beta dt) as the reference instead.
+      // Van Loan forms Q as Phi (Phi^-1 Q), with entries ~ e^(beta dt): it loses digits here (and
+      // overflows past beta dt ~ 700). Use Singer's closed form as the reference instead.
       const double b = beta, T = dt, q = gm.alpha() * gm.alpha(), e1 = std::exp(-b * T),
                    e2 = std::exp(-2 * b * T);
       vl.Q(0, 0) = q / (2 * std::pow(b, 5)) *
@@ -56,6 +60,7 @@ class TestTtkfModels : public QObject {
       vl.Q(1, 1) = q / (2 * std::pow(b, 3)) * (4 * e1 - 3 - e2 + 2 * b * T);
       vl.Q(1, 2) = vl.Q(2, 1) = q / (2 * b * b) * (e2 + 1 - 2 * e1);
       vl.Q(2, 2) = q / (2 * b) * (1 - e2);
+      vl.Phi << 1, T, (b * T + e1 - 1) / (b * b), 0, 1, (1 - e1) / b, 0, 0, e1;  // exp overflows in Van Loan
     }
     const auto s = singerDiscretisation(gm, dt);
     QVERIFY2((s.Phi - vl.Phi).cwiseAbs().maxCoeff() <= 1e-12 * std::max(1.0, vl.Phi.cwiseAbs().maxCoeff()),

@@ -140,6 +140,37 @@ class TestDrkf : public QObject {
     c.gateProbability = 1.0;
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Drkf(c, geo::LocalFrame(49.0, -123.0), Belief{}, 0));
   }
+  void longGapsArePredictedExactly_data() {
+    QTest::addColumn<double>("gapS");
+    QTest::newRow("200 s") << 200.0;
+    QTest::newRow("one hour") << 3600.0;
+  }
+  void longGapsArePredictedExactly() {
+    // GIVEN a filter WHEN predicted across a gap in one call THEN the belief is the one of predicting
+    // second by second (Van Loan over the whole gap lost Q to cancellation: at 200 s the covariance was
+    // not positive definite and no update was ever applied again).
+    QFETCH(double, gapS);
+    Drkf once = makeFilter(3.0, 4.0), stepped = makeFilter(3.0, 4.0);
+    QVERIFY(once.predictTo(fromSeconds(gapS)));
+    for (int k = 1; k <= static_cast<int>(gapS); ++k) QVERIFY(stepped.predictTo(k * kMicrosPerSecond));
+    const Covariance& P = once.belief().P;
+    QVERIFY(est::isPositiveDefinite(P));
+    const double rel =
+        (P - stepped.belief().P).cwiseAbs().maxCoeff() / stepped.belief().P.cwiseAbs().maxCoeff();
+    QVERIFY2(rel < 1e-9, qPrintable(QString("relative difference %1").arg(rel)));
+    QVERIFY((once.belief().x - stepped.belief().x).cwiseAbs().maxCoeff() < 1e-6);
+    // And the filter takes a fix after it.
+    const std::vector<OwnShipSample> fix{
+        GpsSample{once.timeUs(), {3.0 * gapS + 100.0, 4.0 * gapS}, 1600.0, false, 0.0, 0.0, 0.0}};
+    const auto r = once.update(once.timeUs(), fix);
+    QCOMPARE(blockOf(r, kGpsPosition)->status, est::UpdateStatus::Accepted);
+  }
+  void gapOfAMonthStaysFinite() {
+    Drkf f = makeFilter(3.0, 4.0);
+    QVERIFY(f.predictTo(fromSeconds(30.0 * 86400.0)));
+    QVERIFY(f.belief().x.allFinite());
+    QVERIFY(est::isPositiveDefinite(f.belief().P));
+  }
   void groundOutputs() {
     Belief b;
     b.x.setZero();

@@ -37,6 +37,7 @@
 #include "common/angles.h"
 #include "estimation/chi_square.h"
 #include "estimation/ekf.h"
+#include "io/error_line.h"
 #include "io/input_error.h"
 #include "io/json.h"
 #include "io/own_ship_output.h"
@@ -118,9 +119,9 @@ Args parseArgs(int argc, char** argv, int first, const std::vector<std::string>&
     } else if (s.rfind("--", 0) == 0) {
       const std::string name = s.substr(2);
       if (std::find(valued.begin(), valued.end(), name) == valued.end())
-        throw UsageError("unknown option " + s);
-      if (i + 1 >= argc) throw UsageError("option " + s + " needs a value");
-      if (a.options.count(name)) throw UsageError("option " + s + " given twice");
+        throw UsageError("unknown option " + io::quoted(s));
+      if (i + 1 >= argc) throw UsageError("option " + io::quoted(s) + " needs a value");
+      if (a.options.count(name)) throw UsageError("option " + io::quoted(s) + " given twice");
       a.options[name] = argv[++i];
     } else {
       a.positional.push_back(s);
@@ -141,7 +142,7 @@ std::uint64_t parseCount(const std::string& option, const std::string& text, std
   }
   if (used != text.size() || used == 0 || v < min || v > max)
     throw UsageError("--" + option + ": expected an integer in [" + std::to_string(min) + ", " +
-                     std::to_string(max) + "], got '" + text + "'");
+                     std::to_string(max) + "], got " + io::quoted(text));
   return v;
 }
 
@@ -149,7 +150,8 @@ sim::Scenario loadScenario(const std::string& spec) {
   if (spec.rfind("builtin:", 0) == 0) {
     const std::string name = spec.substr(8);
     const auto* f = resources::findScenario(name);
-    if (!f) throw UsageError("unknown built-in scenario '" + name + "' (see `reckoner-cli scenarios`)");
+    if (!f)
+      throw UsageError("unknown built-in scenario " + io::quoted(name) + " (see `reckoner-cli scenarios`)");
     return io::parseScenario(f->text, spec);
   }
   return io::loadScenarioFile(spec);
@@ -206,8 +208,8 @@ int cmdRun(int argc, char** argv) {
   if (a.options.count("own-ship-filter")) {
     const auto f = sim::ownShipFilterFromName(a.options.at("own-ship-filter"));
     if (!f)
-      throw UsageError("--own-ship-filter: expected drkf, geodetic or lsq, got '" +
-                       a.options.at("own-ship-filter") + "'");
+      throw UsageError("--own-ship-filter: expected drkf, geodetic or lsq, got " +
+                       io::quoted(a.options.at("own-ship-filter")));
     filter = *f;
   }
   const std::string out = prepareOutDir(a);
@@ -357,7 +359,7 @@ int cmdMonteCarlo(int argc, char** argv) {
   std::printf("Reckoner Monte Carlo: %s, %d runs (seeds %llu-%llu) on %d threads in %.2f s\n", s.name.c_str(),
               runs, static_cast<unsigned long long>(seed),
               static_cast<unsigned long long>(seed + static_cast<std::uint64_t>(runs) - 1), threads, wall);
-  std::printf("  average NEES (11 states) %.0f%% bounds: [%.2f, %.2f]\n\n", 100.0 * m.confidence,
+  std::printf("  average NEES (%d states) %.0f%% bounds: [%.2f, %.2f]\n\n", m.neesDof, 100.0 * m.confidence,
               m.bounds.lower, m.bounds.upper);
   std::printf("  %-2s %-13s %-30s %9s %9s %8s %10s %11s %6s\n", "#", "time (s)", "sensors", "mean NEES",
               "max", "inside", "pos RMSE", "vel RMSE", "<=3sd");
@@ -427,7 +429,7 @@ double parseReal(const std::string& option, const std::string& text, double min,
   }
   if (used != text.size() || used == 0 || !std::isfinite(v) || v < min || v > max)
     throw UsageError("--" + option + ": expected a number in [" + std::to_string(min) + ", " +
-                     std::to_string(max) + "], got '" + text + "'");
+                     std::to_string(max) + "], got " + io::quoted(text));
   return v;
 }
 
@@ -444,7 +446,8 @@ int cmdSeed001(int argc, char** argv) {
   const Args a =
       parseArgs(static_cast<int>(rest.size()), rest.data(), 2,
                 {"runs", "seed", "window", "pfa", "q", "bearing-sd", "init", "correction", "jump-sd"});
-  if (!a.positional.empty()) throw UsageError("seed001: unexpected argument '" + a.positional.front() + "'");
+  if (!a.positional.empty())
+    throw UsageError("seed001: unexpected argument " + io::quoted(a.positional.front()));
   const auto opt = [&a](const std::string& k) { return a.options.count(k) > 0; };
   const int runs = opt("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 100;
   const std::uint64_t seed = opt("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : 1;
@@ -459,13 +462,13 @@ int cmdSeed001(int argc, char** argv) {
     const std::string& c = a.options.at("correction");
     using C = track::InputEstimationConfig::Correction;
     if (c != "paper" && c != "refilter" && c != "none")
-      throw UsageError("--correction: expected none, paper or refilter, got '" + c + "'");
+      throw UsageError("--correction: expected none, paper or refilter, got " + io::quoted(c));
     cfg.correction = c == "none" ? C::None : c == "paper" ? C::Paper : C::Refilter;
   }
   if (opt("init")) {
     const std::string& i = a.options.at("init");
     if (i != "paper" && i != "two-point")
-      throw UsageError("--init: expected paper or two-point, got '" + i + "'");
+      throw UsageError("--init: expected paper or two-point, got " + io::quoted(i));
     cfg.paperInitialCovariance = i == "paper";
   }
   sim::Seed001Scenario sc;
@@ -502,7 +505,8 @@ int cmdSeed001(int argc, char** argv) {
 
 int cmdSeed003(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {"runs", "alpha", "sweep", "noise", "seed"});
-  if (!a.positional.empty()) throw UsageError("seed003: unexpected argument '" + a.positional.front() + "'");
+  if (!a.positional.empty())
+    throw UsageError("seed003: unexpected argument " + io::quoted(a.positional.front()));
   const auto opt = [&a](const std::string& k) { return a.options.count(k) > 0; };
   const int runs = opt("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 50;
   const std::uint64_t seed = opt("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : 1;
@@ -562,7 +566,7 @@ double p95At(const std::vector<std::vector<double>>& runs, const std::vector<dou
 int cmdManoeuvreReport(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {"runs", "turn", "speed-change", "seed", "imo-runs"});
   if (!a.positional.empty())
-    throw UsageError("manoeuvre-report: unexpected argument '" + a.positional.front() + "'");
+    throw UsageError("manoeuvre-report: unexpected argument " + io::quoted(a.positional.front()));
   const auto opt = [&a](const std::string& k) { return a.options.count(k) > 0; };
   const int runs = opt("runs") ? static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000)) : 100;
   const std::uint64_t seed = opt("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : 1;
@@ -840,14 +844,6 @@ int cmdCompare(int argc, char** argv) {
   return 0;
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw io::InputError(path, 0, "", "cannot open: " + std::string(std::strerror(errno)));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 int cmdReplay(int argc, char** argv) {
   const Args a = parseArgs(argc, argv, 2, {"nmea", "radar", "config", "out", "assume-association"});
   if (!a.positional.empty()) throw UsageError("replay takes no positional arguments (use --nmea FILE)");
@@ -855,6 +851,7 @@ int cmdReplay(int argc, char** argv) {
   sim::ReplayOptions o;
   if (a.options.count("config")) {
     o.settings = loadScenario(a.options.at("config"));
+    o.settingsName = a.options.at("config");
     o.originFromSettings = true;
   } else {
     o.settings = loadScenario("builtin:default");
@@ -867,11 +864,12 @@ int cmdReplay(int argc, char** argv) {
   o.assumeAssociation = a.assumeAssociation;
   const std::string out = prepareOutDir(a);
   const std::string nmeaPath = a.options.at("nmea");
-  const std::string nmea = readFile(nmeaPath);
+  const std::string nmea = io::readTextFile(nmeaPath);
   std::optional<std::string> radar;
-  if (a.options.count("radar")) radar = readFile(a.options.at("radar"));
+  if (a.options.count("radar")) radar = io::readTextFile(a.options.at("radar"));
   const sim::ReplayResult r = sim::replay(nmea, nmeaPath, radar ? &*radar : nullptr,
                                           a.options.count("radar") ? a.options.at("radar") : "", o);
+  for (const auto& w : r.warnings) std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
   io::writeReplayOwnShipCsv(out + "/ownship.csv", r);
   if (radar) io::writeReplayTargetsCsv(out + "/targets.csv", r);
   io::writeTextFile(out + "/summary.json", io::replaySummaryJson(r, nmeaPath));
@@ -880,18 +878,29 @@ int cmdReplay(int argc, char** argv) {
   std::printf("Reckoner replay of %s%s%s from %s\n", nmeaPath.c_str(), radar ? " and " : "",
               radar ? a.options.at("radar").c_str() : "", sim::formatIso8601(r.utc0).c_str());
   std::printf(
-      "  NMEA: %ld lines, %ld sentences used, %ld skipped (%ld bad checksum, %ld unknown, %ld malformed, "
-      "%ld untimed, %ld out of order, %ld unusable)\n",
-      st.nmeaLines, st.sentencesUsed, st.nmeaSkipped(), st.badChecksum, st.unknownSentences, st.malformed,
-      st.untimed, st.outOfOrder, st.unusable);
+      "  NMEA: %ld lines, %ld sentences used, %ld skipped (%ld bad checksum, %ld unknown, %ld proprietary, "
+      "%ld malformed, %ld untimed, %ld time jumps, %ld unusable, %ld not GNSS fixes, %ld implausible); "
+      "%ld replayed out of file order\n",
+      st.nmeaLines, st.sentencesUsed, st.nmeaSkipped(), st.badChecksum, st.unknownSentences, st.proprietary,
+      st.malformed, st.untimed, st.timeJumps, st.unusable, st.notGnss, st.implausible, st.reordered);
   std::printf("  %ld own-ship epochs (%ld before the first fix), origin %s %s\n", st.epochs,
               st.epochsBeforeFix, io::formatLatitude(r.origin.latDeg).c_str(),
               io::formatLongitude(r.origin.lonDeg).c_str());
+  std::printf("  DRKF updates accepted/gated/failed:");
+  for (int b = 0; b < nav::kDrkfBlockCount; ++b) {
+    const auto& c = r.updates[static_cast<std::size_t>(b)];
+    std::printf(" %s %ld/%ld/%ld", nav::blockName(static_cast<nav::DrkfBlock>(b)), c.accepted, c.gated,
+                c.failed);
+  }
+  std::printf("; restarts: %ld after a gap, %ld after failures\n", st.restartsAfterGap,
+              st.restartsAfterFailure);
   if (radar)
     std::printf(
-        "  radar: %ld lines, %ld plots, %ld bad, %ld out of order; %ld tracks started, %ld confirmed (%s)\n",
-        st.radarLines, st.radarPlots, st.radarBad, st.radarOutOfOrder, r.tracking.tracksStarted,
-        r.tracking.tracksConfirmed, o.assumeAssociation ? "association by target_id" : "nearest neighbour");
+        "  radar: %ld lines, %ld plots, %ld bad, %ld duplicates, %ld time jumps; %ld tracks started, %ld "
+        "confirmed (%s)\n",
+        st.radarLines, st.radarPlots, st.radarBad, st.radarDuplicates, st.radarTimeJumps,
+        r.tracking.tracksStarted, r.tracking.tracksConfirmed,
+        o.assumeAssociation ? "association by target_id" : "nearest neighbour");
   if (!r.own.empty()) {
     const auto& last = r.own.back();
     std::printf("  final estimate %s %s, position sd %.1f m\n",
@@ -912,7 +921,7 @@ int cmdExport(int argc, char** argv) {
       a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
   const std::string date = a.options.count("date") ? a.options.at("date") : "2026-01-01";
   const auto utc0 = sim::parseIso8601(date + "T00:00:00Z");
-  if (!utc0) throw UsageError("--date: expected YYYY-MM-DD, got '" + date + "'");
+  if (!utc0) throw UsageError("--date: expected YYYY-MM-DD, got " + io::quoted(date));
   const std::string out = prepareOutDir(a);
   const auto e = sim::exportRun(s, seed, *utc0);
   io::writeTextFile(out + "/ownship.nmea", e.nmea);
@@ -966,7 +975,7 @@ std::pair<double, double> parsePair(const std::string& option, const std::string
     return {a, b};
   } catch (const std::exception&) {
     throw UsageError("--" + option + ": expected two numbers separated by '" + std::string(1, sep) +
-                     "', got '" + text + "'");
+                     "', got " + io::quoted(text));
   }
 }
 
@@ -1112,7 +1121,8 @@ int cmdChart(int argc, char** argv) {
   const std::string sub = argv[2];
   if (sub == "render") return cmdChartRender(argc, argv);
   if (sub == "pick") return cmdChartPick(argc, argv);
-  if (sub != "info") throw UsageError("unknown chart subcommand '" + sub + "' (known: info, render, pick)");
+  if (sub != "info")
+    throw UsageError("unknown chart subcommand " + io::quoted(sub) + " (known: info, render, pick)");
   const Args a = parseArgs(argc, argv, 3, {});
   if (a.positional.empty()) throw UsageError("chart info needs at least one PATH (a .000 cell or a folder)");
   const auto start = std::chrono::steady_clock::now();
@@ -1178,19 +1188,19 @@ int main(int argc, char** argv) {
     if (cmd == "seed001") return cmdSeed001(argc, argv);
     if (cmd == "seed003") return cmdSeed003(argc, argv);
     if (cmd == "manoeuvre-report") return cmdManoeuvreReport(argc, argv);
-    throw UsageError("unknown command '" + cmd + "'");
+    throw UsageError("unknown command " + io::quoted(cmd));
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());
+    std::fprintf(stderr, "reckoner-cli: error: %s\n", io::oneLine(e.what()).c_str());
     if (std::string(e.what()).find("usage") == std::string::npos && argc < 2) std::fputs(kUsage, stderr);
     return 2;
   } catch (const io::InputError& e) {
     std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());
     return 2;
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "reckoner-cli: error: %s\n", e.what());
+    std::fprintf(stderr, "reckoner-cli: error: %s\n", io::oneLine(e.what()).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "reckoner-cli: failed: %s\n", e.what());
+    std::fprintf(stderr, "reckoner-cli: failed: %s\n", io::oneLine(e.what()).c_str());
     return 1;
   }
 }

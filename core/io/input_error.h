@@ -1,8 +1,12 @@
 #pragma once
 // The error every file reader throws: one line naming the file, the line (when known), the field and
 // the problem, e.g. "test1.json:14: sensors.gps.position_variance_m2: must be positive, got -5".
+// Whatever the parts hold, what() is one line (io/error_line.h): input quoted in a message should go
+// through io::quoted(), and the composed line is made safe again here.
 #include <stdexcept>
 #include <string>
+
+#include "io/error_line.h"
 
 namespace reckoner::io {
 
@@ -21,11 +25,11 @@ class InputError : public std::runtime_error {
  private:
   static std::string compose(const std::string& file, int line, const std::string& field,
                              const std::string& msg) {
-    std::string s = file;
+    std::string s = oneLine(file, kMaxQuotedChars);
     if (line > 0) s.append(1, ':').append(std::to_string(line));
     s.append(": ");
-    if (!field.empty()) s.append(field).append(": ");
-    s.append(msg);
+    if (!field.empty()) s.append(oneLine(field, kMaxQuotedChars)).append(": ");
+    s.append(oneLine(msg));
     return s;
   }
   std::string file_;

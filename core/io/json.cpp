@@ -3,6 +3,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <unordered_set>
+
+#include "io/error_line.h"
+#include "io/utf8.h"
 
 namespace reckoner::io {
 
@@ -104,7 +108,7 @@ class Parser {
           v.type = JsonValue::Type::Number;
           v.number = number();
         } else {
-          fail(std::string("unexpected character '") + peek() + "', expected a value");
+          fail("unexpected character " + quoted(std::string_view(&s_[pos_], 1)) + ", expected a value");
         }
     }
     return v;
@@ -118,13 +122,13 @@ class Parser {
       get();
       return;
     }
+    std::unordered_set<std::string> keys;  // a hash set: a file of 100,000 keys is checked in O(n)
     while (true) {
       skipWs();
       if (peek() != '"') fail("expected a string key in object");
       const int keyLine = line_, keyCol = col_;
       std::string key = string();
-      for (const auto& m : v.object)
-        if (m.first == key) throw JsonParseError(keyLine, keyCol, "duplicate key \"" + key + "\"");
+      if (!keys.insert(key).second) throw JsonParseError(keyLine, keyCol, "duplicate key " + quoted(key, 80));
       skipWs();
       if (get() != ':') fail("expected ':' after object key");
       skipWs();
@@ -198,6 +202,15 @@ class Parser {
       const char c = get();
       if (c == '"') return out;
       if (static_cast<unsigned char>(c) < 0x20) fail("control character in string (escape it)");
+      if (static_cast<unsigned char>(c) >= 0x80) {
+        // JSON text is UTF-8 (RFC 8259 section 8.1): a byte that does not start a well-formed sequence
+        // is an error, not a character.
+        const std::size_t n = utf8SequenceLength(s_, pos_ - 1);
+        if (n == 0) fail("invalid UTF-8 in string (byte " + quoted(std::string_view(&s_[pos_ - 1], 1)) + ")");
+        out.append(s_.substr(pos_ - 1, n));
+        pos_ += n - 1;  // one character, one column: get() counted its first byte
+        continue;
+      }
       if (c != '\\') {
         out += c;
         continue;
@@ -242,7 +255,7 @@ class Parser {
           break;
         }
         default:
-          fail(std::string("invalid escape '\\") + e + "'");
+          fail("invalid escape " + quoted(std::string("\\") + e));
       }
     }
   }
@@ -287,7 +300,10 @@ JsonValue parseJson(std::string_view text) {
   return Parser(text).document();
 }
 
-std::string jsonQuote(std::string_view s) {
+std::string jsonQuote(std::string_view text) {
+  // JSON is UTF-8: a string from outside (a file name, a scenario name) with bytes that are not UTF-8
+  // is written with U+FFFD in their place, never as invalid JSON.
+  const std::string s = validUtf8(text);
   std::string out = "\"";
   for (const char c : s) {
     switch (c) {

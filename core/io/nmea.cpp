@@ -1,9 +1,12 @@
 #include "io/nmea.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <vector>
+
+#include "io/error_line.h"
 
 namespace reckoner::io::nmea {
 namespace {
@@ -35,15 +38,34 @@ std::optional<double> number(std::string_view f) {
 double required(const std::vector<std::string_view>& f, std::size_t i, const char* what) {
   if (i >= f.size()) throw Bad{std::string(what) + ": field missing"};
   const auto v = number(f[i]);
-  if (!v) throw Bad{std::string(what) + ": not a number '" + std::string(f[i]) + "'"};
+  if (!v) throw Bad{std::string(what) + ": not a number " + quoted(f[i], 40)};
   return *v;
+}
+
+/// An integer field in [lo, hi] (checked before any conversion: a cast of 1e300 to int is undefined).
+int integer(const std::vector<std::string_view>& f, std::size_t i, const char* what, int lo, int hi) {
+  const double v = required(f, i, what);
+  if (v < lo || v > hi || v != std::floor(v))
+    throw Bad{std::string(what) + ": must be an integer in [" + std::to_string(lo) + ", " +
+              std::to_string(hi) + "], got " + quoted(f[i], 40)};
+  return static_cast<int>(v);
+}
+
+/// The FAA mode indicator of NMEA 2.3 and later (RMC, GLL, VTG, GNS): one letter, absent in older
+/// talkers.
+std::optional<char> modeIndicator(const std::vector<std::string_view>& f, std::size_t i, const char* what) {
+  if (i >= f.size() || f[i].empty()) return std::nullopt;
+  const std::string_view m = f[i];
+  if (m.size() != 1 || std::string_view("ADEFMNPRS").find(m[0]) == std::string_view::npos)
+    throw Bad{std::string(what) + ": unknown mode indicator " + quoted(m, 8)};
+  return m[0];
 }
 
 std::optional<double> optionalNumber(const std::vector<std::string_view>& f, std::size_t i,
                                      const char* what) {
   if (i >= f.size() || f[i].empty()) return std::nullopt;
   const auto v = number(f[i]);
-  if (!v) throw Bad{std::string(what) + ": not a number '" + std::string(f[i]) + "'"};
+  if (!v) throw Bad{std::string(what) + ": not a number " + quoted(f[i], 40)};
   return v;
 }
 
@@ -55,7 +77,7 @@ double angle(const std::vector<std::string_view>& f, std::size_t i, int degreeDi
   const auto deg = number(f[i].substr(0, static_cast<std::size_t>(degreeDigits)));
   const auto min = number(f[i].substr(static_cast<std::size_t>(degreeDigits)));
   if (!deg || !min || *min < 0.0 || *min >= 60.0 || *deg < 0.0)
-    throw Bad{std::string(what) + ": malformed '" + std::string(f[i]) + "'"};
+    throw Bad{std::string(what) + ": malformed " + quoted(f[i], 40)};
   const double v = *deg + *min / 60.0;
   if (v > (degreeDigits == 2 ? 90.0 : 180.0)) throw Bad{std::string(what) + ": out of range"};
   if (f[i + 1] == std::string_view(&pos, 1)) return v;
@@ -66,7 +88,7 @@ double angle(const std::vector<std::string_view>& f, std::size_t i, int degreeDi
 double time(const std::vector<std::string_view>& f, std::size_t i) {
   if (i >= f.size()) throw Bad{"time: field missing"};
   const auto t = parseTimeOfDay(f[i]);
-  if (!t) throw Bad{"time: malformed '" + std::string(f[i]) + "'"};
+  if (!t) throw Bad{"time: malformed " + quoted(f[i], 40)};
   return *t;
 }
 
@@ -92,18 +114,22 @@ Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
     r.cogTrueDeg = optionalNumber(f, 8, "RMC course");
     if (!f[9].empty()) {
       if (f[9].size() != 6) throw Bad{"RMC date: must be ddmmyy"};
-      const auto d = number(f[9].substr(0, 2)), m = number(f[9].substr(2, 2)), y = number(f[9].substr(4, 2));
-      if (!d || !m || !y) throw Bad{"RMC date: malformed"};
-      const int yy = static_cast<int>(*y);
-      r.date = checkedDate(yy < 80 ? 2000 + yy : 1900 + yy, static_cast<int>(*m), static_cast<int>(*d));
+      int dmy[3] = {0, 0, 0};
+      for (std::size_t k = 0; k < 3; ++k) {
+        const char a = f[9][2 * k], b = f[9][2 * k + 1];
+        if (a < '0' || a > '9' || b < '0' || b > '9') throw Bad{"RMC date: malformed " + quoted(f[9], 40)};
+        dmy[k] = (a - '0') * 10 + (b - '0');
+      }
+      r.date = checkedDate(dmy[2] < 80 ? 2000 + dmy[2] : 1900 + dmy[2], dmy[1], dmy[0]);
     }
+    r.mode = modeIndicator(f, 12, "RMC mode");
     return r;
   }
   if (type == "GGA") {
     Gga g;
     g.timeOfDayS = time(f, 1);
     if (f.size() < 9) throw Bad{"GGA: needs at least 8 fields"};
-    g.quality = static_cast<int>(required(f, 6, "GGA quality"));
+    g.quality = integer(f, 6, "GGA quality", 0, 9);
     if (g.quality > 0) {
       g.latDeg = angle(f, 2, 2, 'N', 'S', "GGA latitude");
       g.lonDeg = angle(f, 4, 3, 'E', 'W', "GGA longitude");
@@ -117,6 +143,7 @@ Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
     v.cogTrueDeg = optionalNumber(f, 1, "VTG course");
     v.sogKn = required(f, 5, "VTG speed");
     if (v.sogKn < 0.0) throw Bad{"VTG speed: negative"};
+    v.mode = modeIndicator(f, 9, "VTG mode");
     return v;
   }
   if (type == "GLL") {
@@ -125,6 +152,7 @@ Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
     g.lonDeg = angle(f, 3, 3, 'E', 'W', "GLL longitude");
     if (f.size() > 5 && !f[5].empty()) g.timeOfDayS = time(f, 5);
     if (f.size() > 6) g.valid = f[6] == "A";
+    g.mode = modeIndicator(f, 7, "GLL mode");
     return g;
   }
   if (type == "HDT") {
@@ -155,9 +183,8 @@ Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
   if (type == "ZDA") {
     Zda z;
     z.timeOfDayS = time(f, 1);
-    z.date = checkedDate(static_cast<int>(required(f, 4, "ZDA year")),
-                         static_cast<int>(required(f, 3, "ZDA month")),
-                         static_cast<int>(required(f, 2, "ZDA day")));
+    z.date = checkedDate(integer(f, 4, "ZDA year", 1980, 2200), integer(f, 3, "ZDA month", 1, 12),
+                         integer(f, 2, "ZDA day", 1, 31));
     return z;
   }
   throw Bad{"unknown"};  // not reached: the caller checks the type
@@ -187,10 +214,20 @@ const char* errorName(Error e) {
       return "bad_checksum";
     case Error::Unknown:
       return "unknown";
+    case Error::Proprietary:
+      return "proprietary";
     case Error::Malformed:
       return "malformed";
   }
   return "?";
+}
+
+bool gnssFix(std::optional<char> mode) {
+  return !mode || *mode == 'A' || *mode == 'D' || *mode == 'F' || *mode == 'R' || *mode == 'P';
+}
+
+bool gnssFix(int q) {
+  return (q >= 1 && q <= 5) || q == 9;
 }
 
 std::optional<double> parseTimeOfDay(std::string_view f) {
@@ -245,9 +282,14 @@ ParseResult parse(std::string_view line) {
   const std::string_view body = line.substr(1, star - 1);
   const auto fields = split(body);
   const std::string_view address = fields[0];
+  if (!address.empty() && address[0] == 'P') {  // $P + manufacturer code: proprietary, not ours to read
+    r.error = Error::Proprietary;
+    r.reason = std::string(address.substr(0, std::min<std::size_t>(address.size(), 4)));
+    return r;
+  }
   if (address.size() != 5) {
-    r.error = address.size() > 5 && address[0] == 'P' ? Error::Unknown : Error::Malformed;
-    r.reason = "address '" + std::string(address) + "'";
+    r.error = Error::Malformed;
+    r.reason = "address " + quoted(address, 20);
     return r;
   }
   const std::string_view type = address.substr(2);

@@ -20,21 +20,25 @@ struct Rmc {
   double latDeg = 0.0, lonDeg = 0.0;
   std::optional<double> sogKn, cogTrueDeg;
   std::optional<Date> date;
+  std::optional<char> mode;  ///< NMEA 2.3 mode indicator (gnssFix() says which are fixes)
 };
 struct Gga {
   double timeOfDayS = 0.0;
   double latDeg = 0.0, lonDeg = 0.0;
-  int quality = 0;  ///< 0: no fix
+  int quality =
+      0;  ///< 0 no fix, 1 GPS, 2 DGPS, 3 PPS, 4 RTK, 5 float RTK, 6 estimated, 7 manual, 8 simulator
   std::optional<double> hdop;
 };
 struct Vtg {
   std::optional<double> cogTrueDeg;
   double sogKn = 0.0;
+  std::optional<char> mode;
 };
 struct Gll {
   double latDeg = 0.0, lonDeg = 0.0;
   std::optional<double> timeOfDayS;
   bool valid = true;  ///< status A (absent status in old talkers: valid)
+  std::optional<char> mode;
 };
 struct Hdt {
   double headingDeg = 0.0;
@@ -59,7 +63,8 @@ struct Sentence {
   Body body;
 };
 
-enum class Error : std::uint8_t { None, Empty, BadChecksum, Unknown, Malformed };
+/// Proprietary: a $P sentence (manufacturer-specific; counted apart from unknown ones).
+enum class Error : std::uint8_t { None, Empty, BadChecksum, Unknown, Proprietary, Malformed };
 const char* errorName(Error e);
 
 struct ParseResult {
@@ -67,6 +72,14 @@ struct ParseResult {
   Error error = Error::None;
   std::string reason;  ///< for Malformed and BadChecksum
 };
+
+/// Whether a mode indicator (absent: an older talker, taken as a fix) marks a GNSS fix: A autonomous,
+/// D differential, F float RTK, R RTK, P precise. E (estimated, dead reckoning), M (manual input),
+/// S (simulator) and N (not valid) are not.
+bool gnssFix(std::optional<char> mode);
+/// Whether a GGA quality is a GNSS fix: 1 GPS, 2 DGPS, 3 PPS, 4 RTK, 5 float RTK, and 9 (SBAS, as some
+/// receivers send it). 0 invalid, 6 estimated, 7 manual and 8 simulator are not.
+bool gnssFix(int ggaQuality);
 
 /// Parses one line (trailing CR/LF allowed).
 ParseResult parse(std::string_view line);

@@ -9,6 +9,7 @@
 #include "io/input_error.h"
 #include "io/json.h"
 #include "io/track_output.h"
+#include "sim/simulation_engine.h"
 
 namespace reckoner::io {
 
@@ -25,14 +26,6 @@ std::string ownShipCsvLine(const sim::OwnShipRow& r) {
                 r.estVxMps, r.estVyMps, r.sdXM, r.sdYM, r.sdVxMps, r.sdVyMps, r.estLatDeg, r.estLonDeg,
                 r.nees, sim::sensorLabel(r.sensors).c_str(), r.rowsApplied);
   return buf;
-}
-
-void writeTextFile(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(path, 0, "", std::string("cannot write: ") + std::strerror(errno));
-  out << text;
-  out.flush();
-  if (!out) throw InputError(path, 0, "", "write failed");
 }
 
 void writeOwnShipCsv(const std::string& path, std::span<const sim::OwnShipRow> rows) {
@@ -67,7 +60,7 @@ void scenarioHeader(JsonWriter& w, const sim::Scenario& s) {
   w.key("scenario").value(s.name);
   w.key("duration_s").value(toSeconds(s.durationUs));
   w.key("step_s").value(toSeconds(s.stepUs));
-  w.key("state_dim").value(metrics::kDrkfNeesDim);
+  w.key("state_dim").value(nav::neesDof(sim::drkfConfigFor(s).process));
 }
 
 }  // namespace

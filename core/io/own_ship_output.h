@@ -3,6 +3,7 @@
 #include <span>
 #include <string>
 
+#include "io/text_file.h"
 #include "metrics/own_ship_stats.h"
 #include "sim/scenario_run.h"
 
@@ -12,9 +13,6 @@ namespace reckoner::io {
 std::string ownShipCsvHeader();
 /// One ownship.csv line (without newline).
 std::string ownShipCsvLine(const sim::OwnShipRow& r);
-
-/// Writes text to a file, creating nothing but the file; throws InputError naming it on failure.
-void writeTextFile(const std::string& path, const std::string& text);
 
 void writeOwnShipCsv(const std::string& path, std::span<const sim::OwnShipRow> rows);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -13,6 +14,8 @@
 #include "common/angles.h"
 #include "common/units.h"
 #include "io/json.h"
+#include "io/text_file.h"
+#include "sim/scenario_limits.h"
 
 namespace reckoner::io {
 namespace {
@@ -116,12 +119,40 @@ class Fields {
   std::vector<bool> used_;
 };
 
+/// A time of the run, in seconds in [0, duration_s] (compared in seconds: 1e13 s does not fit the
+/// microsecond clock).
 TimeUs timeField(Fields& f, std::string_view key, TimeUs durationUs) {
   const JsonValue& v = f.require(key);
   const double s = f.checkedNumber(v, f.pathOf(key), Fields::Check::NonNegative);
-  if (durationUs > 0 && fromSeconds(s) > durationUs)
+  if (s > toSeconds(durationUs))
     f.fail(v, f.pathOf(key), "time " + formatNumber(s) + " s lies beyond duration_s");
   return fromSeconds(s);
+}
+
+/// The line of the value at a checkScenario path ("sensors.gps.schedule[1].t_s"): the deepest value
+/// of the path the file has.
+int lineOfPath(const JsonValue& root, std::string_view path) {
+  const JsonValue* at = &root;
+  std::size_t i = 0;
+  while (i < path.size() && at) {
+    if (path[i] == '.' && ++i == path.size()) break;
+    if (path[i] == '[') {
+      const std::size_t close = path.find(']', i);
+      if (close == std::string_view::npos || !at->isArray()) break;
+      std::size_t k = 0;
+      const auto [p, ec] = std::from_chars(path.data() + i + 1, path.data() + close, k);
+      if (ec != std::errc() || k >= at->array.size()) break;
+      at = &at->array[k];
+      i = close + 1;
+      continue;
+    }
+    const std::size_t end = std::min(path.find('.', i), path.find('[', i));
+    const JsonValue* next = at->isObject() ? at->find(path.substr(i, end - i)) : nullptr;
+    if (!next) break;
+    at = next;
+    i = end == std::string_view::npos ? path.size() : end;
+  }
+  return at ? at->line : root.line;
 }
 
 /// Gauss-Markov block given by its variance (Table I's units) or sigma, plus beta.
@@ -267,7 +298,7 @@ void readSensors(Fields& top, sim::Scenario& s) {
   for (const auto& [key, value] : sensorsJson.object) {
     if (key != "gps" && key != "loran_c" && key != "speedlog" && key != "gyro" && key != "radar")
       sensorsF.fail(value, "sensors." + key,
-                    "unknown sensor '" + key + "' (known: gps, loran_c, speedlog, gyro, radar)");
+                    "unknown sensor " + io::quoted(key) + " (known: gps, loran_c, speedlog, gyro, radar)");
   }
 }
 
@@ -477,7 +508,7 @@ void readTracker(Fields& top, sim::Scenario& s) {
     if (!ch->isArray()) f.fail(*ch, f.pathOf("filter_changes"), "must be an array of {\"t_s\", \"filter\"}");
     for (std::size_t i = 0; i < ch->array.size(); ++i) {
       Fields g(top.file(), ch->array[i], "tracker.filter_changes[" + std::to_string(i) + "]");
-      const TimeUs t = fromSeconds(g.number("t_s", Fields::Check::NonNegative));
+      const TimeUs t = timeField(g, "t_s", s.durationUs);
       if (!tr.kindChanges.empty() && t <= tr.kindChanges.back().first)
         g.fail(*g.get("t_s"), g.pathOf("t_s"), "must increase from change to change");
       const JsonValue& k = g.require("filter");
@@ -551,6 +582,7 @@ void readFilter(Fields& top, sim::Scenario& s) {
 }  // namespace
 
 sim::Scenario parseScenario(std::string_view text, const std::string& sourceName) {
+  stripByteOrderMark(text);
   JsonValue root;
   try {
     root = parseJson(text);
@@ -577,10 +609,12 @@ sim::Scenario parseScenario(std::string_view text, const std::string& sourceName
     o.finish();
   }
   const double duration = top.number("duration_s", Fields::Check::Positive);
-  if (duration > 30.0 * 86400.0) top.fail(*top.get("duration_s"), "duration_s", "must not exceed 30 days");
+  if (duration > sim::limits::kMaxDurationS)
+    top.fail(*top.get("duration_s"), "duration_s", "must not exceed 30 days, got " + formatNumber(duration));
   s.durationUs = fromSeconds(duration);
   const double step = top.numberOr("step_s", 1.0, Fields::Check::Positive);
-  if (fromSeconds(step) <= 0) top.fail(*top.get("step_s"), "step_s", "must be at least 1 microsecond");
+  if (step < sim::limits::kStepS.lo || step > sim::limits::kStepS.hi)
+    top.fail(*top.get("step_s"), "step_s", "must lie in [0.001, 3600] s, got " + formatNumber(step));
   s.stepUs = fromSeconds(step);
   if (const JsonValue* seed = top.get("seed")) {
     if (!seed->isNumber() || seed->number < 0 || seed->number > 9007199254740992.0 ||
@@ -603,18 +637,10 @@ sim::Scenario parseScenario(std::string_view text, const std::string& sourceName
   if (const std::string problem = sim::checkScenario(s); !problem.empty()) {
     const auto colon = problem.find(": ");
     if (colon == std::string::npos) throw InputError(sourceName, 0, "", problem);
-    throw InputError(sourceName, 0, problem.substr(0, colon), problem.substr(colon + 2));
+    const std::string field = problem.substr(0, colon);
+    throw InputError(sourceName, lineOfPath(root, field), field, problem.substr(colon + 2));
   }
   return s;
-}
-
-std::string readTextFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "", std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError(path, 0, "", "read error");
-  return ss.str();
 }
 
 sim::Scenario loadScenarioFile(const std::string& path) {

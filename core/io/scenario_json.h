@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "io/input_error.h"
+#include "io/text_file.h"
 #include "sim/scenario.h"
 
 namespace reckoner::io {
@@ -24,8 +25,5 @@ std::string writeScenario(const sim::Scenario& s);
 /// Writes writeScenario(s) to path (through a temporary file, so a failed write leaves the old file).
 /// Throws InputError naming the file.
 void saveScenarioFile(const sim::Scenario& s, const std::string& path);
-
-/// Reads a whole text file; throws InputError naming the file when it cannot.
-std::string readTextFile(const std::string& path);
 
 }  // namespace reckoner::io

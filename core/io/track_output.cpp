@@ -90,7 +90,8 @@ void writeReplayTargetsCsv(const std::string& path, const sim::ReplayResult& r) 
     std::snprintf(head, sizeof head, "%.6f,%s,%d,", toSeconds(t.timeUs),
                   sim::formatIso8601(r.trackRowUtc[i]).c_str(), t.trackId);
     std::string s = head;
-    if (t.targetId >= 0) s.append(std::to_string(t.targetId));
+    if (t.targetId >= 0 && static_cast<std::size_t>(t.targetId) < r.targetLabels.size())
+      s.append(r.targetLabels[static_cast<std::size_t>(t.targetId)]);
     s += ',';
     s.append(track::trackStatusName(t.status));
     appendNumber(s, t.estXM, "%.3f");
@@ -128,23 +129,50 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   n("skipped", s.nmeaSkipped());
   n("bad_checksum", s.badChecksum);
   n("unknown", s.unknownSentences);
+  n("proprietary", s.proprietary);
   n("malformed", s.malformed);
   n("untimed", s.untimed);
-  n("out_of_order", s.outOfOrder);
+  n("time_jumps", s.timeJumps);
   n("unusable", s.unusable);
+  n("not_gnss", s.notGnss);
+  n("implausible", s.implausible);
+  n("reordered", s.reordered);
+  n("outside_frame", s.outsideFrame);
   n("epochs", s.epochs);
   n("epochs_before_fix", s.epochsBeforeFix);
+  n("epochs_awaiting_fix", s.epochsAwaitingFix);
+  w.endObject();
+  w.key("own_ship_filter").beginObject();
+  w.key("updates").beginObject();
+  for (int b = 0; b < nav::kDrkfBlockCount; ++b) {
+    const sim::SensorUpdateCounts& c = r.updates[static_cast<std::size_t>(b)];
+    w.key(nav::blockName(static_cast<nav::DrkfBlock>(b))).beginObject();
+    n("accepted", c.accepted);
+    n("gated", c.gated);
+    n("failed", c.failed);
+    w.endObject();
+  }
+  w.endObject();
+  w.key("restarts").beginObject();
+  n("after_gap", s.restartsAfterGap);
+  n("after_failure", s.restartsAfterFailure);
+  w.endObject();
   w.endObject();
   w.key("radar").beginObject();
   n("lines", s.radarLines);
   n("plots", s.radarPlots);
   n("bad", s.radarBad);
-  n("out_of_order", s.radarOutOfOrder);
+  n("duplicates", s.radarDuplicates);
+  n("time_jumps", s.radarTimeJumps);
+  n("reordered", s.radarReordered);
   n("before_fix", s.radarBeforeFix);
   n("tracks_started", r.tracking.tracksStarted);
   n("tracks_confirmed", r.tracking.tracksConfirmed);
   n("tracks_lost", r.tracking.tracksLost);
   w.endObject();
+  w.key("warnings").beginArray();
+  for (const auto& warning : r.warnings) w.value(warning);
+  w.endArray();
   w.endObject();
   return w.str();
 }

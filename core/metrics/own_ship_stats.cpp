@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "navigation/drkf.h"
+#include "sim/simulation_engine.h"
+
 namespace reckoner::metrics {
 namespace {
 
@@ -68,7 +71,8 @@ MonteCarloSummary summariseMonteCarlo(const sim::Scenario& scenario, std::span<c
   MonteCarloSummary m;
   m.runs = static_cast<int>(runs.size());
   m.confidence = confidence;
-  m.bounds = est::averageNeesBounds(kDrkfNeesDim, m.runs, confidence);
+  m.neesDof = nav::neesDof(sim::drkfConfigFor(scenario).process);
+  m.bounds = est::averageNeesBounds(m.neesDof, m.runs, confidence);
   const double n = static_cast<double>(runs.size());
   auto& s = m.series;
   for (std::size_t k = 0; k < steps; ++k) {

@@ -10,8 +10,6 @@
 
 namespace reckoner::metrics {
 
-inline constexpr int kDrkfNeesDim = 11;
-
 struct PhaseStats {
   Phase phase;
   int steps = 0;
@@ -46,7 +44,8 @@ struct MonteCarloPhase {
 struct MonteCarloSummary {
   int runs = 0;
   double confidence = 0.95;
-  est::ChiSquareBounds bounds;  ///< for the average of `runs` NEES values of dimension 11
+  int neesDof = 11;             ///< dimension of the DRKF NEES (nav::neesDof of the scenario)
+  est::ChiSquareBounds bounds;  ///< for the average of `runs` NEES values of dimension neesDof
   MonteCarloSeries series;
   std::vector<MonteCarloPhase> phases;
   bool allPhasesInside = false;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <variant>
+#include <vector>
 
 #include "common/angles.h"
 #include "estimation/chi_square.h"
@@ -87,6 +88,44 @@ Covariance initialCovariance(const ProcessParams& p, double positionSdM, double 
   sd[kLoranX] = sd[kLoranY] = std::max(p.loranError.sigma, kFloor);
   sd[kLogBias] = std::max(p.speedlogError.sigma, kFloor);
   return sd.cwiseAbs2().asDiagonal();
+}
+
+std::array<bool, kStateDim> neesStates(const ProcessParams& p) {
+  std::array<bool, kStateDim> keep{};
+  keep.fill(true);
+  const auto drop = [&](const est::GaussMarkov& gm, std::initializer_list<int> states) {
+    if (gm.sigma > 0.0) return;
+    for (int i : states) keep[static_cast<std::size_t>(i)] = false;
+  };
+  drop(p.current, {kCurX, kCurY});
+  drop(p.acceleration, {kAccX, kAccY});
+  drop(p.loranError, {kLoranX, kLoranY});
+  drop(p.speedlogError, {kLogBias});
+  return keep;
+}
+
+int neesDof(const ProcessParams& p) {
+  const auto keep = neesStates(p);
+  return static_cast<int>(std::count(keep.begin(), keep.end(), true));
+}
+
+double drkfNees(const State& err, const Covariance& P, const ProcessParams& p) {
+  const auto keep = neesStates(p);
+  const int n = static_cast<int>(std::count(keep.begin(), keep.end(), true));
+  if (n == kStateDim) return est::nees<kStateDim>(err, P);
+  std::vector<int> idx;
+  for (int i = 0; i < kStateDim; ++i)
+    if (keep[static_cast<std::size_t>(i)]) idx.push_back(i);
+  Eigen::VectorXd e(n);
+  Eigen::MatrixXd S(n, n);
+  for (int a = 0; a < n; ++a) {
+    e[a] = err[idx[static_cast<std::size_t>(a)]];
+    for (int b = 0; b < n; ++b)
+      S(a, b) = P(idx[static_cast<std::size_t>(a)], idx[static_cast<std::size_t>(b)]);
+  }
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(S);
+  if (!est::ldltPositiveDefinite(ldlt)) return std::numeric_limits<double>::quiet_NaN();
+  return e.dot(ldlt.solve(e));
 }
 
 Drkf::Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const Belief& initial, TimeUs t0)

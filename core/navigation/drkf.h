@@ -60,6 +60,18 @@ struct DrkfCounters {
 /// stationary standard deviation.
 drkf::Covariance initialCovariance(const drkf::ProcessParams& p, double positionSdM, double velocitySdMps);
 
+/// The states a DRKF NEES measures: all but the Gauss-Markov states whose sigma is 0. The model says
+/// those are exactly zero; their variance is initialCovariance()'s 1e-12 floor, against which any
+/// rounding in their estimate would dominate the NEES (or make P look singular: NaN). Indexed by
+/// drkf::StateIndex.
+std::array<bool, drkf::kStateDim> neesStates(const drkf::ProcessParams& p);
+/// How many states neesStates() keeps: the dimension of the DRKF's NEES (11 with every sensor error
+/// modelled, the chi-square degrees of freedom of its bounds).
+int neesDof(const drkf::ProcessParams& p);
+/// NEES (x_true - x)^T P^-1 (x_true - x) over neesStates(p), by LDLT; NaN when P restricted to them is
+/// not positive definite. err is x_true - x.
+double drkfNees(const drkf::State& err, const drkf::Covariance& P, const drkf::ProcessParams& p);
+
 /// Position and velocity over ground [x, y, vx, vy] of a DRKF belief, and their covariance (what a
 /// TTKF consumes and what the display shows).
 est::Vec<4> groundStateOf(const drkf::Belief& b);
@@ -92,6 +104,7 @@ class Drkf {
   /// std::invalid_argument for a non-finite belief.
   void setBelief(const drkf::Belief& b, TimeUs t);
   [[nodiscard]] const DrkfCounters& counters() const { return counters_; }
+  [[nodiscard]] const DrkfConfig& config() const { return config_; }
   [[nodiscard]] const geo::LocalFrame& frame() const { return frame_; }
 
  private:

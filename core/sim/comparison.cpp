@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "io/error_line.h"
 #include "sim/scenario_run.h"
 #include "sim/simulation_engine.h"
 #include "tracking/coupled_drttkf.h"
@@ -151,7 +152,8 @@ RunOutcome runOnce(const Scenario& s, std::uint64_t seed, bool timePropagation) 
 }  // namespace
 
 Scenario withTargetCount(const Scenario& s, int n) {
-  if (s.targets.empty()) throw std::invalid_argument("compare: scenario '" + s.name + "' has no targets");
+  if (s.targets.empty())
+    throw std::invalid_argument("compare: scenario " + io::quoted(s.name) + " has no targets");
   Scenario out = s;
   out.targets.clear();
   const int m = static_cast<int>(s.targets.size());
@@ -184,14 +186,15 @@ Scenario withTargetCount(const Scenario& s, int n) {
 
 std::vector<ComparisonRow> compareCoupled(const Scenario& s, const std::vector<int>& counts, int runs,
                                           int threads, std::uint64_t seed) {
-  if (!s.radar.fitted) throw std::invalid_argument("compare: scenario '" + s.name + "' has no radar");
+  if (!s.radar.fitted)
+    throw std::invalid_argument("compare: scenario " + io::quoted(s.name) + " has no radar");
   if (runs <= 0 || threads <= 0) throw std::invalid_argument("compare: runs and threads must be positive");
   std::vector<ComparisonRow> rows;
   for (int n : counts) {
     if (n <= 0) throw std::invalid_argument("compare: target counts must be positive");
     const Scenario sn = withTargetCount(s, n);
     if (const std::string problem = checkScenario(sn); !problem.empty())
-      throw std::invalid_argument("scenario '" + sn.name + "': " + problem);
+      throw std::invalid_argument("scenario " + io::quoted(sn.name) + ": " + problem);
     std::vector<RunOutcome> outs(static_cast<std::size_t>(runs));
     // Run 0 alone, so that its timings are not disturbed by the other threads.
     outs[0] = runOnce(sn, seed, true);

@@ -49,7 +49,7 @@ ExportedRun exportRun(const Scenario& s, std::uint64_t seed, UtcUs utc0) {
   char buf[256];
   while (!engine.finished()) {
     const SimFrame f = engine.step();
-    out.truth.rows.push_back(makeRow(f, frame));
+    out.truth.rows.push_back(makeRow(f, frame, engine.drkf().config().process));
     appendSweepRows(f, s, frame, out.truth.trackRows, out.truth.targetRows);
     // Own-ship samples grouped by epoch (they are stamped with their epoch).
     for (const auto& u : f.updates) {

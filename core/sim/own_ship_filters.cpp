@@ -94,7 +94,7 @@ OwnShipFilterRun runOwnShipFilters(const Scenario& scenario, std::uint64_t seed)
   Seed002Filters seed002(scenario, engine.drkf().belief(), geo);
   while (!engine.finished()) {
     const SimFrame f = engine.step();
-    run.rows.push_back(makeRow(f, geo));
+    run.rows.push_back(makeRow(f, geo, engine.drkf().config().process));
     appendSweepRows(f, scenario, geo, run.trackRows, run.targetRows);
     seed002.feed(f);
     OwnShipRow d = groundRow(f, {nav::groundStateOf(f.estimate), nav::groundCovarianceOf(f.estimate)}, geo);

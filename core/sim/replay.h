@@ -2,7 +2,10 @@
 // Replay of recorded data through the same filters as the simulator: own-ship NMEA 0183 sentences
 // into the DRKF and radar plots (CSV) into the track manager (formats: docs/outputs.md). Bad lines are
 // counted and skipped; only an unusable file as a whole (unreadable, no date, no position fix, a
-// radar header that is not ours) is an error.
+// radar header that is not ours, no usable plot) is an error. Time follows one policy for both
+// streams (sim/stream_time.h): isolated clock jumps are dropped, the rest is replayed in time order,
+// and after a gap longer than ReplayOptions::maxGapS the DRKF restarts at the next fix.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -11,12 +14,11 @@
 #include "navigation/drkf.h"
 #include "sim/scenario.h"
 #include "sim/scenario_run.h"
+#include "sim/stream_time.h"
 #include "tracking/track_manager.h"
 
 namespace reckoner::sim {
 
-/// UTC as microseconds since 1970-01-01T00:00:00Z.
-using UtcUs = std::int64_t;
 /// "2024-05-01T12:00:01.250Z" -> UTC; nullopt when malformed (Z required).
 std::optional<UtcUs> parseIso8601(std::string_view s);
 /// UTC -> "2024-05-01T12:00:01.250000Z".
@@ -24,24 +26,51 @@ std::string formatIso8601(UtcUs t);
 /// Days since 1970-01-01 of a civil date.
 std::int64_t daysFromCivil(int year, int month, int day);
 
+/// Speeds beyond this (over ground, through the water) are not a surface vessel's: the fastest craft
+/// in service make 60-70 kn, so a field above it is a unit or transmission error, not data.
+inline constexpr double kMaxPlausibleSpeedKn = 100.0;
+/// Radar plots beyond this range are not a navigation radar's (their longest range scale is 96 NM).
+inline constexpr double kMaxPlausiblePlotRangeM = 200.0 * 1852.0;
+
 struct ReplayOptions {
   Scenario settings;                ///< sensors (noise), filter, tracker, radar and origin
+  std::string settingsName;         ///< where the settings came from (error and warning lines)
   bool originFromSettings = false;  ///< else the first position fix
   bool assumeAssociation = false;   ///< associate plots by their target_id (seed 000's mode)
+  /// No own-ship epoch for longer than this: the DRKF restarts at the next position fix (a recorder
+  /// that stopped; the ship may be anywhere and its heading and speed anything).
+  double maxGapS = 120.0;
+  StreamTimePolicy time;
+};
+
+/// Outcome of the DRKF updates of one sensor block over the replay (all restarts summed).
+struct SensorUpdateCounts {
+  long accepted = 0;  ///< applied (gated, or forced after a persistent rejection)
+  long gated = 0;     ///< rejected by the chi-square gate
+  long failed = 0;    ///< not applied for any other reason: not finite, numerical, not linearisable, stale
 };
 
 struct ReplayStats {
-  long nmeaLines = 0, sentencesUsed = 0, badChecksum = 0, unknownSentences = 0, malformed = 0;
-  long untimed = 0;     ///< before any timed sentence
-  long outOfOrder = 0;  ///< older than the epoch being assembled
-  long unusable = 0;    ///< well formed but not usable (no fix, V status, velocity without position)
+  long nmeaLines = 0, sentencesUsed = 0, badChecksum = 0, unknownSentences = 0, proprietary = 0,
+       malformed = 0;
+  long untimed = 0;       ///< before any timed sentence
+  long timeJumps = 0;     ///< timed sentences stamped far from both neighbourhoods (stream_time.h)
+  long reordered = 0;     ///< timed sentences older than one before them in the file (replayed in order)
+  long unusable = 0;      ///< well formed but not usable (no fix, V status, velocity without position)
+  long notGnss = 0;       ///< fixes whose quality or mode says estimated, manual, simulator or invalid
+  long implausible = 0;   ///< sentences with a value beyond physical limits (kMaxPlausibleSpeedKn)
+  long outsideFrame = 0;  ///< position fixes too far from the replay's origin for its grid frame (not used)
   long epochs = 0, epochsBeforeFix = 0;
-  long radarLines = 0, radarPlots = 0, radarBad = 0, radarOutOfOrder = 0, radarBeforeFix = 0;
+  long epochsAwaitingFix = 0;  ///< after a restart, before the next position fix
+  long radarLines = 0, radarPlots = 0, radarBad = 0, radarDuplicates = 0, radarTimeJumps = 0,
+       radarReordered = 0, radarBeforeFix = 0;
+  long restartsAfterGap = 0;      ///< DRKF restarted at a fix after more than maxGapS without data
+  long restartsAfterFailure = 0;  ///< DRKF restarted after updates failed numerically epoch after epoch
   [[nodiscard]] long nmeaSkipped() const {
-    return badChecksum + unknownSentences + malformed + untimed + outOfOrder + unusable;
+    return badChecksum + unknownSentences + proprietary + malformed + untimed + timeJumps + unusable +
+           notGnss + implausible;
   }
 };
-
 struct ReplayOwnRow {
   TimeUs timeUs = 0;  ///< since the first NMEA timestamp
   UtcUs utcUs = 0;
@@ -56,9 +85,15 @@ struct ReplayResult {
   std::vector<ReplayOwnRow> own;
   std::vector<TrackRow> tracks;    ///< hasTruth false; targetId: the plots' target_id, if given
   std::vector<UtcUs> trackRowUtc;  ///< utc of each track row
+  /// The radar file's target_id labels; TrackRow::targetId indexes this (-1: none).
+  std::vector<std::string> targetLabels;
   ReplayStats stats;
-  nav::DrkfCounters drkf;
+  nav::DrkfCounters drkf;                                          ///< summed over restarts
+  std::array<SensorUpdateCounts, nav::kDrkfBlockCount> updates{};  ///< indexed by nav::DrkfBlock
   track::TrackCounters tracking;
+  /// One line each: what the replay changed or doubted (an origin far from the data, a file written out
+  /// of time order, ...). The command line prints them as warnings.
+  std::vector<std::string> warnings;
 };
 
 /// Runs the replay. nmeaName and radarName are used in error messages. Throws io::InputError for an

@@ -10,6 +10,7 @@
 
 #include "common/angles.h"
 #include "common/units.h"
+#include "io/error_line.h"
 
 namespace reckoner::sim {
 
@@ -96,9 +97,9 @@ OwnShipRow groundRow(const SimFrame& f, const est::Gaussian<4>& g, const geo::Lo
   return r;
 }
 
-OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo) {
+OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo, const est::drkf::ProcessParams& process) {
   OwnShipRow r = groundRow(f, {nav::groundStateOf(f.estimate), nav::groundCovarianceOf(f.estimate)}, geo);
-  r.nees = est::nees<est::drkf::kStateDim>(f.trueState - f.estimate.x, f.estimate.P);
+  r.nees = nav::drkfNees(f.trueState - f.estimate.x, f.estimate.P, process);
   for (const auto& u : f.updates) r.rowsApplied += u.dim;
   return r;
 }
@@ -149,7 +150,7 @@ RunResult runScenario(const Scenario& scenario, std::uint64_t seed) {
   result.rows.reserve(static_cast<std::size_t>(scenario.durationUs / scenario.stepUs + 1));
   while (!engine.finished()) {
     const SimFrame f = engine.step();
-    result.rows.push_back(makeRow(f, engine.frame()));
+    result.rows.push_back(makeRow(f, engine.frame(), engine.drkf().config().process));
     appendSweepRows(f, scenario, engine.frame(), result.trackRows, result.targetRows);
   }
   result.counters = engine.drkf().counters();
@@ -184,7 +185,7 @@ std::vector<RunResult> runMonteCarlo(const Scenario& scenario, int runs, int thr
   if (runs <= 0) throw std::invalid_argument("Monte Carlo: runs must be positive");
   if (threads <= 0) throw std::invalid_argument("Monte Carlo: threads must be positive");
   if (const std::string problem = checkScenario(scenario); !problem.empty())
-    throw std::invalid_argument("scenario '" + scenario.name + "': " + problem);
+    throw std::invalid_argument("scenario " + io::quoted(scenario.name) + ": " + problem);
   std::vector<RunResult> results(static_cast<std::size_t>(runs));
   parallelRuns(runs, threads, [&](int i) {
     results[static_cast<std::size_t>(i)] = runScenario(scenario, baseSeed + static_cast<std::uint64_t>(i));

@@ -29,7 +29,8 @@ struct OwnShipRow {
   [[nodiscard]] bool positionWithin(double k) const;
 };
 
-OwnShipRow makeRow(const SimFrame& frame, const geo::LocalFrame& geo);
+OwnShipRow makeRow(const SimFrame& frame, const geo::LocalFrame& geo,
+                   const est::drkf::ProcessParams& process);
 /// The row of any estimate of position and velocity over ground [x, y, vx, vy] (grid) with covariance;
 /// nees is that of those 4 states, rowsApplied 0.
 OwnShipRow groundRow(const SimFrame& frame, const est::Gaussian<4>& estimate, const geo::LocalFrame& geo);

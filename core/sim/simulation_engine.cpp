@@ -7,6 +7,7 @@
 
 #include "common/angles.h"
 #include "estimation/models/drkf_radar_fix.h"
+#include "io/error_line.h"
 #include "radar/chart_matching.h"
 
 namespace reckoner::sim {
@@ -21,7 +22,7 @@ TimeUs periodOf(double rateHz) {
 
 const Scenario& checked(const Scenario& s) {
   if (const std::string problem = checkScenario(s); !problem.empty())
-    throw std::invalid_argument("scenario '" + s.name + "': " + problem);
+    throw std::invalid_argument("scenario " + io::quoted(s.name) + ": " + problem);
   return s;
 }
 

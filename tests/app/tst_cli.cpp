@@ -205,7 +205,7 @@ class TestCli : public QObject {
     QTest::newRow("unknown builtin") << QStringList{"run", "builtin:nope", "--out", "/tmp/x"}
                                      << "unknown built-in scenario 'nope'";
     QTest::newRow("unknown option") << QStringList{"run", "builtin:default", "--fast"}
-                                    << "unknown option --fast";
+                                    << "unknown option '--fast'";
     QTest::newRow("seed001 bad pfa") << QStringList{"seed001", "--pfa", "2"} << "--pfa: expected a number";
     QTest::newRow("seed001 bad init")
         << QStringList{"seed001", "--init", "guess"} << "--init: expected paper or two-point";

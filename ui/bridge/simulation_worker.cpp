@@ -53,7 +53,7 @@ RadarFixSample radarFixSampleOf(const sim::RadarFixReport& r, const sim::SimFram
   return s;
 }
 
-OwnSample ownSampleOf(const sim::SimFrame& f) {
+OwnSample ownSampleOf(const sim::SimFrame& f, const est::drkf::ProcessParams& process) {
   using namespace est::drkf;
   const State& x = f.estimate.x;
   const Covariance& P = f.estimate.P;
@@ -76,8 +76,7 @@ OwnSample ownSampleOf(const sim::SimFrame& f) {
   s.sdLogBias = std::sqrt(P(kLogBias, kLogBias));
   s.trueLogBias = t[kLogBias];
   s.estLogBias = x[kLogBias];
-  const State e = x - t;
-  s.nees = neesOf<kStateDim>(e, P);
+  s.nees = nav::drkfNees(t - x, P, process);
   s.error95M = nav::positionError95M(f.estimate);
   return s;
 }
@@ -232,7 +231,7 @@ void SimulationWorker::stepEngine() {
 
 void SimulationWorker::absorb(sim::SimFrame&& f) {
   const auto& scenario = engine_->scenario();
-  pending_.ownHistory.push_back(ownSampleOf(f));
+  pending_.ownHistory.push_back(ownSampleOf(f, engine_->drkf().config().process));
   if (seed002_) {
     seed002_->feed(f);
     pending_.seed002 = std::array<est::Gaussian<4>, 2>{seed002_->ground(sim::OwnShipFilter::Geodetic),

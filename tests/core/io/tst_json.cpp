@@ -51,6 +51,44 @@ class TestJson : public QObject {
       QVERIFY(std::string(e.what()).find("line ") == 0);
     }
   }
+  void stringsMustBeUtf8() {
+    // RFC 8259: JSON text is UTF-8. A name with bytes that are not is an error with its line, never a
+    // string that a writer would turn into invalid JSON.
+    QCOMPARE(parseJson("\"\xc3\xa9t\xc3\xa9 \xf0\x9f\x9a\xa2\"").string,
+             std::string("\xc3\xa9t\xc3\xa9 \xf0\x9f\x9a\xa2"));
+    for (const char* bad :
+         {"{\n\"name\": \"a\xff\"}", "{\n\"name\": \"\xc0\xaf\"}", "{\n\"n\xed\xa0\x80\": 1}"}) {
+      try {
+        parseJson(bad);
+        QFAIL(bad);
+      } catch (const JsonParseError& e) {
+        QCOMPARE(e.line(), 2);
+        QVERIFY2(std::string(e.what()).find("invalid UTF-8") != std::string::npos, e.what());
+      }
+    }
+    JsonWriter w;
+    w.beginObject()
+        .key("name\xff")
+        .value(
+            "a\xfe\xff"
+            "b")
+        .endObject();
+    const JsonValue v = parseJson(w.str());  // the writer's output is valid JSON
+    QCOMPARE(v.find("name\xef\xbf\xbd")->string, std::string("a\xef\xbf\xbd\xef\xbf\xbd"
+                                                             "b"));
+  }
+  void duplicateKeyAmongManyIsFound() {
+    std::string text = "{";
+    for (int k = 0; k < 100000; ++k) text += "\"k" + std::to_string(k) + "\": 0,\n";
+    text += "\"k77777\": 1}";
+    try {
+      parseJson(text);
+      QFAIL("accepted a duplicate key");
+    } catch (const JsonParseError& e) {
+      QCOMPARE(e.line(), 100001);
+      QVERIFY2(std::string(e.what()).find("duplicate key 'k77777'") != std::string::npos, e.what());
+    }
+  }
   void deepNestingIsAnErrorNotACrash() {
     const std::string deep(100000, '[');
     QVERIFY_THROWS_EXCEPTION(JsonParseError, parseJson(deep));

@@ -57,7 +57,7 @@ class TestReplay : public QObject {
     QCOMPARE(nm::parse("$GPHDT,274.07,T*00").error, nm::Error::BadChecksum);
     QCOMPARE(nm::parse("$GPHDT,274.07,T").error, nm::Error::BadChecksum);  // no checksum
     QCOMPARE(nm::parse(nm::withChecksum("GPXDR,C,19.5,C,AIR")).error, nm::Error::Unknown);
-    QCOMPARE(nm::parse(nm::withChecksum("PGRME,15.0,M,45.0,M,25.0,M")).error, nm::Error::Unknown);
+    QCOMPARE(nm::parse(nm::withChecksum("PGRME,15.0,M,45.0,M,25.0,M")).error, nm::Error::Proprietary);
     for (const char* body : {"GPRMC,123519,A,4867.038,N,01131.000,E,0,0,230394,,",             // 67 minutes
                              "GPRMC,123519,A,4807.038,X,01131.000,E,0,0,230394,,",             // hemisphere
                              "GPRMC,123519,A,4807.038,N,01131.000,E,0,0,310294,,",             // 31 February

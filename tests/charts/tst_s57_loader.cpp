@@ -19,6 +19,7 @@
 #include "charts/s57/iso8211.h"
 #include "charts/s57/s57_checks.h"
 #include "charts/s57/s57_loader.h"
+#include "support/resource_limits.h"
 
 using namespace reckoner::charts;
 namespace s57 = reckoner::charts::s57;
@@ -153,6 +154,8 @@ std::size_t northernmostLatitude(const QByteArray& bytes) {
 class TestS57Loader : public QObject {
   Q_OBJECT
  private slots:
+  // Damaged and mutated cells below: a hang or an unbounded allocation fails inside these limits.
+  void initTestCase() { reckoner::test::limitThisProcess(600, std::size_t{4} << 30); }
   void findsTheCatalogue() { QVERIFY(!s57CatalogueDirectory().empty()); }
 
   void countsMatchOgrinfoForEveryCell() {

@@ -2,7 +2,8 @@
 //   reckoner-cli run SCENARIO [--seed N] [--own-ship-filter drkf|geodetic|lsq] --out DIR [--quiet]
 //   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]
 //   reckoner-cli chart info PATH...
-//   reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association] --out DIR
+//   reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association]
+//                       [--max-gap S] --out DIR
 //   reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR
 //   reckoner-cli compare SCENARIO [--runs N] [--targets LIST] [--threads K] [--seed N] --out DIR [--quiet]
 //   reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]   (exit 1 if a cell fails)
@@ -71,8 +72,8 @@ constexpr const char* kUsage =
     "               [--category base|standard|all] [--safety-contour M] --out FILE.png [--repeat K]\n"
     "  reckoner-cli chart pick PATH... --at LAT,LON [--scale N] [--tolerance PX]   (pick report as JSON)\n"
     "  (PATH builtin:default is the embedded fictional chart)\n"
-    "  reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association] --out "
-    "DIR\n"
+    "  reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association]\n"
+    "               [--max-gap S] --out DIR   (S: no data longer than this restarts the DRKF, default 120)\n"
     "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
     "  reckoner-cli compare SCENARIO [--runs N] [--targets 1,2,5,10,20] [--threads K] [--seed N] --out DIR\n"
     "  reckoner-cli own-ship-compare SCENARIO [--runs N] [--threads K] [--seed N]   (DRKF, seed 002 geodetic "
@@ -845,7 +846,8 @@ int cmdCompare(int argc, char** argv) {
 }
 
 int cmdReplay(int argc, char** argv) {
-  const Args a = parseArgs(argc, argv, 2, {"nmea", "radar", "config", "out", "assume-association"});
+  const Args a =
+      parseArgs(argc, argv, 2, {"nmea", "radar", "config", "out", "assume-association", "max-gap"});
   if (!a.positional.empty()) throw UsageError("replay takes no positional arguments (use --nmea FILE)");
   if (!a.options.count("nmea")) throw UsageError("--nmea FILE is required");
   sim::ReplayOptions o;
@@ -862,6 +864,7 @@ int cmdReplay(int argc, char** argv) {
     o.settings.radar.bearingSdRad = degToRad(0.5);
   }
   o.assumeAssociation = a.assumeAssociation;
+  if (a.options.count("max-gap")) o.maxGapS = parseReal("max-gap", a.options.at("max-gap"), 1.0, 1e7);
   const std::string out = prepareOutDir(a);
   const std::string nmeaPath = a.options.at("nmea");
   const std::string nmea = io::readTextFile(nmeaPath);

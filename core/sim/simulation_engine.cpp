@@ -9,6 +9,7 @@
 #include "estimation/models/drkf_radar_fix.h"
 #include "io/error_line.h"
 #include "radar/chart_matching.h"
+#include "sim/scenario_limits.h"
 
 namespace reckoner::sim {
 namespace {
@@ -295,7 +296,7 @@ void SimulationEngine::orderOwnShip(const HelmOrder& order) {
   e.timeUs = commandTimeUs();
   e.order = order;
   e.order->headingRad = wrapTwoPi(order.headingRad);
-  e.order->speedMps = std::max(0.0, order.speedMps);
+  e.order->speedMps = std::clamp(order.speedMps, 0.0, limits::kMaxSpeedMps);  // what a saved file may hold
   if (!std::isfinite(e.order->headingRad) || !std::isfinite(e.order->speedMps)) return;
   if (!truth_.overrideFrom(e)) return;
   auto& events = scenario_.ownShip.schedule;
@@ -308,7 +309,7 @@ bool SimulationEngine::orderTarget(int targetId, const HelmOrder& order) {
   e.timeUs = commandTimeUs();
   e.order = order;
   e.order->headingRad = wrapTwoPi(order.headingRad);
-  e.order->speedMps = std::max(0.0, order.speedMps);
+  e.order->speedMps = std::clamp(order.speedMps, 0.0, limits::kMaxSpeedMps);
   if (!std::isfinite(e.order->headingRad) || !std::isfinite(e.order->speedMps)) return false;
   for (std::size_t i = 0; i < scenario_.targets.size(); ++i) {
     TargetSpec& t = scenario_.targets[i];
@@ -470,8 +471,13 @@ std::optional<int> SimulationEngine::addTarget(TargetSpec target) {
   if (target.name.empty()) target.name = "target " + std::to_string(target.id);
   target.appearUs = commandTimeUs();
   const auto& m = target.motion;
-  if (!std::isfinite(m.initialPosition.xM) || !std::isfinite(m.initialPosition.yM) ||
-      !std::isfinite(m.initialVelocityMps[0]) || !std::isfinite(m.initialVelocityMps[1]) ||
+  // The scenario's own limits (scenario_limits.h), so that a saved scenario reads back.
+  const auto inside = [](double v, const limits::Range& r) {
+    return std::isfinite(v) && v >= r.lo && v <= r.hi;
+  };
+  if (!inside(m.initialPosition.xM, limits::kPositionM) ||
+      !inside(m.initialPosition.yM, limits::kPositionM) ||
+      !inside(std::hypot(m.initialVelocityMps[0], m.initialVelocityMps[1]), limits::kSpeedMps) ||
       !m.schedule.empty())
     return std::nullopt;
   const std::size_t index = scenario_.targets.size();
@@ -482,7 +488,7 @@ std::optional<int> SimulationEngine::addTarget(TargetSpec target) {
 }
 
 bool SimulationEngine::extendTo(TimeUs t) {
-  if (t <= timeUs_) return false;
+  if (t <= timeUs_ || toSeconds(t) > limits::kMaxDurationS) return false;
   scenario_.durationUs = std::max(scenario_.durationUs, t);
   return true;
 }

@@ -196,6 +196,23 @@ class TestSimulationEngine : public QObject {
     const double diff = runDifference(liveFrames, againFrames);
     QVERIFY2(diff < 1e-6, qPrintable(QString("largest difference %1").arg(diff)));
   }
+  void operatorValuesStayWithinWhatAFileMayHold() {
+    // GIVEN a running scenario WHEN the operator orders 200 m/s, adds a target 5,000 km away and runs
+    // past a month THEN the order is held to 100 kn, the target refused, the run not extended, and the
+    // scenario written afterwards reads back (a saved file used to hold what the reader refuses).
+    SimulationEngine live(test::builtinScenario("default"), 1);
+    live.step();
+    live.orderOwnShip(HelmOrder{degToRad(90.0), 200.0});
+    QVERIFY(live.orderTarget(1, HelmOrder{0.0, 1e6}));
+    TargetSpec far;
+    far.motion.initialPosition = {5e6, 0.0};
+    QVERIFY(!live.addTarget(far).has_value());
+    QVERIFY(!live.extendTo(fromSeconds(31.0 * 86400.0)));
+    const auto& order = live.scenario().ownShip.schedule.back().order;
+    QVERIFY(order && order->speedMps <= 51.44 + 1e-9);
+    const Scenario back = io::parseScenario(io::writeScenario(live.scenario()), "saved.json");
+    QCOMPARE(back.ownShip.schedule.size(), live.scenario().ownShip.schedule.size());
+  }
   void everyBuiltinScenarioSurvivesWriteAndRead() {
     for (const auto& f : resources::scenarios()) {
       const Scenario s = io::parseScenario(f.text, std::string(f.name));

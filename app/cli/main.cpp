@@ -881,11 +881,13 @@ int cmdReplay(int argc, char** argv) {
   std::printf("Reckoner replay of %s%s%s from %s\n", nmeaPath.c_str(), radar ? " and " : "",
               radar ? a.options.at("radar").c_str() : "", sim::formatIso8601(r.utc0).c_str());
   std::printf(
-      "  NMEA: %ld lines, %ld sentences used, %ld skipped (%ld bad checksum, %ld unknown, %ld proprietary, "
+      "  NMEA: %ld lines, %ld sentences used, %ld skipped (%ld comments, %ld bad checksum, %ld unknown, %ld "
+      "proprietary, "
       "%ld malformed, %ld untimed, %ld time jumps, %ld unusable, %ld not GNSS fixes, %ld implausible); "
       "%ld replayed out of file order\n",
-      st.nmeaLines, st.sentencesUsed, st.nmeaSkipped(), st.badChecksum, st.unknownSentences, st.proprietary,
-      st.malformed, st.untimed, st.timeJumps, st.unusable, st.notGnss, st.implausible, st.reordered);
+      st.nmeaLines, st.sentencesUsed, st.nmeaSkipped(), st.comments, st.badChecksum, st.unknownSentences,
+      st.proprietary, st.malformed, st.untimed, st.timeJumps, st.unusable, st.notGnss, st.implausible,
+      st.reordered);
   std::printf("  %ld own-ship epochs (%ld before the first fix), origin %s %s\n", st.epochs,
               st.epochsBeforeFix, io::formatLatitude(r.origin.latDeg).c_str(),
               io::formatLongitude(r.origin.lonDeg).c_str());

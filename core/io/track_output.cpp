@@ -127,6 +127,7 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   n("lines", s.nmeaLines);
   n("sentences_used", s.sentencesUsed);
   n("skipped", s.nmeaSkipped());
+  n("comments", s.comments);
   n("bad_checksum", s.badChecksum);
   n("unknown", s.unknownSentences);
   n("proprietary", s.proprietary);

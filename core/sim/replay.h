@@ -53,6 +53,7 @@ struct SensorUpdateCounts {
 struct ReplayStats {
   long nmeaLines = 0, sentencesUsed = 0, badChecksum = 0, unknownSentences = 0, proprietary = 0,
        malformed = 0;
+  long comments = 0;      ///< lines starting with '#'
   long untimed = 0;       ///< before any timed sentence
   long timeJumps = 0;     ///< timed sentences stamped far from both neighbourhoods (stream_time.h)
   long reordered = 0;     ///< timed sentences older than one before them in the file (replayed in order)
@@ -67,8 +68,8 @@ struct ReplayStats {
   long restartsAfterGap = 0;      ///< DRKF restarted at a fix after more than maxGapS without data
   long restartsAfterFailure = 0;  ///< DRKF restarted after updates failed numerically epoch after epoch
   [[nodiscard]] long nmeaSkipped() const {
-    return badChecksum + unknownSentences + proprietary + malformed + untimed + timeJumps + unusable +
-           notGnss + implausible;
+    return comments + badChecksum + unknownSentences + proprietary + malformed + untimed + timeJumps +
+           unusable + notGnss + implausible;
   }
 };
 struct ReplayOwnRow {

@@ -129,6 +129,11 @@ std::vector<Parsed> parseNmea(const std::string& text, const std::string& name, 
   std::vector<Parsed> out;
   std::optional<std::pair<int, std::string>> firstBad;
   for (const Line& l : linesOf(text)) {
+    if (!l.text.empty() && l.text.front() == '#') {  // a comment (gpsd's logs open with some)
+      ++st.nmeaLines;
+      ++st.comments;
+      continue;
+    }
     auto r = nm::parse(l.text);
     if (r.error == nm::Error::Empty) continue;
     ++st.nmeaLines;

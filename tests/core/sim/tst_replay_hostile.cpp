@@ -2,6 +2,7 @@
 // of order, impossible values, estimated fixes, labels, duplicates, byte-order marks). Each case failed
 // before the stream-time policy and the restart after a gap (docs/outputs.md, "Replay: time"); every
 // replay here runs under a CPU-time and memory limit, so a hang or an unbounded allocation fails.
+#include <QFile>
 #include <QTest>
 
 #include <algorithm>
@@ -223,8 +224,10 @@ class TestReplayHostile : public QObject {
     // the first line is read and the proprietary sentences are counted as such, not as malformed.
     auto lines = linesOf(run_.nmea);
     lines.insert(lines.begin() + 3, nm::withChecksum("PGRME,15.0,M,45.0,M,25.0,M"));
+    lines.insert(lines.begin(), "# recorded by a logger that writes comments");
     const auto r = sim::replay("\xEF\xBB\xBF" + joined(lines), "bom.nmea", nullptr, "", options());
     QCOMPARE(r.stats.proprietary, 1L);
+    QCOMPARE(r.stats.comments, 1L);
     QCOMPARE(r.stats.malformed, 0L);
     QCOMPARE(r.stats.untimed, 0L);
     QCOMPARE(r.own.size(), run_.truth.rows.size());
@@ -258,6 +261,28 @@ class TestReplayHostile : public QObject {
     QVERIFY2(r.warnings[0].rfind("ttkf-matched.json: origin: ", 0) == 0, r.warnings[0].c_str());
     QVERIFY(std::abs(r.origin.latDeg - scenario_.origin.latDeg) < 1.0);
     QVERIFY(finiteRows(r));
+  }
+
+  void realRecordingsReadWhole() {
+    // GIVEN the two real recordings (../shared/data/nmea) WHEN replayed THEN no line is malformed (the
+    // Seapath's $PSXN attitude sentences were 2,142 malformed lines; gpsd's '#' comments 10), every
+    // epoch with a fix has its fix accepted, and every row is finite.
+    const std::string dir = RECKONER_SHARED_DIR "/data/nmea/";
+    if (!QFile::exists(QString::fromStdString(dir))) QSKIP("../shared/data/nmea is absent");
+    for (const char* name : {"openrvdas-NBP1406_seap-2014-08-01.nmea", "gpsd-bundg_zeus_9.log"}) {
+      QFile f(QString::fromStdString(dir + name));
+      QVERIFY(f.open(QIODevice::ReadOnly));
+      const std::string text = f.readAll().toStdString();
+      const auto r = sim::replay(text, name, nullptr, "", sim::ReplayOptions{});
+      qInfo("%s: %ld lines, %ld used, %ld proprietary, %ld unknown, %ld comments, GPS %ld/%ld/%ld", name,
+            r.stats.nmeaLines, r.stats.sentencesUsed, r.stats.proprietary, r.stats.unknownSentences,
+            r.stats.comments, r.updates[nav::kGpsPosition].accepted, r.updates[nav::kGpsPosition].gated,
+            r.updates[nav::kGpsPosition].failed);
+      QCOMPARE(r.stats.malformed, 0L);
+      QCOMPARE(r.stats.badChecksum, 0L);
+      QCOMPARE(r.updates[nav::kGpsPosition].gated + r.updates[nav::kGpsPosition].failed, 0L);
+      QVERIFY(finiteRows(r));
+    }
   }
 
   void radarLabelsAreAnyText() {

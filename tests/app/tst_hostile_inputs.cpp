@@ -43,7 +43,7 @@ Result cli(const QStringList& args) {
   test::limitChildren(p);
   p.start(cliPath(), args);
   // A guard only: the CPU limit ends a busy child; this ends one that blocks (a FIFO) without CPU.
-  const bool done = p.waitForFinished(180000);
+  const bool done = p.waitForFinished(180000 * (test::slowdown() > 1 ? 5 : 1));
   if (!done) {
     p.kill();
     p.waitForFinished();

@@ -21,6 +21,10 @@ bool underAddressSanitizer() {
 #endif
 }
 
+int slowdown() {
+  return underAddressSanitizer() ? 30 : 1;
+}
+
 namespace {
 void applyLimits(int cpuSeconds, std::size_t memoryBytes, bool memory) {
   const rlimit cpu{static_cast<rlim_t>(cpuSeconds), static_cast<rlim_t>(cpuSeconds) + 5};
@@ -33,7 +37,7 @@ void applyLimits(int cpuSeconds, std::size_t memoryBytes, bool memory) {
 }  // namespace
 
 void limitThisProcess(int cpuSeconds, std::size_t memoryBytes) {
-  applyLimits(cpuSeconds, memoryBytes, !underAddressSanitizer());
+  applyLimits(cpuSeconds * slowdown(), memoryBytes, !underAddressSanitizer());
 }
 
 void limitChildren(QProcess& p, int cpuSeconds, std::size_t memoryBytes) {
@@ -48,7 +52,8 @@ void limitChildren(QProcess& p, int cpuSeconds, std::size_t memoryBytes) {
     p.setProcessEnvironment(env);
   }
   // Runs in the child between fork and exec: only async-signal-safe calls (setrlimit is).
-  p.setChildProcessModifier([cpuSeconds, memoryBytes, asan] { applyLimits(cpuSeconds, memoryBytes, !asan); });
+  const int cpu = cpuSeconds * slowdown();
+  p.setChildProcessModifier([cpu, memoryBytes, asan] { applyLimits(cpu, memoryBytes, !asan); });
 }
 
 }  // namespace reckoner::test

@@ -17,11 +17,15 @@ inline constexpr std::size_t kHostileMemoryBytes = std::size_t{2} << 30;
 /// True when this binary was built with AddressSanitizer.
 bool underAddressSanitizer();
 
-/// Caps this process: CPU seconds and address space (address space not under ASan).
+/// How much slower code runs here than in Release: 30 under AddressSanitizer (Debug, -O0: Eigen's
+/// small-matrix code is 30 to 100 times slower), else 1. CPU limits are multiplied by it.
+int slowdown();
+
+/// Caps this process: CPU seconds (times slowdown()) and address space (not under ASan).
 void limitThisProcess(int cpuSeconds, std::size_t memoryBytes);
 
-/// Makes every child that p starts run under these limits (RLIMIT_CPU, and RLIMIT_AS or ASan's RSS
-/// limit). Call before p.start().
+/// Makes every child that p starts run under these limits (RLIMIT_CPU times slowdown(), and RLIMIT_AS
+/// or ASan's RSS limit). Call before p.start().
 void limitChildren(QProcess& p, int cpuSeconds = kHostileCpuSeconds,
                    std::size_t memoryBytes = kHostileMemoryBytes);
 

@@ -3,7 +3,7 @@
 //   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]
 //   reckoner-cli chart info PATH...
 //   reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association]
-//                       [--max-gap S] --out DIR
+//                       [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] --out DIR
 //   reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR
 //   reckoner-cli compare SCENARIO [--runs N] [--targets LIST] [--threads K] [--seed N] --out DIR [--quiet]
 //   reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]   (exit 1 if a cell fails)
@@ -73,7 +73,9 @@ constexpr const char* kUsage =
     "  reckoner-cli chart pick PATH... --at LAT,LON [--scale N] [--tolerance PX]   (pick report as JSON)\n"
     "  (PATH builtin:default is the embedded fictional chart)\n"
     "  reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association]\n"
-    "               [--max-gap S] --out DIR   (S: no data longer than this restarts the DRKF, default 120)\n"
+    "               [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] --out DIR\n"
+    "               (S: no data longer than this restarts the DRKF, default 120; --date: for a log without\n"
+    "               dates; --variation: magnetic variation, east positive, when the file gives none)\n"
     "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
     "  reckoner-cli compare SCENARIO [--runs N] [--targets 1,2,5,10,20] [--threads K] [--seed N] --out DIR\n"
     "  reckoner-cli own-ship-compare SCENARIO [--runs N] [--threads K] [--seed N]   (DRKF, seed 002 geodetic "
@@ -847,7 +849,8 @@ int cmdCompare(int argc, char** argv) {
 
 int cmdReplay(int argc, char** argv) {
   const Args a =
-      parseArgs(argc, argv, 2, {"nmea", "radar", "config", "out", "assume-association", "max-gap"});
+      parseArgs(argc, argv, 2,
+                {"nmea", "radar", "config", "out", "assume-association", "max-gap", "date", "variation"});
   if (!a.positional.empty()) throw UsageError("replay takes no positional arguments (use --nmea FILE)");
   if (!a.options.count("nmea")) throw UsageError("--nmea FILE is required");
   sim::ReplayOptions o;
@@ -865,6 +868,15 @@ int cmdReplay(int argc, char** argv) {
   }
   o.assumeAssociation = a.assumeAssociation;
   if (a.options.count("max-gap")) o.maxGapS = parseReal("max-gap", a.options.at("max-gap"), 1.0, 1e7);
+  if (a.options.count("variation"))
+    o.variationDeg = parseReal("variation", a.options.at("variation"), -180.0, 180.0);
+  if (a.options.count("date")) {
+    const std::string& date = a.options.at("date");
+    const auto day = sim::parseIso8601(date + "T00:00:00Z");
+    if (!day || date.size() != 10) throw UsageError("--date: expected YYYY-MM-DD, got " + io::quoted(date));
+    o.date = std::array<int, 3>{std::stoi(date.substr(0, 4)), std::stoi(date.substr(5, 2)),
+                                std::stoi(date.substr(8, 2))};
+  }
   const std::string out = prepareOutDir(a);
   const std::string nmeaPath = a.options.at("nmea");
   const std::string nmea = io::readTextFile(nmeaPath);
@@ -883,11 +895,19 @@ int cmdReplay(int argc, char** argv) {
   std::printf(
       "  NMEA: %ld lines, %ld sentences used, %ld skipped (%ld comments, %ld bad checksum, %ld unknown, %ld "
       "proprietary, "
-      "%ld malformed, %ld untimed, %ld time jumps, %ld unusable, %ld not GNSS fixes, %ld implausible); "
-      "%ld replayed out of file order\n",
+      "%ld malformed, %ld untimed, %ld time jumps, %ld unusable, %ld not GNSS fixes, %ld implausible, %ld "
+      "without variation); %ld standby, %ld repeated, %ld not used; %ld replayed out of file order\n",
       st.nmeaLines, st.sentencesUsed, st.nmeaSkipped(), st.comments, st.badChecksum, st.unknownSentences,
       st.proprietary, st.malformed, st.untimed, st.timeJumps, st.unusable, st.notGnss, st.implausible,
-      st.reordered);
+      st.noVariation, st.standby, st.repeated, st.notUsed, st.reordered);
+  const double span = r.own.empty() ? 0.0 : toSeconds(r.own.back().timeUs - r.own.front().timeUs);
+  for (const auto& src : r.sources) {
+    if (src.used + src.standby + src.repeated == 0) continue;
+    std::printf("    %-14s %-9s %6ld used %6ld standby, active %3.0f%%, clock %+.2f s%s\n",
+                src.source.c_str(), src.quantity.c_str(), src.used, src.standby,
+                span > 0 ? 100.0 * std::min(1.0, src.activeS / span) : 0.0, src.clockOffsetS,
+                src.clockCorrected ? " (corrected)" : "");
+  }
   std::printf("  %ld own-ship epochs (%ld before the first fix), origin %s %s\n", st.epochs,
               st.epochsBeforeFix, io::formatLatitude(r.origin.latDeg).c_str(),
               io::formatLongitude(r.origin.lonDeg).c_str());

@@ -98,6 +98,98 @@ Date checkedDate(int y, int m, int d) {
   return {y, m, d};
 }
 
+/// An optional heading field in [0, 360].
+std::optional<double> heading(const std::vector<std::string_view>& f, std::size_t i, const char* what) {
+  const auto h = optionalNumber(f, i, what);
+  if (h && (*h < 0.0 || *h > 360.0)) throw Bad{std::string(what) + ": out of range " + quoted(f[i], 40)};
+  return h;
+}
+
+/// An optional signed angle with its E/W letter in the next field (east positive).
+std::optional<double> eastWest(const std::vector<std::string_view>& f, std::size_t i, const char* what) {
+  const auto v = optionalNumber(f, i, what);
+  if (!v) return std::nullopt;
+  if (*v < 0.0 || *v > 180.0) throw Bad{std::string(what) + ": out of range " + quoted(f[i], 40)};
+  const std::string_view side = i + 1 < f.size() ? f[i + 1] : std::string_view();
+  if (side == "E") return *v;
+  if (side == "W") return -*v;
+  throw Bad{std::string(what) + ": needs E or W, got " + quoted(side, 8)};
+}
+
+/// THS, HDG, HDM, ROT, GNS, GST and DTM.
+Body parseMore(std::string_view type, const std::vector<std::string_view>& f) {
+  if (type == "THS") {
+    Ths t;
+    t.headingDeg = required(f, 1, "THS heading");
+    if (t.headingDeg < 0.0 || t.headingDeg > 360.0) throw Bad{"THS heading: out of range"};
+    if (f.size() < 3 || f[2].size() != 1 || std::string_view("AEMSV").find(f[2][0]) == std::string_view::npos)
+      throw Bad{"THS mode: must be A, E, M, S or V"};
+    t.mode = f[2][0];
+    return t;
+  }
+  if (type == "HDG") {
+    Hdg h;
+    h.sensorDeg = required(f, 1, "HDG heading");
+    if (h.sensorDeg < 0.0 || h.sensorDeg > 360.0) throw Bad{"HDG heading: out of range"};
+    h.deviationDeg = eastWest(f, 2, "HDG deviation");
+    h.variationDeg = eastWest(f, 4, "HDG variation");
+    return h;
+  }
+  if (type == "HDM") {
+    const double h = required(f, 1, "HDM heading");
+    if (h < 0.0 || h > 360.0) throw Bad{"HDM heading: out of range"};
+    return Hdm{h};
+  }
+  if (type == "ROT") {
+    Rot r;
+    r.degPerMin = required(f, 1, "ROT rate");
+    if (std::abs(r.degPerMin) > 3600.0) throw Bad{"ROT rate: beyond 3600 deg/min"};
+    r.valid = f.size() > 2 && f[2] == "A";
+    return r;
+  }
+  if (type == "GNS") {
+    Gns g;
+    g.timeOfDayS = time(f, 1);
+    if (f.size() < 9) throw Bad{"GNS: needs at least 8 fields"};
+    g.modes = std::string(f[6]);
+    if (g.modes.empty() || g.modes.size() > 8 || g.modes.find_first_not_of("ADEFMNPRS") != std::string::npos)
+      throw Bad{"GNS mode: letters of ADEFMNPRS, got " + quoted(f[6], 16)};
+    g.hasPosition = !f[2].empty();
+    if (g.hasPosition) {
+      g.latDeg = angle(f, 2, 2, 'N', 'S', "GNS latitude");
+      g.lonDeg = angle(f, 4, 3, 'E', 'W', "GNS longitude");
+    }
+    if (!f[7].empty()) g.satellites = integer(f, 7, "GNS satellites", 0, 999);
+    g.hdop = optionalNumber(f, 8, "GNS hdop");
+    return g;
+  }
+  if (type == "GST") {
+    Gst g;
+    g.timeOfDayS = time(f, 1);
+    if (f.size() < 8) throw Bad{"GST: needs at least 7 fields"};
+    const auto sd = [&](std::size_t i, const char* what) {
+      const auto v = optionalNumber(f, i, what);
+      if (v && *v < 0.0) throw Bad{std::string(what) + ": negative"};
+      return v;
+    };
+    g.rmsM = sd(2, "GST rms");
+    g.majorSdM = sd(3, "GST semi-major sd");
+    g.minorSdM = sd(4, "GST semi-minor sd");
+    g.majorOrientationDeg = optionalNumber(f, 5, "GST orientation");
+    g.latSdM = sd(6, "GST latitude sd");
+    g.lonSdM = sd(7, "GST longitude sd");
+    return g;
+  }
+  if (type == "DTM") {
+    Dtm d;
+    if (f.size() < 2 || f[1].empty()) throw Bad{"DTM: no local datum"};
+    d.localDatum = std::string(f[1].substr(0, std::min<std::size_t>(f[1].size(), 8)));
+    if (f.size() > 8) d.referenceDatum = std::string(f[8].substr(0, std::min<std::size_t>(f[8].size(), 8)));
+    return d;
+  }
+  throw Bad{"unknown"};  // not reached: the caller checks the type
+}
+
 Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
   // f[0] is the address field; data fields start at f[1].
   if (type == "RMC") {
@@ -122,6 +214,7 @@ Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
       }
       r.date = checkedDate(dmy[2] < 80 ? 2000 + dmy[2] : 1900 + dmy[2], dmy[1], dmy[0]);
     }
+    if (f.size() > 11) r.variationDeg = eastWest(f, 10, "RMC magnetic variation");
     r.mode = modeIndicator(f, 12, "RMC mode");
     return r;
   }
@@ -162,7 +255,8 @@ Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
   }
   if (type == "VHW") {
     Vhw v;
-    v.headingTrueDeg = optionalNumber(f, 1, "VHW heading");
+    v.headingTrueDeg = heading(f, 1, "VHW true heading");
+    v.headingMagneticDeg = heading(f, 3, "VHW magnetic heading");
     if (f.size() < 6) throw Bad{"VHW: needs at least 5 fields"};
     v.speedKn = required(f, 5, "VHW speed");
     return v;
@@ -183,15 +277,18 @@ Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
   if (type == "ZDA") {
     Zda z;
     z.timeOfDayS = time(f, 1);
-    z.date = checkedDate(integer(f, 4, "ZDA year", 1980, 2200), integer(f, 3, "ZDA month", 1, 12),
-                         integer(f, 2, "ZDA day", 1, 31));
+    const bool undated = f.size() < 5 || (f[2].empty() && f[3].empty() && f[4].empty());
+    if (!undated)
+      z.date = checkedDate(integer(f, 4, "ZDA year", 1980, 2200), integer(f, 3, "ZDA month", 1, 12),
+                           integer(f, 2, "ZDA day", 1, 31));
     return z;
   }
-  throw Bad{"unknown"};  // not reached: the caller checks the type
+  return parseMore(type, f);
 }
 
 bool known(std::string_view type) {
-  for (const char* k : {"RMC", "GGA", "VTG", "GLL", "HDT", "VHW", "VBW", "ZDA"})
+  for (const char* k : {"RMC", "GGA", "VTG", "GLL", "HDT", "VHW", "VBW", "ZDA", "THS", "HDG", "HDM", "ROT",
+                        "GNS", "GST", "DTM"})
     if (type == k) return true;
   return false;
 }
@@ -228,6 +325,15 @@ bool gnssFix(std::optional<char> mode) {
 
 bool gnssFix(int q) {
   return (q >= 1 && q <= 5) || q == 9;
+}
+
+bool gnssFix(std::string_view modes) {
+  bool fix = false;
+  for (const char m : modes) {
+    if (m == 'E' || m == 'M' || m == 'S') return false;
+    fix = fix || (m != 'N' && gnssFix(std::optional<char>(m)));
+  }
+  return fix;
 }
 
 std::optional<double> parseTimeOfDay(std::string_view f) {

@@ -137,6 +137,10 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   n("unusable", s.unusable);
   n("not_gnss", s.notGnss);
   n("implausible", s.implausible);
+  n("no_variation", s.noVariation);
+  n("standby", s.standby);
+  n("repeated", s.repeated);
+  n("not_used", s.notUsed);
   n("reordered", s.reordered);
   n("outside_frame", s.outsideFrame);
   n("epochs", s.epochs);
@@ -159,6 +163,29 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   n("after_failure", s.restartsAfterFailure);
   w.endObject();
   w.endObject();
+  w.key("sources").beginArray();
+  const double span = r.own.empty() ? 0.0 : toSeconds(r.own.back().timeUs - r.own.front().timeUs);
+  for (const sim::SourceStats& src : r.sources) {
+    w.beginObject();
+    w.key("source").value(src.source);
+    w.key("quantity").value(src.quantity);
+    n("sentences", src.sentences);
+    n("used", src.used);
+    n("standby", src.standby);
+    n("repeated", src.repeated);
+    w.key("skipped").beginObject();
+    n("unusable", src.unusable);
+    n("not_measured", src.notMeasured);
+    n("implausible", src.implausible);
+    n("time_jumps", src.timeJumps);
+    w.endObject();
+    w.key("clock_offset_s").value(src.clockOffsetS, 4);
+    w.key("clock_resolution_s").value(src.clockResolutionS, 4);
+    w.key("clock_corrected").value(src.clockCorrected);
+    w.key("active_share").value(span > 0.0 ? std::min(1.0, src.activeS / span) : 0.0, 4);
+    w.endObject();
+  }
+  w.endArray();
   w.key("radar").beginObject();
   n("lines", s.radarLines);
   n("plots", s.radarPlots);

@@ -72,7 +72,7 @@ ExportedRun exportRun(const Scenario& s, std::uint64_t seed, UtcUs utc0) {
                 std::snprintf(buf, sizeof buf, "GPRMC,%s,A,%s,%s,%.3f,%.2f,%s,,,A", hhmmss(t).c_str(),
                               lat.c_str(), lon.c_str(), sog, cog, ddmmyy(t).c_str());
                 out.nmea += io::nmea::withChecksum(buf) + "\r\n";
-                std::snprintf(buf, sizeof buf, "GPGGA,%s,%s,%s,1,09,0.9,5.0,M,,M,,", hhmmss(t).c_str(),
+                std::snprintf(buf, sizeof buf, "GPGGA,%s,%s,%s,1,09,1.0,5.0,M,,M,,", hhmmss(t).c_str(),
                               lat.c_str(), lon.c_str());
                 out.nmea += io::nmea::withChecksum(buf) + "\r\n";
               } else if constexpr (std::is_same_v<T, sensors::LoranSample>) {

@@ -94,6 +94,13 @@ class Runner {
 
  private:
   [[nodiscard]] TimeUs rel(UtcUs u) const { return u - res_.utc0; }
+  /// Per-axis variance of the epoch's GNSS fix: the receiver's GST when it gave one, else the
+  /// configured variance (that of a fix with HDOP 1) times HDOP squared (HDOP held to [0.5, 20]).
+  [[nodiscard]] double gpsVarianceOf(const Epoch& e) const {
+    if (e.gpsVarM2) return std::max(*e.gpsVarM2, 0.01);
+    const double hdop = std::clamp(e.gpsHdop, 0.5, 20.0);
+    return o_.settings.gps.positionVarM2 * hdop * hdop;
+  }
   [[nodiscard]] std::optional<geo::GridPoint> inFrame(const std::optional<geo::GeoPoint>& p);
   void start(const Epoch& e, TimeUs t, const std::optional<geo::GridPoint>& gps,
              const std::optional<geo::GridPoint>& loran);
@@ -125,10 +132,9 @@ std::optional<geo::GridPoint> Runner::inFrame(const std::optional<geo::GeoPoint>
 void Runner::start(const Epoch& e, TimeUs t, const std::optional<geo::GridPoint>& gps,
                    const std::optional<geo::GridPoint>& loran) {
   // At the fix, with the velocity of that epoch when GPS gave one.
-  const Scenario& st = o_.settings;
   const bool hasVel = gps && e.gpsVelocity;
   est::drkf::Belief initial;
-  initial.P = nav::initialCovariance(config_.process, gps ? std::sqrt(st.gps.positionVarM2) * 2.0 : 100.0,
+  initial.P = nav::initialCovariance(config_.process, gps ? std::sqrt(gpsVarianceOf(e)) * 2.0 : 100.0,
                                      hasVel ? 1.0 : 8.0);
   initial.x.setZero();
   const geo::GridPoint p0 = gps ? *gps : *loran;
@@ -206,7 +212,7 @@ void Runner::ownShip(const Epoch& e) {
   const Scenario& st = o_.settings;
   std::vector<sensors::OwnShipSample> samples;
   if (gps) {
-    sensors::GpsSample g{t, *gps, st.gps.positionVarM2, false, 0.0, 0.0, 0.0};
+    sensors::GpsSample g{t, *gps, gpsVarianceOf(e), false, 0.0, 0.0, 0.0};
     if (e.gpsVelocity) {
       g.hasVelocity = true;
       g.velEastMps = e.gpsVelocity->first * std::sin(e.gpsVelocity->second);
@@ -219,8 +225,10 @@ void Runner::ownShip(const Epoch& e) {
   if (e.log)
     samples.emplace_back(
         sensors::SpeedlogSample{t, e.log->first, e.log->second, st.speedlog.whiteVarM2PerS2});
-  if (e.headingRad)
-    samples.emplace_back(sensors::GyroSample{t, *e.headingRad, st.gyro.sdRad * st.gyro.sdRad});
+  if (e.headingRad) {
+    const double sd = e.headingMagnetic ? degToRad(o_.magneticHeadingSdDeg) : st.gyro.sdRad;
+    samples.emplace_back(sensors::GyroSample{t, *e.headingRad, sd * sd});
+  }
   const nav::DrkfUpdateReport rep = drkf_->update(t, samples);
   count(rep, samples);
   const bool failed = rep.joint.status == est::UpdateStatus::RejectedNumerical ||
@@ -301,7 +309,13 @@ ReplayResult replay(const std::string& nmeaText, const std::string& nmeaName, co
                     const std::string& radarName, const ReplayOptions& o) {
   ReplayResult res;
   ReplayStats& st = res.stats;
-  const std::vector<Epoch> epochs = replay_input::readNmea(nmeaText, nmeaName, o.time, st);
+  replay_input::NmeaOptions nmeaOptions;
+  nmeaOptions.time = o.time;
+  nmeaOptions.date = o.date;
+  nmeaOptions.variationDeg = o.variationDeg;
+  nmeaOptions.holdS = o.sourceHoldS;
+  const std::vector<Epoch> epochs =
+      replay_input::readNmea(nmeaText, nmeaName, nmeaOptions, st, res.sources, res.warnings);
   std::vector<Plot> plots;
   if (radarCsv) {
     plots = replay_input::inReplayOrder(

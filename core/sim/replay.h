@@ -32,6 +32,21 @@ inline constexpr double kMaxPlausibleSpeedKn = 100.0;
 /// Radar plots beyond this range are not a navigation radar's (their longest range scale is 96 NM).
 inline constexpr double kMaxPlausiblePlotRangeM = 200.0 * 1852.0;
 
+/// One source of a recording (replay_sources.h): a talker and a sentence type.
+struct SourceStats {
+  std::string source;    ///< "GP:GGA", "HC:HDG", ...
+  std::string quantity;  ///< position, loran_c, velocity, heading, speed_log, accuracy, time, other
+  long sentences = 0;
+  long used = 0;      ///< what it gave went into the filter (or set the time)
+  long standby = 0;   ///< valid, while another source of its quantity was active
+  long repeated = 0;  ///< valid, but an earlier sentence of it gave the epoch's value
+  long unusable = 0, notMeasured = 0, implausible = 0, timeJumps = 0;  ///< skipped, by reason
+  double clockOffsetS = 0.0;  ///< against the reference (the best position source), positive: ahead
+  double clockResolutionS = 0.0;
+  bool clockCorrected = false;  ///< its times were shifted by the offset
+  double activeS = 0.0;         ///< time it was the active source of its quantity
+};
+
 struct ReplayOptions {
   Scenario settings;                ///< sensors (noise), filter, tracker, radar and origin
   std::string settingsName;         ///< where the settings came from (error and warning lines)
@@ -41,6 +56,10 @@ struct ReplayOptions {
   /// that stopped; the ship may be anywhere and its heading and speed anything).
   double maxGapS = 120.0;
   StreamTimePolicy time;
+  std::optional<std::array<int, 3>> date;  ///< year, month, day for a log without dates (--date)
+  std::optional<double> variationDeg;      ///< magnetic variation when the file gives none (--variation)
+  double magneticHeadingSdDeg = 2.0;       ///< sd of a magnetic heading (HDG, HDM) after deviation
+  double sourceHoldS = 3.0;                ///< a source silent this long loses its quantity
 };
 
 /// Outcome of the DRKF updates of one sensor block over the replay (all restarts summed).
@@ -60,6 +79,10 @@ struct ReplayStats {
   long unusable = 0;      ///< well formed but not usable (no fix, V status, velocity without position)
   long notGnss = 0;       ///< fixes whose quality or mode says estimated, manual, simulator or invalid
   long implausible = 0;   ///< sentences with a value beyond physical limits (kMaxPlausibleSpeedKn)
+  long standby = 0;       ///< valid sentences of a source that was not the active one of its quantity
+  long repeated = 0;      ///< valid, but their source gave the epoch's value already (a 10 Hz HDG in 1 s)
+  long notUsed = 0;       ///< read but of no use to the filter (ROT, DTM of WGS-84, GST without its fix)
+  long noVariation = 0;   ///< magnetic headings without a magnetic variation (file or --variation)
   long outsideFrame = 0;  ///< position fixes too far from the replay's origin for its grid frame (not used)
   long epochs = 0, epochsBeforeFix = 0;
   long epochsAwaitingFix = 0;  ///< after a restart, before the next position fix
@@ -69,7 +92,7 @@ struct ReplayStats {
   long restartsAfterFailure = 0;  ///< DRKF restarted after updates failed numerically epoch after epoch
   [[nodiscard]] long nmeaSkipped() const {
     return comments + badChecksum + unknownSentences + proprietary + malformed + untimed + timeJumps +
-           unusable + notGnss + implausible;
+           unusable + notGnss + implausible + noVariation;
   }
 };
 struct ReplayOwnRow {
@@ -84,8 +107,9 @@ struct ReplayResult {
   geo::GeoPoint origin;
   UtcUs utc0 = 0;  ///< first NMEA timestamp
   std::vector<ReplayOwnRow> own;
-  std::vector<TrackRow> tracks;    ///< hasTruth false; targetId: the plots' target_id, if given
-  std::vector<UtcUs> trackRowUtc;  ///< utc of each track row
+  std::vector<TrackRow> tracks;      ///< hasTruth false; targetId: the plots' target_id, if given
+  std::vector<UtcUs> trackRowUtc;    ///< utc of each track row
+  std::vector<SourceStats> sources;  ///< every source of the NMEA file, in first-seen order
   /// The radar file's target_id labels; TrackRow::targetId indexes this (-1: none).
   std::vector<std::string> targetLabels;
   ReplayStats stats;

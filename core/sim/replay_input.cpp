@@ -16,17 +16,6 @@
 
 namespace reckoner::sim {
 namespace replay_input {
-namespace {
-namespace nm = io::nmea;
-constexpr std::int64_t kUsPerDay = 86400LL * 1000000LL;
-/// Longest target_id label kept from a radar file.
-constexpr std::size_t kMaxLabelBytes = 64;
-
-struct Line {
-  int number;  ///< 1-based
-  std::string_view text;
-};
-
 std::vector<Line> linesOf(std::string_view text) {
   io::stripByteOrderMark(text);
   std::vector<Line> out;
@@ -43,15 +32,6 @@ std::vector<Line> linesOf(std::string_view text) {
   return out;
 }
 
-struct PlotHash {
-  std::size_t operator()(const Plot& p) const {
-    std::size_t h = std::hash<UtcUs>()(p.utc);
-    h = h * 1000003u ^ std::hash<double>()(p.rangeM);
-    h = h * 1000003u ^ std::hash<double>()(p.bearingRad);
-    return h * 1000003u ^ std::hash<int>()(p.tag);
-  }
-};
-
 std::optional<double> toNumber(std::string_view f) {
   while (!f.empty() && f.front() == ' ') f.remove_prefix(1);
   while (!f.empty() && f.back() == ' ') f.remove_suffix(1);
@@ -67,6 +47,19 @@ std::string_view trimmed(std::string_view f) {
   while (!f.empty() && (f.back() == ' ' || f.back() == '\t')) f.remove_suffix(1);
   return f;
 }
+
+namespace {
+/// Longest target_id label kept from a radar file.
+constexpr std::size_t kMaxLabelBytes = 64;
+
+struct PlotHash {
+  std::size_t operator()(const Plot& p) const {
+    std::size_t h = std::hash<UtcUs>()(p.utc);
+    h = h * 1000003u ^ std::hash<double>()(p.rangeM);
+    h = h * 1000003u ^ std::hash<double>()(p.bearingRad);
+    return h * 1000003u ^ std::hash<int>()(p.tag);
+  }
+};
 
 // ---- radar CSV -------------------------------------------------------------------------------------
 
@@ -117,178 +110,6 @@ Plot readRow(std::string_view row, bool withId, std::vector<std::string>& labels
   return {*utc, *r, degToRad(*b), tag};
 }
 
-// ---- NMEA ------------------------------------------------------------------------------------------
-
-struct Parsed {
-  int line;
-  nm::Sentence sentence;
-};
-
-/// Parses every line, counting what is skipped. Throws when the file holds no sentence we read.
-std::vector<Parsed> parseNmea(const std::string& text, const std::string& name, ReplayStats& st) {
-  std::vector<Parsed> out;
-  std::optional<std::pair<int, std::string>> firstBad;
-  for (const Line& l : linesOf(text)) {
-    if (!l.text.empty() && l.text.front() == '#') {  // a comment (gpsd's logs open with some)
-      ++st.nmeaLines;
-      ++st.comments;
-      continue;
-    }
-    auto r = nm::parse(l.text);
-    if (r.error == nm::Error::Empty) continue;
-    ++st.nmeaLines;
-    switch (r.error) {
-      case nm::Error::BadChecksum:
-        ++st.badChecksum;
-        break;
-      case nm::Error::Unknown:
-        ++st.unknownSentences;
-        break;
-      case nm::Error::Proprietary:
-        ++st.proprietary;
-        break;
-      case nm::Error::Malformed:
-        ++st.malformed;
-        break;
-      default:
-        out.push_back({l.number, std::move(*r.sentence)});
-        continue;
-    }
-    if (!firstBad) firstBad.emplace(l.number, std::string(nm::errorName(r.error)) + ": " + r.reason);
-  }
-  if (out.empty())
-    throw io::InputError(name, firstBad ? firstBad->first : 0, "",
-                         "no NMEA 0183 sentence Reckoner reads (RMC, GGA, GLL, VTG, HDT, VHW, VBW, ZDA)" +
-                             (firstBad ? "; the first line is " + firstBad->second : std::string()));
-  return out;
-}
-
-std::optional<double> timeOfDayOf(const nm::Sentence& s) {
-  std::optional<double> tod;
-  std::visit(
-      [&](const auto& b) {
-        using T = std::decay_t<decltype(b)>;
-        if constexpr (std::is_same_v<T, nm::Rmc> || std::is_same_v<T, nm::Gga> || std::is_same_v<T, nm::Zda>)
-          tod = b.timeOfDayS;
-        else if constexpr (std::is_same_v<T, nm::Gll>)
-          tod = b.timeOfDayS;
-      },
-      s.body);
-  return tod;
-}
-
-std::optional<nm::Date> dateOf(const nm::Sentence& s) {
-  if (const auto* rmc = std::get_if<nm::Rmc>(&s.body)) return rmc->date;
-  if (const auto* zda = std::get_if<nm::Zda>(&s.body)) return zda->date;
-  return std::nullopt;
-}
-
-UtcUs medianOf(std::vector<UtcUs> v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
-
-/// The UTC of each timed sentence (nullopt for the untimed). A dated sentence (RMC with its date, ZDA)
-/// is placed by its own date; the others on the day that puts them nearest the median of the last
-/// eight times, so that midnight is crossed and a lone wrong date misleads nothing else.
-std::vector<std::optional<UtcUs>> timesOf(const std::vector<Parsed>& ps, const std::string& name) {
-  const auto utcOf = [](const nm::Date& d, double tod) {
-    return daysFromCivil(d.year, d.month, d.day) * kUsPerDay + static_cast<UtcUs>(std::llround(tod * 1e6));
-  };
-  std::vector<UtcUs> recent;
-  for (const Parsed& p : ps) {
-    const auto d = dateOf(p.sentence);
-    if (d) {
-      recent.push_back(utcOf(*d, *timeOfDayOf(p.sentence)));
-      break;
-    }
-  }
-  if (recent.empty())
-    throw io::InputError(name, 0, "", "no RMC or ZDA sentence with a date: the replay needs UTC dates");
-  constexpr std::size_t kRecent = 8;
-  std::deque<UtcUs> window(recent.begin(), recent.end());
-  std::vector<std::optional<UtcUs>> out;
-  out.reserve(ps.size());
-  for (const Parsed& p : ps) {
-    const auto tod = timeOfDayOf(p.sentence);
-    if (!tod) {
-      out.emplace_back();
-      continue;
-    }
-    UtcUs t = 0;
-    if (const auto d = dateOf(p.sentence)) {
-      t = utcOf(*d, *tod);
-    } else {
-      const UtcUs inDay = static_cast<UtcUs>(std::llround(*tod * 1e6));
-      const UtcUs ref = medianOf({window.begin(), window.end()});
-      const double day = std::round(static_cast<double>(ref - inDay) / static_cast<double>(kUsPerDay));
-      t = static_cast<UtcUs>(day) * kUsPerDay + inDay;
-    }
-    out.emplace_back(t);
-    window.push_back(t);
-    if (window.size() > kRecent) window.pop_front();
-  }
-  return out;
-}
-
-bool plausibleSpeedKn(double kn) {
-  return std::isfinite(kn) && std::abs(kn) <= kMaxPlausibleSpeedKn;
-}
-
-enum class Use { Used, Unusable, NotGnss, Implausible };
-
-/// What one sentence adds to its epoch (the first source of each quantity in an epoch wins).
-Use apply(const nm::Sentence& s, Epoch& e) {
-  return std::visit(
-      [&](const auto& b) -> Use {
-        using T = std::decay_t<decltype(b)>;
-        if constexpr (std::is_same_v<T, nm::Rmc>) {
-          if (!b.valid) return Use::Unusable;
-          if (!nm::gnssFix(b.mode)) return Use::NotGnss;
-          if (b.sogKn && !plausibleSpeedKn(*b.sogKn)) return Use::Implausible;
-          if (!e.gps) e.gps = geo::GeoPoint{b.latDeg, b.lonDeg};
-          if (b.sogKn && b.cogTrueDeg && !e.gpsVelocity)
-            e.gpsVelocity = std::pair{knotsToMps(*b.sogKn), degToRad(*b.cogTrueDeg)};
-        } else if constexpr (std::is_same_v<T, nm::Gga>) {
-          if (b.quality == 0) return Use::Unusable;
-          if (!nm::gnssFix(b.quality)) return Use::NotGnss;
-          if (!e.gps) e.gps = geo::GeoPoint{b.latDeg, b.lonDeg};
-        } else if constexpr (std::is_same_v<T, nm::Vtg>) {
-          if (!b.cogTrueDeg || b.mode == 'N') return Use::Unusable;
-          if (!nm::gnssFix(b.mode)) return Use::NotGnss;
-          if (!plausibleSpeedKn(b.sogKn)) return Use::Implausible;
-          e.gpsVelocity = std::pair{knotsToMps(b.sogKn), degToRad(*b.cogTrueDeg)};
-        } else if constexpr (std::is_same_v<T, nm::Gll>) {
-          if (!b.valid) return Use::Unusable;
-          if (!nm::gnssFix(b.mode)) return Use::NotGnss;
-          if (s.talker == "LC")
-            e.loran = geo::GeoPoint{b.latDeg, b.lonDeg};
-          else if (!e.gps)
-            e.gps = geo::GeoPoint{b.latDeg, b.lonDeg};
-        } else if constexpr (std::is_same_v<T, nm::Hdt>) {
-          e.headingRad = degToRad(b.headingDeg);
-        } else if constexpr (std::is_same_v<T, nm::Vhw>) {
-          if (!plausibleSpeedKn(b.speedKn)) return Use::Implausible;
-          if (!e.log) e.log = std::pair{knotsToMps(b.speedKn), sensors::SpeedlogMode::BottomLock};
-        } else if constexpr (std::is_same_v<T, nm::Vbw>) {
-          if (b.longGroundKn) {
-            const double kn = std::hypot(*b.longGroundKn, *b.transGroundKn);
-            if (!plausibleSpeedKn(kn)) return Use::Implausible;
-            e.log = std::pair{knotsToMps(kn), sensors::SpeedlogMode::GroundLock};
-          } else if (b.longWaterKn) {
-            const double kn = std::hypot(*b.longWaterKn, *b.transWaterKn);
-            if (!plausibleSpeedKn(kn)) return Use::Implausible;
-            if (!e.log) e.log = std::pair{knotsToMps(kn), sensors::SpeedlogMode::BottomLock};
-          } else {
-            return Use::Unusable;
-          }
-        }
-        // ZDA: time only.
-        return Use::Used;
-      },
-      s.body);
-}
 }  // namespace
 
 std::vector<Plot> readRadar(const std::string& text, const std::string& name, ReplayStats& st,
@@ -331,62 +152,6 @@ std::vector<Plot> readRadar(const std::string& text, const std::string& name, Re
       ++st.radarDuplicates;
   }
   return unique;
-}
-
-std::vector<Epoch> readNmea(const std::string& text, const std::string& name, const StreamTimePolicy& policy,
-                            ReplayStats& st) {
-  const std::vector<Parsed> ps = parseNmea(text, name, st);
-  const std::vector<std::optional<UtcUs>> utc = timesOf(ps, name);
-  std::vector<UtcUs> stamped;
-  for (const auto& u : utc)
-    if (u) stamped.push_back(*u);
-  const std::vector<char> jump = isolatedTimeJumps(stamped, policy);
-  // A group: a timed sentence and the untimed ones after it (they share its time).
-  struct Group {
-    UtcUs utc;
-    std::vector<std::size_t> members;
-  };
-  std::vector<Group> groups;
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    if (utc[i]) {
-      if (jump[k++]) {
-        ++st.timeJumps;  // its untimed followers stay with the group before it
-        continue;
-      }
-      groups.push_back({*utc[i], {i}});
-    } else if (groups.empty()) {
-      ++st.untimed;
-    } else {
-      groups.back().members.push_back(i);
-    }
-  }
-  std::vector<UtcUs> groupTimes;
-  groupTimes.reserve(groups.size());
-  for (const Group& g : groups) groupTimes.push_back(g.utc);
-  std::vector<Epoch> out;
-  for (const std::size_t gi : replayOrder(groupTimes, {}, st.reordered)) {
-    const Group& g = groups[gi];
-    if (out.empty() || out.back().utc != g.utc) out.push_back(Epoch{g.utc, {}, {}, {}, {}, {}});
-    for (const std::size_t i : g.members) {
-      switch (apply(ps[i].sentence, out.back())) {
-        case Use::Used:
-          ++st.sentencesUsed;
-          break;
-        case Use::Unusable:
-          ++st.unusable;
-          break;
-        case Use::NotGnss:
-          ++st.notGnss;
-          break;
-        case Use::Implausible:
-          ++st.implausible;
-          break;
-      }
-    }
-  }
-  std::erase_if(out, [](const Epoch& e) { return e.empty(); });
-  return out;
 }
 
 }  // namespace replay_input

@@ -1,6 +1,8 @@
 #pragma once
 // Reading replay inputs (sim/replay.h): NMEA 0183 sentences into own-ship epochs and radar CSV rows
 // into plots, each in replay order by the stream-time policy (sim/stream_time.h). Internal to replay.
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -12,16 +14,40 @@
 
 namespace reckoner::sim::replay_input {
 
-/// One own-ship epoch being assembled from the sentences that share a timestamp.
+inline constexpr std::int64_t kUsPerDay = 86400LL * 1000000LL;
+
+/// A line of a text file (CR LF or LF; a UTF-8 byte-order mark at the start dropped).
+struct Line {
+  int number;  ///< 1-based
+  std::string_view text;
+};
+std::vector<Line> linesOf(std::string_view text);
+/// A number with surrounding spaces allowed; nullopt unless the whole field is one finite number.
+std::optional<double> toNumber(std::string_view field);
+std::string_view trimmed(std::string_view field);
+
+/// One own-ship epoch: what the active source of each quantity gave at one time (replay_sources.h).
 struct Epoch {
   UtcUs utc = 0;
   std::optional<geo::GeoPoint> gps;
+  std::optional<double> gpsVarM2;  ///< per axis, from the receiver's GST when it sent one
+  double gpsHdop = 1.0;            ///< HDOP of the fix when given (1 otherwise)
   std::optional<std::pair<double, double>> gpsVelocity;  ///< sog m/s, cog true rad
   std::optional<geo::GeoPoint> loran;
-  std::optional<double> headingRad;
+  std::optional<double> headingRad;  ///< true
+  bool headingMagnetic = false;      ///< from a magnetic compass (HDG, HDM, VHW's magnetic field)
   std::optional<std::pair<double, sensors::SpeedlogMode>> log;  ///< m/s
   [[nodiscard]] bool empty() const { return !gps && !gpsVelocity && !loran && !headingRad && !log; }
   [[nodiscard]] bool hasFix() const { return gps || loran; }
+};
+
+/// How an NMEA file is read (ReplayOptions gives them).
+struct NmeaOptions {
+  StreamTimePolicy time;
+  std::optional<std::array<int, 3>> date;  ///< year, month, day for a log without dates
+  std::optional<double> variationDeg;      ///< magnetic variation when the file gives none (east +)
+  double holdS = 3.0;                      ///< replay_sources.h
+  double clockCorrectionS = 1.0;           ///< a source's clock offset this large is corrected
 };
 
 struct Plot {
@@ -31,10 +57,12 @@ struct Plot {
   friend bool operator==(const Plot&, const Plot&) = default;
 };
 
-/// The own-ship epochs of an NMEA file in replay order (empty epochs dropped). Counts into st; throws
-/// io::InputError for a file with no sentence Reckoner reads or without a date.
-std::vector<Epoch> readNmea(const std::string& text, const std::string& name, const StreamTimePolicy& policy,
-                            ReplayStats& st);
+/// The own-ship epochs of an NMEA file in replay order (empty epochs dropped), each source's counts
+/// and clock, and warnings. Counts into st; throws io::InputError for a file with no sentence Reckoner
+/// reads or a datum other than WGS-84.
+std::vector<Epoch> readNmea(const std::string& text, const std::string& name, const NmeaOptions& options,
+                            ReplayStats& st, std::vector<SourceStats>& sources,
+                            std::vector<std::string>& warnings);
 
 /// The plots of a radar CSV in file order, exact repeats dropped (counted). Labels of target_id go to
 /// `labels` (Plot::tag indexes it). Throws io::InputError for a bad header or a file whose every row is bad.

@@ -50,8 +50,8 @@ class TestReplay : public QObject {
     QCOMPARE(*vbw.transWaterKn, 0.2);
     const auto zda =
         std::get<nm::Zda>(nm::parse(nm::withChecksum("GPZDA,201530.00,04,07,2002,00,00")).sentence->body);
-    QCOMPARE(zda.date.day, 4);
-    QCOMPARE(zda.date.year, 2002);
+    QCOMPARE(zda.date->day, 4);
+    QCOMPARE(zda.date->year, 2002);
   }
   void badLinesAreClassifiedNeverThrown() {
     QCOMPARE(nm::parse("$GPHDT,274.07,T*00").error, nm::Error::BadChecksum);

@@ -1,0 +1,556 @@
+// Reading an NMEA 0183 recording into own-ship epochs (sim/replay_input.h): sentences, their sources,
+// their times (dates, midnight, week roll-overs, each source's clock), the stream-time policy, and the
+// active source of each quantity (sim/replay_sources.h).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <map>
+
+#include "common/angles.h"
+#include "common/units.h"
+#include "io/error_line.h"
+#include "io/input_error.h"
+#include "io/nmea.h"
+#include "sim/replay_input.h"
+#include "sim/replay_sources.h"
+
+namespace reckoner::sim::replay_input {
+namespace {
+namespace nm = io::nmea;
+using sources::Kind;
+using sources::Quantity;
+/// 1024 GPS weeks: the date a receiver with a week-number roll-over bug reports is this far back.
+constexpr std::int64_t kRolloverUs = 1024LL * 7 * kUsPerDay;
+
+struct Parsed {
+  int line;
+  nm::Sentence sentence;
+  sources::SourceId source;  ///< "GP:GGA"
+  Kind kind;
+};
+
+const char* typeName(const nm::Body& b) {
+  static constexpr const char* kNames[] = {"RMC", "GGA", "VTG", "GLL", "HDT", "VHW", "VBW", "ZDA",
+                                           "THS", "HDG", "HDM", "ROT", "GNS", "GST", "DTM"};
+  static_assert(std::size(kNames) == std::variant_size_v<nm::Body>);
+  return kNames[b.index()];
+}
+
+/// The quantity a sentence gives (its first, for RMC: position) and its rank (replay_sources.h).
+Kind kindOf(const nm::Sentence& s) {
+  return std::visit(
+      [&](const auto& b) -> Kind {
+        using T = std::decay_t<decltype(b)>;
+        if constexpr (std::is_same_v<T, nm::Gns>) return {Quantity::Position, 0};
+        if constexpr (std::is_same_v<T, nm::Gga>) return {Quantity::Position, 1};
+        if constexpr (std::is_same_v<T, nm::Rmc>) return {Quantity::Position, 2};
+        if constexpr (std::is_same_v<T, nm::Gll>)
+          return s.talker == "LC" ? Kind{Quantity::Loran, 0} : Kind{Quantity::Position, 3};
+        if constexpr (std::is_same_v<T, nm::Vtg>) return {Quantity::Velocity, 1};
+        if constexpr (std::is_same_v<T, nm::Ths>) return {Quantity::Heading, 0};
+        if constexpr (std::is_same_v<T, nm::Hdt>) return {Quantity::Heading, 1};
+        if constexpr (std::is_same_v<T, nm::Hdg>) return {Quantity::Heading, 2};
+        if constexpr (std::is_same_v<T, nm::Hdm>) return {Quantity::Heading, 3};
+        if constexpr (std::is_same_v<T, nm::Vhw>) return {Quantity::SpeedLog, 1};
+        if constexpr (std::is_same_v<T, nm::Vbw>) return {Quantity::SpeedLog, 0};
+        if constexpr (std::is_same_v<T, nm::Gst>) return {Quantity::Accuracy, 0};
+        if constexpr (std::is_same_v<T, nm::Zda>) return {Quantity::Time, 0};
+        return {Quantity::Other, 0};  // ROT, DTM
+      },
+      s.body);
+}
+
+/// Parses every line, counting what is skipped. Throws when the file holds no sentence we read, or a
+/// DTM names a datum other than WGS-84.
+std::vector<Parsed> parseNmea(const std::string& text, const std::string& name, ReplayStats& st) {
+  std::vector<Parsed> out;
+  std::optional<std::pair<int, std::string>> firstBad;
+  for (const Line& l : linesOf(text)) {
+    if (!l.text.empty() && l.text.front() == '#') {  // a comment (gpsd's logs open with some)
+      ++st.nmeaLines;
+      ++st.comments;
+      continue;
+    }
+    auto r = nm::parse(l.text);
+    if (r.error == nm::Error::Empty) continue;
+    ++st.nmeaLines;
+    switch (r.error) {
+      case nm::Error::BadChecksum:
+        ++st.badChecksum;
+        break;
+      case nm::Error::Unknown:
+        ++st.unknownSentences;
+        break;
+      case nm::Error::Proprietary:
+        ++st.proprietary;
+        break;
+      case nm::Error::Malformed:
+        ++st.malformed;
+        break;
+      default: {
+        if (const auto* dtm = std::get_if<nm::Dtm>(&r.sentence->body); dtm && dtm->localDatum != "W84")
+          throw io::InputError(name, l.number, "DTM",
+                               "datum " + io::quoted(dtm->localDatum, 8) +
+                                   " is not WGS-84 (W84): Reckoner takes positions on WGS-84 only");
+        Parsed p{l.number, std::move(*r.sentence), {}, {}};
+        p.source = p.sentence.talker + ":" + typeName(p.sentence.body);
+        p.kind = kindOf(p.sentence);
+        out.push_back(std::move(p));
+        continue;
+      }
+    }
+    if (!firstBad) firstBad.emplace(l.number, std::string(nm::errorName(r.error)) + ": " + r.reason);
+  }
+  if (out.empty())
+    throw io::InputError(name, firstBad ? firstBad->first : 0, "",
+                         "no NMEA 0183 sentence Reckoner reads (RMC, GGA, GNS, GLL, VTG, THS, HDT, HDG, HDM, "
+                         "VHW, VBW, ZDA, ...)" +
+                             (firstBad ? "; the first line is " + firstBad->second : std::string()));
+  return out;
+}
+
+std::optional<double> timeOfDayOf(const nm::Sentence& s) {
+  std::optional<double> tod;
+  std::visit(
+      [&](const auto& b) {
+        using T = std::decay_t<decltype(b)>;
+        if constexpr (std::is_same_v<T, nm::Rmc> || std::is_same_v<T, nm::Gga> ||
+                      std::is_same_v<T, nm::Zda> || std::is_same_v<T, nm::Gns> || std::is_same_v<T, nm::Gst>)
+          tod = b.timeOfDayS;
+        else if constexpr (std::is_same_v<T, nm::Gll>)
+          tod = b.timeOfDayS;
+      },
+      s.body);
+  return tod;
+}
+
+std::optional<nm::Date> dateOf(const nm::Sentence& s) {
+  if (const auto* rmc = std::get_if<nm::Rmc>(&s.body)) return rmc->date;
+  if (const auto* zda = std::get_if<nm::Zda>(&s.body)) return zda->date;
+  return std::nullopt;
+}
+
+UtcUs medianOf(std::vector<UtcUs> v) {
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+UtcUs utcOf(const nm::Date& d, double tod) {
+  return daysFromCivil(d.year, d.month, d.day) * kUsPerDay + static_cast<UtcUs>(std::llround(tod * 1e6));
+}
+
+/// The day of the first dated sentence, or of --date, or (with a warning) 1970-01-01: the reference
+/// the times of day are placed around.
+UtcUs firstDay(const std::vector<Parsed>& ps, const std::string& name, const NmeaOptions& o,
+               std::vector<std::string>& warnings) {
+  for (const Parsed& p : ps)
+    if (const auto d = dateOf(p.sentence)) {
+      const UtcUs t = utcOf(*d, *timeOfDayOf(p.sentence));
+      if (!o.date) return t;
+      // --date against the file's dates: a whole number of 1024-week roll-overs is the receiver's bug.
+      const UtcUs given = daysFromCivil((*o.date)[0], (*o.date)[1], (*o.date)[2]) * kUsPerDay;
+      const double k = std::round(static_cast<double>(given - t) / static_cast<double>(kRolloverUs));
+      if (k >= 1.0 &&
+          std::abs(static_cast<double>(given - t) - k * static_cast<double>(kRolloverUs)) < 2.0 * 86400e6)
+        return t + static_cast<UtcUs>(k) * kRolloverUs;
+      warnings.push_back(
+          io::oneLine(name + ": --date is for a log without dates; this one has them, --date ignored"));
+      return t;
+    }
+  const std::optional<double> tod = [&]() -> std::optional<double> {
+    for (const Parsed& p : ps)
+      if (const auto t = timeOfDayOf(p.sentence)) return t;
+    return std::nullopt;
+  }();
+  if (o.date)
+    return daysFromCivil((*o.date)[0], (*o.date)[1], (*o.date)[2]) * kUsPerDay +
+           std::llround(tod.value_or(0) * 1e6);
+  warnings.push_back(
+      io::oneLine(name + ": no RMC or ZDA sentence with a date: times of day on an unknown date, shown "
+                         "as 1970-01-01 (--date YYYY-MM-DD sets it)"));
+  return std::llround(tod.value_or(0.0) * 1e6);
+}
+
+/// The UTC of each timed sentence (nullopt for the untimed). A dated sentence (RMC with its date, ZDA)
+/// is placed by its own date, unless it lies a whole number of 1024-week roll-overs before the others
+/// (a receiver with the week-number bug: corrected); the others on the day that puts them nearest the
+/// median of the last eight times, so that midnight is crossed and a lone wrong date misleads nothing.
+std::vector<std::optional<UtcUs>> timesOf(const std::vector<Parsed>& ps, const std::string& name,
+                                          const NmeaOptions& o, std::vector<std::string>& warnings) {
+  constexpr std::size_t kRecent = 8;
+  const UtcUs first = firstDay(ps, name, o, warnings);
+  const std::int64_t rollover = [&] {  // the correction the first dated sentence needed (via --date)
+    for (const Parsed& p : ps)
+      if (const auto d = dateOf(p.sentence)) return first - utcOf(*d, *timeOfDayOf(p.sentence));
+    return std::int64_t{0};
+  }();
+  std::deque<UtcUs> window{first};
+  std::vector<std::optional<UtcUs>> out;
+  out.reserve(ps.size());
+  long rolledOver = 0;
+  for (const Parsed& p : ps) {
+    const auto tod = timeOfDayOf(p.sentence);
+    if (!tod) {
+      out.emplace_back();
+      continue;
+    }
+    const UtcUs ref = medianOf({window.begin(), window.end()});
+    UtcUs t = 0;
+    if (const auto d = dateOf(p.sentence)) {
+      t = utcOf(*d, *tod) + rollover;
+      const double k = std::round(static_cast<double>(ref - t) / static_cast<double>(kRolloverUs));
+      if (k >= 1.0 &&
+          std::abs(static_cast<double>(ref - t) - k * static_cast<double>(kRolloverUs)) < 2.0 * 86400e6) {
+        t += static_cast<std::int64_t>(k) * kRolloverUs;
+        ++rolledOver;
+      }
+    } else {
+      const UtcUs inDay = static_cast<UtcUs>(std::llround(*tod * 1e6));
+      const double day = std::round(static_cast<double>(ref - inDay) / static_cast<double>(kUsPerDay));
+      t = static_cast<UtcUs>(day) * kUsPerDay + inDay;
+    }
+    out.emplace_back(t);
+    window.push_back(t);
+    if (window.size() > kRecent) window.pop_front();
+  }
+  if (rollover != 0 || rolledOver > 0)
+    warnings.push_back(
+        io::oneLine(name +
+                    ": dates 1024 weeks (or a multiple) early, a GPS week roll-over, "
+                    "corrected" +
+                    (rolledOver > 0 ? " in " + std::to_string(rolledOver) + " sentences" : std::string())));
+  return out;
+}
+
+/// Shifts the times of every source whose clock runs off the reference's by at least
+/// options.clockCorrectionS (sources_stats gets every estimate).
+void correctClocks(const std::vector<Parsed>& ps, std::vector<std::optional<UtcUs>>& utc,
+                   const NmeaOptions& o, std::map<sources::SourceId, SourceStats>& stats,
+                   const std::string& name, std::vector<std::string>& warnings) {
+  // The reference: the best-ranked position source (first seen among equals).
+  const Parsed* ref = nullptr;
+  for (const Parsed& p : ps)
+    if (p.kind.quantity == Quantity::Position && utc[static_cast<std::size_t>(&p - ps.data())] &&
+        (!ref || p.kind.rank < ref->kind.rank))
+      ref = &p;
+  if (!ref) return;
+  std::vector<std::pair<sources::SourceId, UtcUs>> stamps;
+  for (std::size_t i = 0; i < ps.size(); ++i)
+    if (utc[i]) stamps.emplace_back(ps[i].source, *utc[i]);
+  const auto offsets = sources::clockOffsets(stamps, ref->source);
+  for (const auto& [source, c] : offsets) {
+    SourceStats& s = stats[source];
+    s.clockOffsetS = c.offsetS;
+    s.clockResolutionS = c.resolutionS;
+    if (std::abs(c.offsetS) < o.clockCorrectionS) continue;
+    s.clockCorrected = true;
+    const auto shift = static_cast<std::int64_t>(std::llround(c.offsetS * 1e6));
+    for (std::size_t i = 0; i < ps.size(); ++i)
+      if (utc[i] && ps[i].source == source) *utc[i] -= shift;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, ": %s runs %.1f s (+- %.1f) %s %s; its times are corrected",
+                  source.c_str(), std::abs(c.offsetS), c.resolutionS, c.offsetS > 0 ? "ahead of" : "behind",
+                  ref->source.c_str());
+    warnings.push_back(io::oneLine(name + buf));
+  }
+}
+
+bool plausibleSpeedKn(double kn) {
+  return std::isfinite(kn) && std::abs(kn) <= kMaxPlausibleSpeedKn;
+}
+
+/// A value one sentence offers its epoch; several sources may offer one quantity.
+struct Candidate {
+  sources::Offer offer;  ///< offer.index: the sentence (index into the parsed sentences)
+  geo::GeoPoint position;
+  std::optional<double> hdop;
+  double aMps = 0.0, bRad = 0.0;  ///< velocity: sog, cog; heading: -, heading
+  bool magnetic = false;
+  sensors::SpeedlogMode mode = sensors::SpeedlogMode::BottomLock;
+};
+
+enum class Use { Valid, Unusable, NotGnss, Implausible, NoVariation };
+
+/// The latest magnetic variation known while reading (HDG's or RMC's, else the configured one).
+struct Variation {
+  std::optional<double> deg;
+};
+
+/// What one sentence offers (into `out`), and whether it was valid.
+Use offersOf(const Parsed& p, std::size_t index, Variation& var, std::vector<Candidate>& out) {
+  const auto offer = [&](Quantity q, int rank) {
+    Candidate c;
+    c.offer = {p.source, Kind{q, rank}, index};
+    return c;
+  };
+  const auto heading = [&](double trueDeg, bool magnetic, int rank) {
+    Candidate c = offer(Quantity::Heading, rank);
+    c.bRad = wrapTwoPi(degToRad(trueDeg));
+    c.magnetic = magnetic;
+    out.push_back(c);
+  };
+  return std::visit(
+      [&](const auto& b) -> Use {
+        using T = std::decay_t<decltype(b)>;
+        if constexpr (std::is_same_v<T, nm::Rmc>) {
+          if (b.variationDeg) var.deg = b.variationDeg;
+          if (!b.valid) return Use::Unusable;
+          if (!nm::gnssFix(b.mode)) return Use::NotGnss;
+          if (b.sogKn && !plausibleSpeedKn(*b.sogKn)) return Use::Implausible;
+          Candidate c = offer(Quantity::Position, 2);
+          c.position = {b.latDeg, b.lonDeg};
+          out.push_back(c);
+          if (b.sogKn && b.cogTrueDeg) {
+            Candidate v = offer(Quantity::Velocity, 0);
+            v.aMps = knotsToMps(*b.sogKn);
+            v.bRad = degToRad(*b.cogTrueDeg);
+            out.push_back(v);
+          }
+        } else if constexpr (std::is_same_v<T, nm::Gga> || std::is_same_v<T, nm::Gns>) {
+          bool fix = false;
+          if constexpr (std::is_same_v<T, nm::Gga>) {
+            if (b.quality == 0) return Use::Unusable;
+            fix = nm::gnssFix(b.quality);
+          } else {
+            if (!b.hasPosition) return Use::Unusable;
+            fix = nm::gnssFix(std::string_view(b.modes));
+          }
+          if (!fix) return Use::NotGnss;
+          Candidate c = offer(Quantity::Position, p.kind.rank);
+          c.position = {b.latDeg, b.lonDeg};
+          c.hdop = b.hdop;
+          out.push_back(c);
+        } else if constexpr (std::is_same_v<T, nm::Vtg>) {
+          if (!b.cogTrueDeg || b.mode == 'N') return Use::Unusable;
+          if (!nm::gnssFix(b.mode)) return Use::NotGnss;
+          if (!plausibleSpeedKn(b.sogKn)) return Use::Implausible;
+          Candidate v = offer(Quantity::Velocity, 1);
+          v.aMps = knotsToMps(b.sogKn);
+          v.bRad = degToRad(*b.cogTrueDeg);
+          out.push_back(v);
+        } else if constexpr (std::is_same_v<T, nm::Gll>) {
+          if (!b.valid) return Use::Unusable;
+          if (!nm::gnssFix(b.mode)) return Use::NotGnss;
+          Candidate c = offer(p.kind.quantity, p.kind.rank);
+          c.position = {b.latDeg, b.lonDeg};
+          out.push_back(c);
+        } else if constexpr (std::is_same_v<T, nm::Ths>) {
+          if (b.mode != 'A') return b.mode == 'V' ? Use::Unusable : Use::NotGnss;
+          heading(b.headingDeg, false, 0);
+        } else if constexpr (std::is_same_v<T, nm::Hdt>) {
+          heading(b.headingDeg, false, 1);
+        } else if constexpr (std::is_same_v<T, nm::Hdg>) {
+          if (b.variationDeg) var.deg = b.variationDeg;
+          if (!var.deg) return Use::NoVariation;
+          heading(b.sensorDeg + b.deviationDeg.value_or(0.0) + *var.deg, true, 2);
+        } else if constexpr (std::is_same_v<T, nm::Hdm>) {
+          if (!var.deg) return Use::NoVariation;
+          heading(b.headingDeg + *var.deg, true, 3);
+        } else if constexpr (std::is_same_v<T, nm::Vhw>) {
+          if (!plausibleSpeedKn(b.speedKn)) return Use::Implausible;
+          Candidate l = offer(Quantity::SpeedLog, 1);
+          l.aMps = knotsToMps(b.speedKn);
+          l.mode = sensors::SpeedlogMode::BottomLock;
+          out.push_back(l);
+          // Its heading fields, after every compass sentence (a plotter's copy of them).
+          if (b.headingTrueDeg)
+            heading(*b.headingTrueDeg, false, 4);
+          else if (b.headingMagneticDeg && var.deg)
+            heading(*b.headingMagneticDeg + *var.deg, true, 5);
+        } else if constexpr (std::is_same_v<T, nm::Vbw>) {
+          Candidate l = offer(Quantity::SpeedLog, 0);
+          if (b.longGroundKn) {
+            const double kn = std::hypot(*b.longGroundKn, *b.transGroundKn);
+            if (!plausibleSpeedKn(kn)) return Use::Implausible;
+            l.aMps = knotsToMps(kn);
+            l.mode = sensors::SpeedlogMode::GroundLock;
+          } else if (b.longWaterKn) {
+            const double kn = std::hypot(*b.longWaterKn, *b.transWaterKn);
+            if (!plausibleSpeedKn(kn)) return Use::Implausible;
+            l.aMps = knotsToMps(kn);
+          } else {
+            return Use::Unusable;
+          }
+          out.push_back(l);
+        }
+        // ZDA (time), GST (accuracy, taken with its fix), ROT and DTM: nothing to offer here.
+        return Use::Valid;
+      },
+      p.sentence.body);
+}
+
+/// The epochs, each with the value of the active source of each quantity; counts what each sentence
+/// became (used, standby, skipped by reason) into its source's and the file's counts.
+std::vector<Epoch> assemble(const std::vector<Parsed>& ps, const std::vector<std::size_t>& order,
+                            const std::vector<UtcUs>& groupUtc,
+                            const std::vector<std::vector<std::size_t>>& groups, const NmeaOptions& o,
+                            ReplayStats& st, std::map<sources::SourceId, SourceStats>& stats) {
+  Variation var{o.variationDeg};
+  sources::Selector selector(static_cast<std::int64_t>(std::llround(o.holdS * 1e6)));
+  std::vector<char> used(ps.size(), 0), valid(ps.size(), 0), repeated(ps.size(), 0);
+  std::vector<Epoch> out;
+  std::map<sources::SourceId, UtcUs> activeFrom;  // per quantity's active source: since when
+  UtcUs lastT = 0;
+  bool any = false;
+  std::array<sources::SourceId, sources::kQuantityCount> previous{};
+  const auto credit = [&](UtcUs t) {  // active time of each quantity's source up to t
+    if (!any) return;
+    for (int q = 0; q < sources::kQuantityCount; ++q)
+      if (!previous[static_cast<std::size_t>(q)].empty())
+        stats[previous[static_cast<std::size_t>(q)]].activeS += 1e-6 * static_cast<double>(t - lastT);
+  };
+  for (std::size_t g = 0; g < order.size();) {
+    const UtcUs t = groupUtc[order[g]];
+    std::vector<Candidate> cands;
+    std::map<std::string, std::size_t> gstOf;  // by talker: the sentence
+    for (; g < order.size() && groupUtc[order[g]] == t; ++g) {
+      for (const std::size_t i : groups[order[g]]) {
+        SourceStats& s = stats[ps[i].source];
+        switch (offersOf(ps[i], i, var, cands)) {
+          case Use::Valid:
+            valid[i] = 1;
+            if (std::holds_alternative<nm::Gst>(ps[i].sentence.body)) gstOf[ps[i].sentence.talker] = i;
+            break;
+          case Use::Unusable:
+            ++st.unusable, ++s.unusable;
+            break;
+          case Use::NotGnss:
+            ++st.notGnss, ++s.notMeasured;
+            break;
+          case Use::Implausible:
+            ++st.implausible, ++s.implausible;
+            break;
+          case Use::NoVariation:
+            ++st.noVariation, ++s.unusable;
+            break;
+        }
+      }
+    }
+    credit(t);
+    Epoch e;
+    e.utc = t;
+    for (int qi = 0; qi < sources::kQuantityCount; ++qi) {
+      const auto q = static_cast<Quantity>(qi);
+      std::vector<const sources::Offer*> offers;
+      for (const Candidate& c : cands)
+        if (c.offer.kind.quantity == q) offers.push_back(&c.offer);
+      const sources::Offer* pick = offers.empty() ? nullptr : selector.choose(q, t, offers);
+      previous[static_cast<std::size_t>(qi)] = selector.active(q);
+      if (!pick) continue;
+      const Candidate& c =
+          *std::find_if(cands.begin(), cands.end(), [&](const Candidate& k) { return &k.offer == pick; });
+      used[c.offer.index] = 1;
+      for (const sources::Offer* other : offers)
+        if (other != pick && other->source == pick->source) repeated[other->index] = 1;
+      switch (q) {
+        case Quantity::Position: {
+          e.gps = c.position;
+          e.gpsHdop = c.hdop.value_or(1.0);
+          // The receiver's own error statistics, when it sent them for this fix: the larger axis.
+          if (const auto it = gstOf.find(ps[c.offer.index].sentence.talker); it != gstOf.end()) {
+            const auto& gst = std::get<nm::Gst>(ps[it->second].sentence.body);
+            if (gst.latSdM && gst.lonSdM) {
+              e.gpsVarM2 = std::max(*gst.latSdM * *gst.latSdM, *gst.lonSdM * *gst.lonSdM);
+              used[it->second] = 1;
+            }
+          }
+          break;
+        }
+        case Quantity::Loran:
+          e.loran = c.position;
+          break;
+        case Quantity::Velocity:
+          e.gpsVelocity = std::pair{c.aMps, c.bRad};
+          break;
+        case Quantity::Heading:
+          e.headingRad = c.bRad;
+          e.headingMagnetic = c.magnetic;
+          break;
+        case Quantity::SpeedLog:
+          e.log = std::pair{c.aMps, c.mode};
+          break;
+        default:
+          break;
+      }
+    }
+    lastT = t;
+    any = true;
+    if (!e.empty()) out.push_back(e);
+  }
+  // Each valid sentence: used (what it offered went in, or it is time or accuracy), or standby.
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (!valid[i]) continue;
+    SourceStats& s = stats[ps[i].source];
+    const Quantity q = ps[i].kind.quantity;
+    if (used[i] || q == Quantity::Time) {
+      ++st.sentencesUsed, ++s.used;
+    } else if (q == Quantity::Other || q == Quantity::Accuracy) {
+      ++st.notUsed;  // ROT, DTM of WGS-84, a GST whose fix was not taken
+    } else if (repeated[i]) {
+      ++st.repeated, ++s.repeated;  // its source gave the epoch's value in an earlier sentence
+    } else {
+      ++st.standby, ++s.standby;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Epoch> readNmea(const std::string& text, const std::string& name, const NmeaOptions& o,
+                            ReplayStats& st, std::vector<SourceStats>& sourcesOut,
+                            std::vector<std::string>& warnings) {
+  const std::vector<Parsed> ps = parseNmea(text, name, st);
+  std::map<sources::SourceId, SourceStats> stats;
+  std::vector<sources::SourceId> firstSeen;
+  for (const Parsed& p : ps) {
+    auto [it, fresh] = stats.try_emplace(p.source);
+    if (fresh) {
+      it->second.source = p.source;
+      it->second.quantity = std::holds_alternative<nm::Rmc>(p.sentence.body)   ? "position+velocity"
+                            : std::holds_alternative<nm::Vhw>(p.sentence.body) ? "speed_log+heading"
+                                                                                : sources::quantityName(p.kind.quantity);
+      firstSeen.push_back(p.source);
+    }
+    ++it->second.sentences;
+  }
+  std::vector<std::optional<UtcUs>> utc = timesOf(ps, name, o, warnings);
+  correctClocks(ps, utc, o, stats, name, warnings);
+  std::vector<UtcUs> stamped;
+  for (const auto& u : utc)
+    if (u) stamped.push_back(*u);
+  const std::vector<char> jump = isolatedTimeJumps(stamped, o.time);
+  // A group: a timed sentence and the untimed ones after it (they share its time).
+  std::vector<UtcUs> groupUtc;
+  std::vector<std::vector<std::size_t>> groups;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (utc[i]) {
+      if (jump[k++]) {
+        ++st.timeJumps;  // its untimed followers stay with the group before it
+        ++stats[ps[i].source].timeJumps;
+        continue;
+      }
+      groupUtc.push_back(*utc[i]);
+      groups.push_back({i});
+    } else if (groups.empty()) {
+      ++st.untimed;
+    } else {
+      groups.back().push_back(i);
+    }
+  }
+  const std::vector<std::size_t> order = replayOrder(groupUtc, {}, st.reordered);
+  std::vector<Epoch> epochs = assemble(ps, order, groupUtc, groups, o, st, stats);
+  if (st.noVariation > 0)
+    warnings.push_back(io::oneLine(name + ": " + std::to_string(st.noVariation) +
+                                   " magnetic headings without a magnetic variation (none in HDG or RMC): "
+                                   "--variation DEG gives it"));
+  sourcesOut.clear();
+  for (const auto& id : firstSeen) sourcesOut.push_back(stats[id]);
+  return epochs;
+}
+
+}  // namespace reckoner::sim::replay_input

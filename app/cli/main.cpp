@@ -1,9 +1,9 @@
 // reckoner-cli: headless runs of the Reckoner engine.
-//   reckoner-cli run SCENARIO [--seed N] [--own-ship-filter drkf|geodetic|lsq] --out DIR [--quiet]
-//   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]
+//   reckoner-cli run SCENARIO [--seed N] [--own-ship-filter drkf|geodetic|lsq] [--profile P] --out DIR [--quiet]
+//   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] [--profile P] --out DIR [--quiet]
 //   reckoner-cli chart info PATH...
 //   reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association]
-//                       [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] --out DIR
+//                       [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] [--profile P] --out DIR
 //   reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR
 //   reckoner-cli compare SCENARIO [--runs N] [--targets LIST] [--threads K] [--seed N] --out DIR [--quiet]
 //   reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]   (exit 1 if a cell fails)
@@ -58,6 +58,7 @@
 #include "sim/scenario_run.h"
 #include "sim/seed001.h"
 #include "sim/seed003.h"
+#include "sim/sensor_profile.h"
 
 namespace {
 
@@ -65,17 +66,20 @@ using namespace reckoner;
 
 constexpr const char* kUsage =
     "usage:\n"
-    "  reckoner-cli run SCENARIO [--seed N] [--own-ship-filter drkf|geodetic|lsq] --out DIR [--quiet]\n"
-    "  reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] --out DIR [--quiet]\n"
+    "  reckoner-cli run SCENARIO [--seed N] [--own-ship-filter drkf|geodetic|lsq] [--profile P] --out DIR\n"
+    "               [--quiet]\n"
+    "  reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] [--profile P] --out DIR [--quiet]\n"
+    "  (P, a sensor profile: paper, imo or realistic; sets the sensors' noise and the filter's models)\n"
     "  reckoner-cli chart info PATH...   (S-57 cells or folders: metadata and feature counts as JSON)\n"
     "  reckoner-cli chart render PATH... --center LAT,LON --scale N --size WxH [--palette day|dusk|night]\n"
     "               [--category base|standard|all] [--safety-contour M] --out FILE.png [--repeat K]\n"
     "  reckoner-cli chart pick PATH... --at LAT,LON [--scale N] [--tolerance PX]   (pick report as JSON)\n"
     "  (PATH builtin:default is the embedded fictional chart)\n"
     "  reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association]\n"
-    "               [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] --out DIR\n"
+    "               [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] [--profile P] --out DIR\n"
     "               (S: no data longer than this restarts the DRKF, default 120; --date: for a log without\n"
-    "               dates; --variation: magnetic variation, east positive, when the file gives none)\n"
+    "               dates; --variation: magnetic variation, east positive, when the file gives none;\n"
+    "               --profile: default realistic, or the --config scenario's own sensor figures)\n"
     "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
     "  reckoner-cli compare SCENARIO [--runs N] [--targets 1,2,5,10,20] [--threads K] [--seed N] --out DIR\n"
     "  reckoner-cli own-ship-compare SCENARIO [--runs N] [--threads K] [--seed N]   (DRKF, seed 002 geodetic "
@@ -201,10 +205,25 @@ void printTracking(const metrics::TrackingStats& t, const sim::RunResult& run) {
                 s.rmsePositionM, s.rmseVelocityMps, s.meanNees);
 }
 
+/// --profile NAME, when given.
+std::optional<sim::SensorProfile> profileOption(const Args& a) {
+  if (!a.options.count("profile")) return std::nullopt;
+  const auto p = sim::sensorProfileFromName(a.options.at("profile"));
+  if (!p) throw UsageError("--profile: expected paper, imo or realistic, got " + io::quoted(a.options.at("profile")));
+  return p;
+}
+
+/// The scenario, with --profile's sensor figures when given.
+sim::Scenario loadProfiled(const Args& a, const std::string& spec) {
+  sim::Scenario s = loadScenario(spec);
+  if (const auto p = profileOption(a)) sim::applySensorProfile(s, *p);
+  return s;
+}
+
 int cmdRun(int argc, char** argv) {
-  const Args a = parseArgs(argc, argv, 2, {"seed", "out", "own-ship-filter"});
+  const Args a = parseArgs(argc, argv, 2, {"seed", "out", "own-ship-filter", "profile"});
   if (a.positional.size() != 1) throw UsageError("run needs exactly one SCENARIO");
-  const sim::Scenario s = loadScenario(a.positional[0]);
+  const sim::Scenario s = loadProfiled(a, a.positional[0]);
   const std::uint64_t seed =
       a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
   sim::OwnShipFilter filter = sim::OwnShipFilter::Drkf;
@@ -338,7 +357,7 @@ int cmdOwnShipCompare(int argc, char** argv) {
 }
 
 int cmdMonteCarlo(int argc, char** argv) {
-  const Args a = parseArgs(argc, argv, 2, {"runs", "threads", "seed", "out"});
+  const Args a = parseArgs(argc, argv, 2, {"runs", "threads", "seed", "out", "profile"});
   if (a.positional.size() != 1) throw UsageError("montecarlo needs exactly one SCENARIO");
   if (!a.options.count("runs")) throw UsageError("--runs N is required");
   const int runs = static_cast<int>(parseCount("runs", a.options.at("runs"), 1, 100000));
@@ -346,7 +365,7 @@ int cmdMonteCarlo(int argc, char** argv) {
   const int threads = a.options.count("threads")
                           ? static_cast<int>(parseCount("threads", a.options.at("threads"), 1, 1024))
                           : hw;
-  const sim::Scenario s = loadScenario(a.positional[0]);
+  const sim::Scenario s = loadProfiled(a, a.positional[0]);
   const std::uint64_t seed =
       a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
   const std::string out = prepareOutDir(a);
@@ -850,7 +869,8 @@ int cmdCompare(int argc, char** argv) {
 int cmdReplay(int argc, char** argv) {
   const Args a =
       parseArgs(argc, argv, 2,
-                {"nmea", "radar", "config", "out", "assume-association", "max-gap", "date", "variation"});
+                {"nmea", "radar", "config", "out", "assume-association", "max-gap", "date", "variation",
+                 "profile"});
   if (!a.positional.empty()) throw UsageError("replay takes no positional arguments (use --nmea FILE)");
   if (!a.options.count("nmea")) throw UsageError("--nmea FILE is required");
   sim::ReplayOptions o;
@@ -860,7 +880,11 @@ int cmdReplay(int argc, char** argv) {
     o.originFromSettings = true;
   } else {
     o.settings = loadScenario("builtin:default");
+    // Recorded data come from real sensors: the realistic profile unless asked otherwise (paper: the
+    // default scenario's figures, seed 000's Table I).
+    sim::applySensorProfile(o.settings, profileOption(a).value_or(sim::SensorProfile::Realistic));
   }
+  if (const auto p = profileOption(a); p && a.options.count("config")) sim::applySensorProfile(o.settings, *p);
   if (!o.settings.radar.fitted) {  // the radar noise a replay assumes without a configured radar
     o.settings.radar.fitted = true;
     o.settings.radar.rangeSdM = 20.0;

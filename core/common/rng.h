@@ -77,6 +77,8 @@ enum RngStream : std::uint64_t {
   kStreamClutter = 8,        ///< radar clutter and per-sweep gyro scatter
   kStreamRadarImage = 9,     ///< the simulated radar image for chart matching (seed 004)
   kStreamRadarDisplay = 10,  ///< radar pictures made only for display (never disturbs a run's stream)
+  kStreamGyroBias = 11,      ///< the gyro's calibration error (its own stream: the paper's stay as they were)
+  kStreamLogScale = 12,      ///< the speedlog's scale-factor error
   kStreamTargetBase = 1000,  ///< target i uses kStreamTargetBase + i
 };
 

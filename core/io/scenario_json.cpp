@@ -234,6 +234,15 @@ void readSensors(Fields& top, sim::Scenario& s) {
     const double var = f.number("markov_variance_m2_s2", Fields::Check::NonNegative);
     s.speedlog.error = {std::sqrt(var), f.number("markov_beta_per_s", Fields::Check::Positive)};
     s.speedlog.whiteVarM2PerS2 = f.number("white_variance_m2_s2", Fields::Check::Positive);
+    if (const JsonValue* k = f.get("scale_error")) {  // not in the paper: none
+      Fields g(top.file(), *k, "sensors.speedlog.scale_error");
+      s.speedlog.scaleError = {g.number("sigma", Fields::Check::NonNegative),
+                               g.number("beta_per_s", Fields::Check::Positive)};
+      if (s.speedlog.scaleError.sigma > 0.2)
+        g.fail(*g.get("sigma"), g.pathOf("sigma"),
+               "must not exceed 0.2 (a log 20% wrong is broken), got " + formatNumber(s.speedlog.scaleError.sigma));
+      g.finish();
+    }
     SpeedlogMode initial = SpeedlogMode::GroundLock;
     if (const JsonValue* m = f.get("mode")) initial = speedlogMode(f, *m, f.pathOf("mode"));
     s.speedlog.mode = StepSchedule<SpeedlogMode>(initial);
@@ -247,6 +256,14 @@ void readSensors(Fields& top, sim::Scenario& s) {
     s.gyro.fitted = true;
     s.gyro.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
     s.gyro.sdRad = degToRad(f.number("sd_deg", Fields::Check::Positive));
+    if (const JsonValue* b = f.get("bias")) {  // not in the paper: none
+      Fields g(top.file(), *b, "sensors.gyro.bias");
+      const double sd = g.number("sigma_deg", Fields::Check::NonNegative);
+      if (sd > 30.0)
+        g.fail(*g.get("sigma_deg"), g.pathOf("sigma_deg"), "must not exceed 30 degrees, got " + formatNumber(sd));
+      s.gyro.bias = {degToRad(sd), g.number("beta_per_s", Fields::Check::Positive)};
+      g.finish();
+    }
     readPowerSchedule(f, s.gyro.power, dur);
     f.finish();
   }
@@ -780,6 +797,12 @@ std::string writeScenario(const sim::Scenario& s) {
     w.key("markov_variance_m2_s2").value(s.speedlog.error.sigma * s.speedlog.error.sigma, kExact);
     w.key("markov_beta_per_s").value(s.speedlog.error.betaPerS, kExact);
     w.key("white_variance_m2_s2").value(s.speedlog.whiteVarM2PerS2, kExact);
+    if (s.speedlog.scaleError.sigma > 0.0) {
+      w.key("scale_error").beginObject();
+      w.key("sigma").value(s.speedlog.scaleError.sigma, kExact);
+      w.key("beta_per_s").value(s.speedlog.scaleError.betaPerS, kExact);
+      w.endObject();
+    }
     w.key("mode").value(sensors::modeName(s.speedlog.mode.initial()));
     writeSchedule(w, s.speedlog.power, &s.speedlog.mode);
     w.endObject();
@@ -788,6 +811,12 @@ std::string writeScenario(const sim::Scenario& s) {
     w.key("gyro").beginObject();
     w.key("rate_hz").value(s.gyro.rateHz, kExact);
     w.key("sd_deg").value(radToDeg(s.gyro.sdRad), kExact);
+    if (s.gyro.bias.sigma > 0.0) {
+      w.key("bias").beginObject();
+      w.key("sigma_deg").value(radToDeg(s.gyro.bias.sigma), kExact);
+      w.key("beta_per_s").value(s.gyro.bias.betaPerS, kExact);
+      w.endObject();
+    }
     writeSchedule(w, s.gyro.power, nullptr);
     w.endObject();
   }

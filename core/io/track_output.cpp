@@ -68,13 +68,22 @@ void writeTargetsCsv(const std::string& path, std::span<const sim::TrackRow> row
 void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) {
   std::string text =
       "t_s,utc,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,"
-      "est_lat_deg,est_lon_deg,sensors,rows\n";
-  char buf[512];
+      "est_lat_deg,est_lon_deg,sensors,rows,est_current_x_mps,est_current_y_mps,sd_current_x_mps,"
+      "sd_current_y_mps,heading_bias_deg,sd_heading_bias_deg,log_scale_pct,sd_log_scale_pct,log_offset_mps,"
+      "sd_log_offset_mps\n";
+  char buf[768];
+  constexpr double kDeg = 180.0 / 3.14159265358979323846;
   for (const auto& o : r.own) {
-    std::snprintf(buf, sizeof buf, "%.6f,%s,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f,%.9f,%.9f,%s,%d\n",
+    const sim::CalibrationEstimate& c = o.calibration;
+    std::snprintf(buf, sizeof buf,
+                  "%.6f,%s,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f,%.9f,%.9f,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,"
+                  "%.3f,%.3f,%.4f,%.4f\n",
                   toSeconds(o.timeUs), sim::formatIso8601(o.utcUs).c_str(), o.estimate.xM, o.estimate.yM,
                   o.estimate.vxMps, o.estimate.vyMps, o.estimate.sdXM, o.estimate.sdYM, o.estimate.sdVxMps,
-                  o.estimate.sdVyMps, o.estimate.latDeg, o.estimate.lonDeg, o.sensors.c_str(), o.rowsApplied);
+                  o.estimate.sdVyMps, o.estimate.latDeg, o.estimate.lonDeg, o.sensors.c_str(), o.rowsApplied,
+                  c.currentXMps, c.currentYMps, c.sdCurrentXMps, c.sdCurrentYMps, c.headingBiasRad * kDeg,
+                  c.sdHeadingBiasRad * kDeg, 100.0 * c.logScale, 100.0 * c.sdLogScale, c.logOffsetMps,
+                  c.sdLogOffsetMps);
     text.append(buf);
   }
   writeTextFile(path, text);

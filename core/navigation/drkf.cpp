@@ -87,6 +87,8 @@ Covariance initialCovariance(const ProcessParams& p, double positionSdM, double 
   sd[kAccX] = sd[kAccY] = std::max(p.acceleration.sigma, kFloor);
   sd[kLoranX] = sd[kLoranY] = std::max(p.loranError.sigma, kFloor);
   sd[kLogBias] = std::max(p.speedlogError.sigma, kFloor);
+  sd[kHeadingBias] = std::max(p.headingBias.sigma, kFloor);
+  sd[kLogScale] = std::max(p.logScale.sigma, kFloor);
   return sd.cwiseAbs2().asDiagonal();
 }
 
@@ -101,6 +103,8 @@ std::array<bool, kStateDim> neesStates(const ProcessParams& p) {
   drop(p.acceleration, {kAccX, kAccY});
   drop(p.loranError, {kLoranX, kLoranY});
   drop(p.speedlogError, {kLogBias});
+  drop(p.headingBias, {kHeadingBias});
+  drop(p.logScale, {kLogScale});
   return keep;
 }
 
@@ -142,8 +146,10 @@ Drkf::Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const Belief&
   }
   rejectedSinceUs_.fill(-1);
   const auto& p = config.process;
-  const double betaMax = std::max(
-      {p.current.betaPerS, p.acceleration.betaPerS, p.loranError.betaPerS, p.speedlogError.betaPerS});
+  // The calibration states count only when modelled (their default beta would shorten the paper's steps).
+  const double betaMax = std::max({p.current.betaPerS, p.acceleration.betaPerS, p.loranError.betaPerS,
+                                   p.speedlogError.betaPerS, p.headingBias.sigma > 0.0 ? p.headingBias.betaPerS : 0.0,
+                                   p.logScale.sigma > 0.0 ? p.logScale.betaPerS : 0.0});
   maxStepUs_ = std::max<TimeUs>(1, fromSeconds(std::min(kMaxPredictStepS, kMaxBetaDt / betaMax)));
 }
 
@@ -293,11 +299,12 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
               const auto mode = s.mode == sensors::SpeedlogMode::GroundLock ? SpeedlogModel::Mode::GroundLock
                                                                             : SpeedlogModel::Mode::BottomLock;
               const double minSpeed = linearisableSpeed(mode == SpeedlogModel::Mode::GroundLock);
-              addBlock(kSpeedlog, SpeedlogModel(mode, minSpeed), est::Vec<1>(g.scale * s.speedMps),
+              addBlock(kSpeedlog, SpeedlogModel(mode, minSpeed, config_.process.logScale.sigma > 0.0),
+                       est::Vec<1>(g.scale * s.speedMps),
                        est::Mat<1>(g.scale * g.scale * s.varM2PerS2));
             },
             [&](const sensors::GyroSample& s) {
-              addBlock(kGyro, GyroHeadingModel(linearisableSpeed(false)),
+              addBlock(kGyro, GyroHeadingModel(linearisableSpeed(false), config_.process.headingBias.sigma > 0.0),
                        est::Vec<1>(wrapTwoPi(s.headingRad - g.convergenceRad)), est::Mat<1>(s.varRad2));
             },
         },

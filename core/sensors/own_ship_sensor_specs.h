@@ -30,6 +30,9 @@ struct SpeedlogSpec {
   double rateHz = 1.0;
   est::GaussMarkov error{std::sqrt(0.5), 0.5};  ///< Table I sigma^2 = 0.5 m^2/s^2, beta = 0.5 /s
   double whiteVarM2PerS2 = 0.01;                ///< not in the paper (docs/drkf.md)
+  /// Scale-factor error k, the log reading (1 + k) times the speed: a slow Gauss-Markov fraction (not
+  /// in the paper: sigma 0; the IMO log standard allows 2% of the speed or 0.2 kn).
+  est::GaussMarkov scaleError{0.0, 1.0};
   StepSchedule<bool> power{true};
   StepSchedule<SpeedlogMode> mode{SpeedlogMode::GroundLock};
 };
@@ -38,6 +41,9 @@ struct GyroSpec {
   bool fitted = true;
   double rateHz = 1.0;
   double sdRad = 0.017453292519943295;  ///< 1 degree (Table I footnote)
+  /// Calibration error, rad: a slow Gauss-Markov offset of every reading (not in the paper: sigma 0; a
+  /// gyrocompass's settle-point error, a heading device's residual deviation).
+  est::GaussMarkov bias{0.0, 1.0};
   StepSchedule<bool> power{true};
 };
 

@@ -43,15 +43,18 @@ SpeedlogSample SpeedlogSimulator::measure(TimeUs t, double speedOverGroundGrid, 
   s.mode = mode;
   const double gridSpeed = s.mode == SpeedlogMode::GroundLock ? speedOverGroundGrid : speedThroughWaterGrid;
   // The Gauss-Markov error is defined on the filter's (grid) speed; report true length.
-  s.speedMps = (gridSpeed + error_.value()) / grid.scale + rng_.normal(0.0, std::sqrt(spec_.whiteVarM2PerS2));
+  const double scaled = spec_.scaleError.sigma > 0.0 ? (1.0 + scale_.value()) * gridSpeed : gridSpeed;
+  s.speedMps = (scaled + error_.value()) / grid.scale + rng_.normal(0.0, std::sqrt(spec_.whiteVarM2PerS2));
   s.varM2PerS2 = spec_.whiteVarM2PerS2;
   return s;
 }
 
 GyroSample GyroSimulator::measure(TimeUs t, double headingGridRad, const geo::GridInfo& grid) {
+  advanceTo(t);
   GyroSample s;
   s.timeUs = t;
-  s.headingRad = wrapTwoPi(headingGridRad + grid.convergenceRad + rng_.normal(0.0, spec_.sdRad));
+  const double bias = spec_.bias.sigma > 0.0 ? bias_.value() : 0.0;
+  s.headingRad = wrapTwoPi(headingGridRad + bias + grid.convergenceRad + rng_.normal(0.0, spec_.sdRad));
   s.varRad2 = spec_.sdRad * spec_.sdRad;
   return s;
 }

@@ -62,29 +62,44 @@ class LoranSimulator {
 
 class SpeedlogSimulator {
  public:
-  SpeedlogSimulator(const SpeedlogSpec& spec, Rng rng, TimeUs t0)
-      : spec_(spec), rng_(rng), error_(spec.error, rng_, t0) {}
-  void advanceTo(TimeUs t) { error_.advanceTo(t, rng_); }
+  /// scaleRng draws the scale-factor error (its own stream, so the paper's draws do not change).
+  SpeedlogSimulator(const SpeedlogSpec& spec, Rng rng, TimeUs t0, Rng scaleRng)
+      : spec_(spec), rng_(rng), error_(spec.error, rng_, t0), scaleRng_(scaleRng),
+        scale_(spec.scaleError, scaleRng_, t0) {}
+  void advanceTo(TimeUs t) {
+    error_.advanceTo(t, rng_);
+    scale_.advanceTo(t, scaleRng_);
+  }
   /// Speeds are true grid speeds (m/s of grid length); the sample reports true length. The mode is
   /// the one in force (the scenario's schedule, or the operator's switch).
   SpeedlogSample measure(TimeUs t, double speedOverGroundGrid, double speedThroughWaterGrid,
                          SpeedlogMode mode, const geo::GridInfo& grid);
   [[nodiscard]] double errorMps() const { return error_.value(); }
+  [[nodiscard]] double scaleError() const { return scale_.value(); }
 
  private:
   SpeedlogSpec spec_;
   Rng rng_;
   GaussMarkovSignal error_;
+  Rng scaleRng_;
+  GaussMarkovSignal scale_;
 };
 
 class GyroSimulator {
  public:
-  GyroSimulator(const GyroSpec& spec, Rng rng) : spec_(spec), rng_(rng) {}
+  /// biasRng draws the calibration error (its own stream).
+  GyroSimulator(const GyroSpec& spec, Rng rng, TimeUs t0, Rng biasRng)
+      : spec_(spec), rng_(rng), biasRng_(biasRng), bias_(spec.bias, biasRng_, t0) {}
+  void advanceTo(TimeUs t) { bias_.advanceTo(t, biasRng_); }
+  /// Advances the bias to t and measures.
   GyroSample measure(TimeUs t, double headingGridRad, const geo::GridInfo& grid);
+  [[nodiscard]] double biasRad() const { return bias_.value(); }
 
  private:
   GyroSpec spec_;
   Rng rng_;
+  Rng biasRng_;
+  GaussMarkovSignal bias_;
 };
 
 }  // namespace reckoner::sensors

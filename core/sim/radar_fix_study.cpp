@@ -62,6 +62,7 @@ RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const r
                                int threads, std::uint64_t seed) {
   Scenario sc = scenario;
   sc.radarMatching.active = StepSchedule<bool>(matching);
+  const est::drkf::ProcessParams process = drkfConfigFor(sc).process;
   std::vector<RunOut> outs(static_cast<std::size_t>(std::max(0, runs)));
   parallelRuns(runs, threads, [&](int i) {
     SimulationEngine e(sc, seed + static_cast<std::uint64_t>(i));
@@ -87,7 +88,7 @@ RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const r
           std::hypot(x[est::drkf::kPosX] - f.truth.position.xM, x[est::drkf::kPosY] - f.truth.position.yM));
       o.hdgErr.push_back(
           std::abs(angleDiff(bearingOf(x[est::drkf::kVelX], x[est::drkf::kVelY]), f.truth.headingRad)));
-      o.nees += est::nees<est::drkf::kStateDim>(f.trueState - f.estimate.x, f.estimate.P);
+      o.nees += nav::drkfNees(f.trueState - f.estimate.x, f.estimate.P, process);
     }
   });
   RadarFixStudy s;

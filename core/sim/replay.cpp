@@ -75,6 +75,29 @@ track::TrackManagerConfig trackerConfigOf(const ReplayOptions& o) {
   return c;
 }
 
+CalibrationEstimate calibrationOf(const est::drkf::Belief& b, const est::drkf::ProcessParams& p) {
+  namespace dk = est::drkf;
+  const auto sd = [&](int i) { return std::sqrt(std::max(0.0, b.P(i, i))); };
+  CalibrationEstimate c;
+  c.currentXMps = b.x[dk::kCurX];
+  c.currentYMps = b.x[dk::kCurY];
+  c.sdCurrentXMps = sd(dk::kCurX);
+  c.sdCurrentYMps = sd(dk::kCurY);
+  if (p.headingBias.sigma > 0.0) {
+    c.headingBiasRad = b.x[dk::kHeadingBias];
+    c.sdHeadingBiasRad = sd(dk::kHeadingBias);
+  }
+  if (p.logScale.sigma > 0.0) {
+    c.logScale = b.x[dk::kLogScale];
+    c.sdLogScale = sd(dk::kLogScale);
+  }
+  if (p.speedlogError.sigma > 0.0) {
+    c.logOffsetMps = b.x[dk::kLogBias];
+    c.sdLogOffsetMps = sd(dk::kLogBias);
+  }
+  return c;
+}
+
 /// Drives the DRKF and the track bank (with a radar file) through the epochs and plots in time order.
 class Runner {
  public:
@@ -239,6 +262,7 @@ void Runner::ownShip(const Epoch& e) {
   r.timeUs = t;
   r.utcUs = e.utc;
   r.estimate = groundEstimateOf(drkf_->belief(), frame_);
+  r.calibration = calibrationOf(drkf_->belief(), config_.process);
   r.sensors = labelOf(samples);
   r.rowsApplied = rep.dim;
   res_.own.push_back(r);

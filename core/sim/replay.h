@@ -95,10 +95,20 @@ struct ReplayStats {
            unusable + notGnss + implausible + noVariation;
   }
 };
+/// The DRKF's current and sensor calibration estimates of one row (grid axes; sd the square roots of
+/// the covariance diagonal). The calibration states are 0 with sd 0 when the profile does not model them.
+struct CalibrationEstimate {
+  double currentXMps = 0, currentYMps = 0, sdCurrentXMps = 0, sdCurrentYMps = 0;
+  double headingBiasRad = 0, sdHeadingBiasRad = 0;
+  double logScale = 0, sdLogScale = 0;
+  double logOffsetMps = 0, sdLogOffsetMps = 0;
+};
+
 struct ReplayOwnRow {
   TimeUs timeUs = 0;  ///< since the first NMEA timestamp
   UtcUs utcUs = 0;
   GroundEstimate estimate;
+  CalibrationEstimate calibration;
   std::string sensors;  ///< the sensors of the epoch's samples
   int rowsApplied = 0;
 };

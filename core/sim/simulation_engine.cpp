@@ -35,6 +35,8 @@ nav::DrkfConfig drkfConfigFor(const Scenario& s) {
   c.process.acceleration = s.filter.acceleration;
   c.process.loranError = s.loran.error;
   c.process.speedlogError = s.speedlog.error;
+  c.process.headingBias = s.gyro.bias;
+  c.process.logScale = s.speedlog.scaleError;
   c.gateProbability = s.filter.gateProbability;
   c.gateReopenS = s.filter.gateReopenS;
   c.minSpeedMps = s.filter.minSpeedMps;
@@ -66,8 +68,8 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
       truth_(scenario.ownShip, scenario.current, Rng(seed, kStreamTruth)),
       gps_(scenario.gps, Rng(seed, kStreamGps)),
       loran_(scenario.loran, Rng(seed, kStreamLoran), 0),
-      speedlog_(scenario.speedlog, Rng(seed, kStreamSpeedlog), 0),
-      gyro_(scenario.gyro, Rng(seed, kStreamGyro)),
+      speedlog_(scenario.speedlog, Rng(seed, kStreamSpeedlog), 0, Rng(seed, kStreamLogScale)),
+      gyro_(scenario.gyro, Rng(seed, kStreamGyro), 0, Rng(seed, kStreamGyroBias)),
       radar_(scenario.radar, Rng(seed, kStreamRadar), Rng(seed, kStreamClutter)),
       radarImageRng_(seed, kStreamRadarImage),
       radarDisplayRng_(seed, kStreamRadarDisplay) {
@@ -87,7 +89,11 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
                                      scenario.filter.initialVelocitySdMps);
   Rng initRng(seed, kStreamFilterInit);
   initial.x = trueState();
-  for (int i = 0; i < kStateDim; ++i) initial.x[i] += initRng.normal(0.0, std::sqrt(initial.P(i, i)));
+  // The calibration states are drawn only when modelled (the paper's draws stay as they were).
+  const auto modelled = nav::neesStates(config.process);
+  for (int i = 0; i < kStateDim; ++i)
+    if (i < kPaperStateDim || modelled[static_cast<std::size_t>(i)])
+      initial.x[i] += initRng.normal(0.0, std::sqrt(initial.P(i, i)));
   drkf_.emplace(config, frame_, initial, 0);
 
   const est::GaussMarkov noCurrent{0.0, 1.0};
@@ -121,6 +127,8 @@ State SimulationEngine::trueState() const {
   x[kLoranX] = loran_.errorXM();
   x[kLoranY] = loran_.errorYM();
   x[kLogBias] = speedlog_.errorMps();
+  x[kHeadingBias] = gyro_.biasRad();
+  x[kLogScale] = speedlog_.scaleError();
   return x;
 }
 
@@ -156,6 +164,7 @@ void SimulationEngine::ownShipEpoch(TimeUs t, SimFrame& frame) {
   truth_.advanceTo(t);
   loran_.advanceTo(t);
   speedlog_.advanceTo(t);
+  gyro_.advanceTo(t);
   const VesselTruth& tr = truth_.state();
   const SensorStates on = sensorStatesAt(scenario_, t);
   const std::size_t first = frame.measurements.size();
@@ -269,6 +278,7 @@ SimFrame SimulationEngine::step() {
   advanceTargetsTo(end);
   loran_.advanceTo(end);
   speedlog_.advanceTo(end);
+  gyro_.advanceTo(end);
   drkf_->predictTo(end);
   timeUs_ = end;
 

@@ -32,8 +32,12 @@ namespace {
 using namespace reckoner;
 namespace dk = est::drkf;
 
-nav::DrkfConfig benchConfig() {
+nav::DrkfConfig benchConfig(bool calibration = false) {
   nav::DrkfConfig c;
+  if (calibration) {  // the realistic profile's heading bias and log scale states (docs/sensor_profiles.md)
+    c.process.headingBias = {degToRad(1.0), 1.0 / 3600.0};
+    c.process.logScale = {0.02, 1.0 / 7200.0};
+  }
   c.process.current = {std::sqrt(0.1), 0.125};
   c.process.acceleration = {0.5, 1.0};
   c.process.loranError = {std::sqrt(1100.0), 0.25};
@@ -54,8 +58,8 @@ std::vector<sensors::OwnShipSample> samplesAt(TimeUs t, bool deadReckoning) {
   return out;
 }
 
-nav::Drkf makeFilter() {
-  const nav::DrkfConfig c = benchConfig();
+nav::Drkf makeFilter(bool calibration = false) {
+  const nav::DrkfConfig c = benchConfig(calibration);
   dk::Belief b;
   b.x.setZero();
   b.x[dk::kVelX] = b.x[dk::kVelY] = 6.0;
@@ -64,8 +68,8 @@ nav::Drkf makeFilter() {
   return nav::Drkf(c, geo::LocalFrame(49.0, -123.0), b, 0);
 }
 
-void cycle(benchmark::State& state, bool deadReckoning) {
-  nav::Drkf f = makeFilter();
+void cycle(benchmark::State& state, bool deadReckoning, bool calibration = false) {
+  nav::Drkf f = makeFilter(calibration);
   // Precompute a long sample sequence so the loop times only the filter.
   constexpr int kEpochs = 4096;
   std::vector<std::vector<sensors::OwnShipSample>> epochs;
@@ -75,7 +79,7 @@ void cycle(benchmark::State& state, bool deadReckoning) {
   for (auto _ : state) {
     if (k == kEpochs) {  // restart the filter (not timed) so the state stays consistent with the samples
       state.PauseTiming();
-      f = makeFilter();
+      f = makeFilter(calibration);
       k = 0;
       base = 0;
       state.ResumeTiming();
@@ -91,6 +95,12 @@ void BM_DrkfCycleAllSensors(benchmark::State& state) {
   cycle(state, false);
 }
 BENCHMARK(BM_DrkfCycleAllSensors);
+
+/// The same with the heading-bias and log-scale states modelled (13 states all uncertain).
+void BM_DrkfCycleAllSensorsCalibrated(benchmark::State& state) {
+  cycle(state, false, true);
+}
+BENCHMARK(BM_DrkfCycleAllSensorsCalibrated);
 
 void BM_DrkfCycleDeadReckoning(benchmark::State& state) {
   cycle(state, true);

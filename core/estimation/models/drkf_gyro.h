@@ -4,6 +4,9 @@
 // Seed 000's eq. 7b row 8 uses the ground velocity (x2 + x3, x6 + x7); a gyrocompass measures the
 // ship's heading, which the current does not turn, so we use the water velocity (docs/drkf.md).
 // The innovation is wrapped to (-pi, pi]; below minSpeedMps the heading is undefined (degenerate).
+// With the heading-bias state (withBias): z = atan2(x3, x7) + x12 + v, dz/dx12 = 1 — a gyro's
+// calibration error or a compass's residual deviation, which only a turn separates from a current
+// across the track (docs/drkf.md, "Sensor calibration states").
 #include <cmath>
 
 #include "common/angles.h"
@@ -15,15 +18,20 @@ class GyroHeadingModel {
  public:
   static constexpr int kDim = 1;
 
-  explicit GyroHeadingModel(double minSpeedMps) : minSpeedMps_(minSpeedMps) {}
+  explicit GyroHeadingModel(double minSpeedMps, bool withBias = false)
+      : minSpeedMps_(minSpeedMps), withBias_(withBias) {}
 
-  [[nodiscard]] Vec<1> h(const State& x) const { return Vec<1>(bearingOf(x[kVelX], x[kVelY])); }
+  [[nodiscard]] Vec<1> h(const State& x) const {
+    const double b = bearingOf(x[kVelX], x[kVelY]);
+    return Vec<1>(withBias_ ? wrapTwoPi(b + x[kHeadingBias]) : b);
+  }
   [[nodiscard]] MatRC<1, kStateDim> jacobian(const State& x) const {
     const double vx = x[kVelX], vy = x[kVelY];
     const double r2 = vx * vx + vy * vy;
     MatRC<1, kStateDim> H = MatRC<1, kStateDim>::Zero();
     H(0, kVelX) = vy / r2;
     H(0, kVelY) = -vx / r2;
+    if (withBias_) H(0, kHeadingBias) = 1.0;
     return H;
   }
   [[nodiscard]] Vec<1> residual(const Vec<1>& z, const Vec<1>& zhat) const {
@@ -35,6 +43,7 @@ class GyroHeadingModel {
 
  private:
   double minSpeedMps_;
+  bool withBias_;
 };
 
 }  // namespace reckoner::est::drkf

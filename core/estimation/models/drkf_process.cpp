@@ -18,6 +18,8 @@ ProcessModel::ProcessModel(const ProcessParams& params) : params_(params) {
   check(params.acceleration, "acceleration");
   check(params.loranError, "Loran-C error");
   check(params.speedlogError, "speedlog error");
+  check(params.headingBias, "heading bias");
+  check(params.logScale, "log scale");
 
   // eq. 4c
   F_.setZero();
@@ -32,6 +34,10 @@ ProcessModel::ProcessModel(const ProcessParams& params) : params_(params) {
   F_(kLoranX, kLoranX) = -params.loranError.betaPerS;
   F_(kLoranY, kLoranY) = -params.loranError.betaPerS;
   F_(kLogBias, kLogBias) = -params.speedlogError.betaPerS;
+  // An unmodelled calibration state (sigma 0) is held, not decayed: its variance stays at the floor of
+  // initialCovariance() however long the prediction (a decayed one underflows to a singular P).
+  F_(kHeadingBias, kHeadingBias) = params.headingBias.sigma > 0.0 ? -params.headingBias.betaPerS : 0.0;
+  F_(kLogScale, kLogScale) = params.logScale.sigma > 0.0 ? -params.logScale.betaPerS : 0.0;
 
   // eq. 4d, alpha = sqrt(2 sigma^2 beta) (eq. 1)
   G_.setZero();
@@ -42,6 +48,8 @@ ProcessModel::ProcessModel(const ProcessParams& params) : params_(params) {
   G_(kLoranX, 4) = params.loranError.alpha();
   G_(kLoranY, 5) = params.loranError.alpha();
   G_(kLogBias, 6) = params.speedlogError.alpha();
+  G_(kHeadingBias, 7) = params.headingBias.alpha();
+  G_(kLogScale, 8) = params.logScale.alpha();
 }
 
 Discretised<kStateDim> ProcessModel::discretise(double dtS) const {
@@ -62,6 +70,8 @@ Mat<kStateDim> ProcessModel::printedTransition(double dt) const {
   Phi(kLoranX, kLoranX) = params_.loranError.phi(dt);
   Phi(kLoranY, kLoranY) = params_.loranError.phi(dt);
   Phi(kLogBias, kLogBias) = params_.speedlogError.phi(dt);
+  Phi(kHeadingBias, kHeadingBias) = params_.headingBias.sigma > 0.0 ? params_.headingBias.phi(dt) : 1.0;
+  Phi(kLogScale, kLogScale) = params_.logScale.sigma > 0.0 ? params_.logScale.phi(dt) : 1.0;
   return Phi;
 }
 

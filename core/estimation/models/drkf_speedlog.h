@@ -4,6 +4,8 @@
 //   bottom-lock (speed through water):   z = sqrt(x3^2 + x7^2) + x11 + v
 // The paper's names are kept; note that a Doppler log's "bottom track" is the over-ground mode.
 // |v| is not differentiable at zero speed: below minSpeedMps the model reports itself degenerate.
+// With the scale-factor state (withScale): z = (1 + x13) |v| + x11 + v — the IMO log standard allows
+// 2% of the speed or 0.2 kn; a change of speed separates the two (docs/drkf.md).
 #include <cmath>
 
 #include "estimation/models/drkf_state.h"
@@ -15,18 +17,20 @@ class SpeedlogModel {
   static constexpr int kDim = 1;
   enum class Mode { GroundLock, BottomLock };
 
-  SpeedlogModel(Mode mode, double minSpeedMps) : mode_(mode), minSpeedMps_(minSpeedMps) {}
+  SpeedlogModel(Mode mode, double minSpeedMps, bool withScale = false)
+      : mode_(mode), minSpeedMps_(minSpeedMps), withScale_(withScale) {}
 
   [[nodiscard]] Vec<1> h(const State& x) const {
     const auto [vx, vy] = velocity(x);
-    return Vec<1>(std::hypot(vx, vy) + x[kLogBias]);
+    return Vec<1>(scale(x) * std::hypot(vx, vy) + x[kLogBias]);
   }
   [[nodiscard]] MatRC<1, kStateDim> jacobian(const State& x) const {
     const auto [vx, vy] = velocity(x);
     const double r = std::hypot(vx, vy);
     MatRC<1, kStateDim> H = MatRC<1, kStateDim>::Zero();
-    const double hx = vx / r;  // H72 of eq. 7c (or x3 / r of eq. 7d)
-    const double hy = vy / r;  // H76
+    const double k = scale(x);
+    const double hx = k * vx / r;  // H72 of eq. 7c (or x3 / r of eq. 7d)
+    const double hy = k * vy / r;  // H76
     H(0, kVelX) = hx;
     H(0, kVelY) = hy;
     if (mode_ == Mode::GroundLock) {
@@ -34,6 +38,7 @@ class SpeedlogModel {
       H(0, kCurY) = hy;
     }
     H(0, kLogBias) = 1.0;
+    if (withScale_) H(0, kLogScale) = r;
     return H;
   }
   [[nodiscard]] Vec<1> residual(const Vec<1>& z, const Vec<1>& zhat) const { return z - zhat; }
@@ -47,8 +52,10 @@ class SpeedlogModel {
   [[nodiscard]] std::pair<double, double> velocity(const State& x) const {
     return mode_ == Mode::GroundLock ? std::pair{groundVx(x), groundVy(x)} : std::pair{x[kVelX], x[kVelY]};
   }
+  [[nodiscard]] double scale(const State& x) const { return withScale_ ? 1.0 + x[kLogScale] : 1.0; }
   Mode mode_;
   double minSpeedMps_;
+  bool withScale_;
 };
 
 }  // namespace reckoner::est::drkf

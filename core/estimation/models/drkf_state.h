@@ -1,10 +1,15 @@
 #pragma once
-// The 11-state dead-reckoning filter state of seed 000 eq. 4a (grid frame, x east, y north, SI units).
+// The dead-reckoning filter state: the 11 states of seed 000 eq. 4a (grid frame, x east, y north, SI
+// units) and two sensor-calibration states real sensors need (docs/drkf.md, "Sensor calibration
+// states"). Under the paper's profile their Gauss-Markov sigma is 0: they stay exactly zero and no
+// measurement sees them, so the filter is the paper's.
 #include "estimation/gaussian.h"
 
 namespace reckoner::est::drkf {
 
-inline constexpr int kStateDim = 11;
+inline constexpr int kStateDim = 13;
+/// The paper's state dimension (x1..x11).
+inline constexpr int kPaperStateDim = 11;
 
 /// State indices (paper x1..x11 are kPosX..kLogBias).
 enum Index : int {
@@ -18,7 +23,9 @@ enum Index : int {
   kAccY = 7,      ///< x8  vessel y acceleration, m/s^2
   kLoranX = 8,    ///< x9  Loran-C x position error, m (Gauss-Markov)
   kLoranY = 9,    ///< x10 Loran-C y position error, m (Gauss-Markov)
-  kLogBias = 10,  ///< x11 speedlog error, m/s (Gauss-Markov)
+  kLogBias = 10,  ///< x11 speedlog error, m/s (Gauss-Markov): the log's offset
+  kHeadingBias = 11,  ///< heading sensor's error, rad (Gauss-Markov, slow): gyro error or residual deviation
+  kLogScale = 12,     ///< speedlog scale-factor error, dimensionless (Gauss-Markov, slow)
 };
 
 using State = Vec<kStateDim>;

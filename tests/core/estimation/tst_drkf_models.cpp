@@ -18,7 +18,7 @@ Q_DECLARE_METATYPE(reckoner::est::drkf::State)
 namespace {
 State makeState(double vx, double vy, double cx = 0.3, double cy = -0.2) {
   State x;
-  x << 1200.0, cx, vx, 0.1, -800.0, cy, vy, -0.05, 12.0, -7.0, 0.08;
+  x << 1200.0, cx, vx, 0.1, -800.0, cy, vy, -0.05, 12.0, -7.0, 0.08, 0.012, 0.015;
   return x;
 }
 
@@ -57,6 +57,10 @@ class TestDrkfModels : public QObject {
     checkJacobian(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0.0), x);
     checkJacobian(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0.0), x);
     checkJacobian(GyroHeadingModel(0.0), x);
+    // With the calibration states: the log's scale factor, the heading sensor's bias.
+    checkJacobian(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0.0, true), x);
+    checkJacobian(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0.0, true), x);
+    checkJacobian(GyroHeadingModel(0.0, true), x);
     // The radar fix, plain and with a sensitivity to the velocity and turn rate it was taken with.
     checkJacobian(RadarFixModel(), x);
     Mat<3> S;
@@ -89,6 +93,12 @@ class TestDrkfModels : public QObject {
                      (std::hypot(3.0, 5.0) + 0.08)) < 1e-12);
     // Heading of the water velocity (3, 4): atan2(3, 4) clockwise from north, not of the ground velocity.
     QVERIFY(std::abs(GyroHeadingModel(0).h(x)[0] - std::atan2(3.0, 4.0)) < 1e-12);
+    // The calibration states: reading (1 + k) |v| + b, heading + bias; unseen unless modelled.
+    QVERIFY(std::abs(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0, true).h(x)[0] - (1.015 * 5.0 + 0.08)) <
+            1e-12);
+    QVERIFY(std::abs(GyroHeadingModel(0, true).h(x)[0] - (std::atan2(3.0, 4.0) + 0.012)) < 1e-12);
+    QCOMPARE(GyroHeadingModel(0).jacobian(x)(0, kHeadingBias), 0.0);
+    QCOMPARE(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0).jacobian(x)(0, kLogScale), 0.0);
   }
   void gyroResidualWrapsAcrossNorth() {
     const GyroHeadingModel g(0.0);

@@ -80,13 +80,20 @@ class TestGaussMarkov : public QObject {
     }
   }
   void drkfTransitionIsTheMatrixExponential() {
-    const drkf::ProcessModel m({{0.55, 0.17}, {0.5, 1.0}, {22.4, 0.25}, {0.7, 0.5}});
-    for (double dt : {0.1, 1.0, 2.0}) {
+    // With the calibration states (heading bias, log scale) modelled too.
+    const drkf::ProcessModel m(
+        {{0.55, 0.17}, {0.5, 1.0}, {22.4, 0.25}, {0.7, 0.5}, {0.017, 1.0 / 3600.0}, {0.02, 1.0 / 7200.0}});
+    for (double dt : {0.1, 1.0, 2.0}) {  // the filter never discretises beyond 4 / beta_max in one step
       const auto d = m.discretise(dt);
-      const Mat<11> expFdt = (m.F() * dt).exp();
+      const Mat<drkf::kStateDim> expFdt = (m.F() * dt).exp();
       QVERIFY((d.Phi - expFdt).norm() < 1e-12);
       QVERIFY((d.Q - d.Q.transpose()).norm() == 0.0);
-      QVERIFY(Eigen::SelfAdjointEigenSolver<Mat<11>>(d.Q).eigenvalues().minCoeff() > -1e-12);
+      QVERIFY(Eigen::SelfAdjointEigenSolver<Mat<drkf::kStateDim>>(d.Q).eigenvalues().minCoeff() >
+              -1e-12 * std::max(1.0, d.Q.norm()));
+      // A calibration state is its own first-order Gauss-Markov process (eq. 2b).
+      const double q = drkf::ProcessParams{{}, {}, {}, {}, {0.017, 1.0 / 3600.0}, {}}.headingBias.discreteVariance(dt);
+      QVERIFY(std::abs(d.Q(drkf::kHeadingBias, drkf::kHeadingBias) - q) < 1e-12 * q + 1e-18);
+      QVERIFY(std::abs(d.Phi(drkf::kLogScale, drkf::kLogScale) - std::exp(-dt / 7200.0)) < 1e-14);
     }
   }
   void printedTransitionIsFirstOrder() {

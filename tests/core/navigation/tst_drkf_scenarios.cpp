@@ -2,6 +2,7 @@
 // The figures these tests print are the ones in docs/consistency.md.
 #include <QTest>
 
+#include "sim/sensor_profile.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;
@@ -65,6 +66,36 @@ class TestDrkfScenarios : public QObject {
     QVERIFY(mc.summary.allPhasesInside);
   }
 
+  void calibrationStatesAreConsistent_data() {
+    QTest::addColumn<int>("profile");
+    QTest::newRow("imo") << static_cast<int>(sim::SensorProfile::Imo);
+    QTest::newRow("realistic") << static_cast<int>(sim::SensorProfile::Realistic);
+  }
+  void calibrationStatesAreConsistent() {
+    // GIVEN the matched-model scenario with a profile's sensors (a gyro with a calibration error, a
+    // log with a scale-factor error, the slow current and Loran-C bias) simulated and modelled alike
+    // WHEN 50 runs are averaged THEN the mean NEES of all 13 states is never above its 95% bounds
+    // (never optimistic), inside them with GNSS and Loran-C, and within 15% of 13 in dead reckoning
+    // (slightly conservative there: docs/consistency.md).
+    QFETCH(int, profile);
+    sim::Scenario sc = test::builtinScenario("matched-model");
+    sim::applySensorProfile(sc, static_cast<sim::SensorProfile>(profile));
+    // The world drawn from the filter's own models: matched.
+    sc.current = *sc.filter.current;
+    sc.ownShip.randomAcceleration = sc.filter.acceleration;
+    const auto runs = sim::runMonteCarlo(sc, kRuns, 2, sc.seed);
+    const auto summary = metrics::summariseMonteCarlo(sc, runs);
+    QCOMPARE(summary.neesDof, 13);
+    for (const auto& p : summary.phases) {
+      qInfo("%s phase %d %-30s mean NEES %.2f (bounds %.2f-%.2f, max %.2f)", sim::nameOf(static_cast<sim::SensorProfile>(profile)),
+            p.stats.phase.index + 1, p.stats.phase.label.c_str(), p.stats.meanNees, summary.bounds.lower,
+            summary.bounds.upper, p.maxMeanNees);
+      const QString label = QString::fromStdString(p.stats.phase.label);
+      QVERIFY2(p.stats.meanNees < summary.bounds.upper, qPrintable(label));
+      const bool fixes = p.stats.phase.kind != metrics::PhaseKind::DeadReckoning;
+      QVERIFY2(p.stats.meanNees > (fixes ? summary.bounds.lower : 0.85 * 13.0), qPrintable(label));
+    }
+  }
   void paperKinematicsStayBelowTwiceTheUpperBound_data() { tableRows(); }
   void paperKinematicsStayBelowTwiceTheUpperBound() {
     // GIVEN the deterministic turns of Table II (a model mismatch) WHEN 50 runs are averaged THEN the

@@ -41,7 +41,7 @@ class TestOwnShipSensors : public QObject {
   void gyroReportsTrueHeading() {
     GyroSpec spec;
     spec.sdRad = degToRad(0.001);
-    GyroSimulator gyro(spec, Rng(2, kStreamGyro));
+    GyroSimulator gyro(spec, Rng(2, kStreamGyro), 0, Rng(2, kStreamGyroBias));
     const auto s = gyro.measure(0, degToRad(359.5), {degToRad(1.0), 1.0});
     QVERIFY(std::abs(angleDiff(s.headingRad, degToRad(0.5))) < degToRad(0.01));
     QVERIFY(s.headingRad >= 0.0 && s.headingRad < kTwoPi);
@@ -72,7 +72,7 @@ class TestOwnShipSensors : public QObject {
     SpeedlogSpec spec;
     spec.error = {0.0, 0.5};
     spec.whiteVarM2PerS2 = 1e-12;
-    SpeedlogSimulator log(spec, Rng(4, kStreamSpeedlog), 0);
+    SpeedlogSimulator log(spec, Rng(4, kStreamSpeedlog), 0, Rng(4, kStreamLogScale));
     const auto g = log.measure(5, 7.0, 6.0, SpeedlogMode::GroundLock, {0.0, 0.9996});
     QCOMPARE(g.mode, SpeedlogMode::GroundLock);
     QVERIFY(std::abs(g.speedMps - 7.0 / 0.9996) < 1e-5);

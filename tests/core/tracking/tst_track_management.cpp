@@ -203,7 +203,7 @@ class TestTrackManagement : public QObject {
     QVERIFY((c.ownShip().P - d.belief().P).cwiseAbs().maxCoeff() < 1e-9);
     const GridPlot p{5 * kMicrosPerSecond, 1000.0, 0.0, 100.0, 1e-4};
     QCOMPARE(c.updateRadar(7, p).status, est::UpdateStatus::Accepted);
-    QCOMPARE(c.dim(), 17);
+    QCOMPARE(c.dim(), est::drkf::kStateDim + 6);  // 13 own-ship states (11 of seed 000, 2 calibration)
     QCOMPARE(c.indexOf(7), 0);
     QVERIFY(std::abs(c.target(0)[1] - (d.belief().x[est::drkf::kPosY] + 1000.0)) < 1e-9);
     const double expectVarX = d.belief().P(est::drkf::kPosX, est::drkf::kPosX) + 1e-4 * 1000.0 * 1000.0;

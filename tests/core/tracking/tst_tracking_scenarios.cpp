@@ -178,7 +178,7 @@ class TestTrackingScenarios : public QObject {
           r.targets, r.decoupledRmsePositionM, r.coupledRmsePositionM, r.decoupledRmseVelocityMps,
           r.coupledRmseVelocityMps, r.decoupledMeanNees, r.coupledMeanNees, r.propagationRatio(),
           r.eq10Ratio);
-      QCOMPARE(r.coupledDim, 11 + 6 * r.targets);
+      QCOMPARE(r.coupledDim, est::drkf::kStateDim + 6 * r.targets);
       QVERIFY(std::abs(r.coupledRmsePositionM / r.decoupledRmsePositionM - 1.0) < 0.03);
       QVERIFY(std::abs(r.coupledRmseVelocityMps / r.decoupledRmseVelocityMps - 1.0) < 0.03);
       QVERIFY(r.coupledMeanNees > 3.0 && r.coupledMeanNees < 5.5);

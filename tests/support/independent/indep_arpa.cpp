@@ -1,0 +1,266 @@
+// `arpa`: a straight-running own ship, eight constant-velocity targets and the radar plots of them,
+// with the own-ship sensor errors of the IMO ARPA test budget (A.823(19) annex, MSC.192(79)).
+//
+// Own ship: heading uniform [0, 360) deg and speed through the water uniform [5, 25) kn, both constant;
+// current 0.3 m/s towards a uniform direction; sensors: GNSS as in `ownship` (no outage), gyro with a
+// calibration error of 0.5 deg (random sign) + N(0, 0.1 deg), log through the water (VHW) with a
+// calibration error of 0.5 kn (random sign) + N(0, 0.05 kn), no scale error, no Loran-C.
+//
+// Geometry: every target's range, bearing, relative speed and CPA are drawn to hold at t0 (default
+// 300 s into the run, so a tracker has settled before scoring starts) for the instantaneous relative
+// motion in the tangent plane at own ship's position at t0; CPA and TCPA in params.json are those of
+// straight-line relative motion from there. Every ship then keeps its course and speed over ground
+// (a rhumb line), which curves slightly in that plane (meridian convergence), so the closest range
+// in the truth can differ from the t0 CPA by metres to a few tens of metres.
+//
+// Radar model (all numbers are the constants below; params.json repeats them):
+//  * antenna: one rotation per 2.5 s, clockwise, at the ship's heading marker at t = 0, 2.5, 5, ...
+//    A target is seen when the antenna points at it: the plot time solves
+//    t = 2.5 s * (n + relative bearing(t) / 360 deg) for rotation n, with the relative bearing
+//    unwrapped along the run, so one plot per rotation, about 2.5 s apart, even for a target that
+//    crosses the heading line. truth_targets.csv holds every target at each rotation start.
+//  * plot errors: the IMO A.823(19) radar error budget (Annex 3), each term drawn independently:
+//      - range: geodesic distance to the target's reference point (glint, below) + N(0, 20 m)
+//        (pulse shape), then quantised: rounded to the nearest multiple of 0.02 NM (37.04 m).
+//      - bearing (true): geodesic azimuth at own ship
+//          + the gyro's calibration error (the picture is gyro-stabilised, so the gyro's constant
+//            +-0.5 deg, the same value as in $HEHDT, is in the plots too),
+//          + gyro scatter N(0, 0.12 deg): one draw per antenna rotation (the rotation that starts at
+//            the heading marker at 2.5 s * floor(t / 2.5 s)), common to every plot of that rotation
+//            and independent of the N(0, 0.1 deg) noise of $HEHDT,
+//          + N(0, 0.05 deg) (beam shape) + N(0, 0.03 deg) (bearing encoder): A.823's "0.05 + 0.03 deg"
+//            read as two independent random sources, each drawn per plot; their sum is
+//            N(0, sqrt(0.05^2 + 0.03^2) = 0.0583 deg),
+//          + antenna backlash, uniform [-0.05, +0.05) deg per plot,
+//        then wrapped to [0, 360) and quantised: rounded to the nearest multiple of 0.2 deg
+//        (359.9 deg and above become 0.0).
+//        Zero-mean bearing terms together, about the calibration error, without glint:
+//        sqrt(0.12^2 + 0.05^2 + 0.03^2 + 0.05^2/3 + 0.2^2/12) = 0.148 deg.
+//  * glint: the reference point lies uniform +-30 m along the target's course from its centre,
+//    drawn anew for every plot.
+//  * detection probability 0.95 per target per rotation; no plot beyond 12 NM (true range) or when
+//    the reported (noisy, quantised) range is under 50 m (the radar's minimum range). No clutter.
+//  Every draw is made for every rotation, detected or not, so rotation n's errors are fixed by the seed.
+#include "indep_sim.h"
+
+#include <GeographicLib/LocalCartesian.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace reckoner_indep {
+
+namespace {
+constexpr int kTargets = 8;
+constexpr double kRotationS = 2.5;
+constexpr double kDetectionProbability = 0.95;
+constexpr double kGlintHalfLengthM = 30.0, kMaxRangeNm = 12.0, kMinRangeM = 50.0;
+// A.823(19) Annex 3 radar error budget (see the top of this file).
+constexpr double kRangeSdM = 20.0;                        // pulse shape
+constexpr double kBeamSdDeg = 0.05, kEncoderSdDeg = 0.03;  // random bearing terms, per plot
+constexpr double kBacklashHalfDeg = 0.05;                 // antenna backlash, uniform +-
+constexpr double kGyroScatterSdDeg = 0.12;                // per rotation, common to its plots
+constexpr double kRangeQuantumM = 0.02 * kMetresPerNm;     // 37.04 m
+constexpr double kBearingQuantumDeg = 0.2;
+constexpr double kTargetSpeedMaxKn = 40.0, kCurrentMps = 0.3;
+
+struct Target {
+  std::string id;
+  LatLon atT0;
+  double sogMps = 0.0, cogDeg = 0.0;
+  // drawn geometry at t0
+  double rangeNm = 0.0, bearingDeg = 0.0, relSpeedKn = 0.0, relCourseDeg = 0.0, cpaNm = 0.0, tcpaS = 0.0;
+  int resamples = 0;
+  LatLon at(double t0S, double tS) const { return rhumbDirect(atT0, cogDeg, sogMps * (tS - t0S)); }
+};
+
+struct Plot {
+  std::int64_t tUs;
+  double rangeM, bearingDeg;
+  std::string id;
+};
+}  // namespace
+
+int runArpa(const ArpaOptions& o) {
+  ensureDirectory(o.outDir);
+  Rng params = makeRng(o.seed, Stream::Params);
+  Rng targetRng = makeRng(o.seed, Stream::Targets);
+
+  // ---- Own ship: constant heading and speed through the water in a constant current ----
+  const LatLon start{47.6 + params.uniform(-0.1, 0.1), -122.4 + params.uniform(-0.1, 0.1)};
+  const double headingDeg = params.uniform(0.0, 360.0);
+  const double stwMps = params.uniform(5.0, 25.0) * kMpsPerKnot;
+  const Enu currentMps = enuFromPolar(kCurrentMps, params.uniform(0.0, 360.0));
+  SensorModel model;
+  model.gnssWhiteSdM = params.uniform(3.0, 5.0);
+  model.gyroBiasDeg = 0.5 * params.sign();  // A.823: gyro calibration error 0.5 deg
+  model.gyroNoiseSdDeg = 0.1;
+  model.logScale = 0.0;
+  model.logOffsetKn = 0.5 * params.sign();  // A.823: log calibration error 0.5 kn
+  model.logNoiseSdKn = 0.05;
+  const Enu ownVelocityMps = enuFromPolar(stwMps, headingDeg) + currentMps;
+  const double ownSogMps = ownVelocityMps.norm(), ownCogDeg = azimuthDegOf(ownVelocityMps);
+  auto ownAt = [&](double tS) { return rhumbDirect(start, ownCogDeg, ownSogMps * tS); };
+
+  const UtcClock clock{unixSecondsFromCivil(2026, 6, 15, 10, 0, 0)};
+  const std::int64_t endUs = static_cast<std::int64_t>(std::floor(o.durationS)) * 1000000;
+  std::vector<TruthRow> rows;
+  for (std::int64_t tUs = 0; tUs <= endUs; tUs += 1000000)
+    rows.push_back(TruthRow{tUs, ownAt(static_cast<double>(tUs) * 1e-6), ownSogMps, ownCogDeg, headingDeg, stwMps,
+                            currentMps, true});
+
+  // ---- Targets: geometry drawn at t0 in the tangent plane at own ship's position then
+  // (GeographicLib::LocalCartesian, x east, y north), resampled while implausible. Own ship is at
+  // the plane's origin, where its local velocity is its plane velocity. A target's local course is
+  // the azimuth, at its own position, of its plane velocity (meridians converge: at 11 NM east or west
+  // local north is ~0.2 deg off the plane's, which would move a CPA by hundreds of metres). ----
+  const LatLon ownT0 = ownAt(o.t0S);
+  const GeographicLib::LocalCartesian plane(ownT0.latDeg, ownT0.lonDeg, 0.0);
+  auto fromPlane = [&](const Enu& p) {
+    LatLon q;
+    double hM = 0.0;
+    plane.Reverse(p.x(), p.y(), 0.0, q.latDeg, q.lonDeg, hM);  // foot of the ellipsoid normal
+    return q;
+  };
+  std::vector<Target> targets;
+  for (int i = 0; i < kTargets; ++i) {
+    Target t;
+    t.id = std::string("T").append(std::to_string(i + 1));  // (not "T" + ...: GCC 12 -Wrestrict false positive)
+    Enu positionM, velocityMps;
+    for (;; ++t.resamples) {
+      if (t.resamples > 100000) throw std::runtime_error("cannot place target " + t.id);
+      t.rangeNm = targetRng.uniform(3.0, 11.0);
+      t.bearingDeg = targetRng.uniform(0.0, 360.0);
+      t.relSpeedKn = targetRng.uniform(8.0, 30.0);
+      t.cpaNm = targetRng.uniform(0.0, 2.0);
+      const double side = targetRng.sign();
+      // Relative motion at angle alpha off the line of sight towards own ship: miss distance
+      // R sin(alpha) = CPA, closing component R cos(alpha) > 0 (CPA <= 2 < 3 <= R).
+      const double alphaDeg = std::asin(t.cpaNm / t.rangeNm) * kDegPerRad;
+      t.relCourseDeg = wrapDeg360(t.bearingDeg + 180.0 + side * alphaDeg);
+      t.tcpaS = t.rangeNm * kMetresPerNm * std::cos(alphaDeg / kDegPerRad) / (t.relSpeedKn * kMpsPerKnot);
+      positionM = enuFromPolar(t.rangeNm * kMetresPerNm, t.bearingDeg);
+      velocityMps = ownVelocityMps + enuFromPolar(t.relSpeedKn * kMpsPerKnot, t.relCourseDeg);
+      if (velocityMps.norm() <= kTargetSpeedMaxKn * kMpsPerKnot) break;
+    }
+    t.atT0 = fromPlane(positionM);
+    const double dtS = 1.0;  // local velocity from the plane step of 1 s (curvature terms ~1e-9 m)
+    const RangeBearing step = rangeBearing(t.atT0, fromPlane(positionM + velocityMps * dtS));
+    t.sogMps = step.rangeM / dtS;
+    t.cogDeg = step.bearingDeg;
+    targets.push_back(t);
+  }
+
+  // ---- Radar plots and the targets' truth at every rotation start ----
+  std::vector<Plot> plots;
+  const double endS = static_cast<double>(endUs) * 1e-6;
+  // Gyro scatter of every rotation k (from 2.5 k s), drawn up front from its own stream, so it is the
+  // same for every target's plots in that rotation and independent of the targets' draws.
+  std::vector<double> sweepScatterDeg(static_cast<std::size_t>(std::floor(endS / kRotationS)) + 1);
+  {
+    Rng sweepRng = makeRng(o.seed, Stream::RadarSweep);
+    for (double& scatterDeg : sweepScatterDeg) scatterDeg = sweepRng.normal(kGyroScatterSdDeg);
+  }
+  auto quantise = [](double value, double quantum) { return std::round(value / quantum) * quantum; };
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const Target& tg = targets[i];
+    Rng radarRng = makeRng(o.seed + 0x100000001B3ULL * (i + 1), Stream::Radar);  // one stream per target
+    auto relativeBearing = [&](double tS) {
+      return rangeBearing(ownAt(tS), tg.at(o.t0S, tS)).bearingDeg - headingDeg;
+    };
+    double unwrappedDeg = wrapDeg360(relativeBearing(0.0));  // continuous along the run
+    for (int n = 0;; ++n) {
+      double tS = kRotationS * (n + unwrappedDeg / 360.0);
+      for (int it = 0; it < 6; ++it) {  // fixed point: contraction for any range over ~20 m
+        const double b = unwrappedDeg + wrapDeg180(relativeBearing(tS) - unwrappedDeg);
+        tS = kRotationS * (n + b / 360.0);
+      }
+      unwrappedDeg += wrapDeg180(relativeBearing(tS) - unwrappedDeg);
+      // Every draw is made for every rotation, detected or not, so the errors of rotation n are fixed.
+      const double detect = radarRng.uniform01();
+      const double glintM = radarRng.uniform(-kGlintHalfLengthM, kGlintHalfLengthM);
+      const double rangeNoiseM = radarRng.normal(kRangeSdM);
+      const double beamNoiseDeg = radarRng.normal(kBeamSdDeg);
+      const double encoderNoiseDeg = radarRng.normal(kEncoderSdDeg);
+      const double backlashDeg = radarRng.uniform(-kBacklashHalfDeg, kBacklashHalfDeg);
+      if (tS > endS) break;
+      if (tS < 0.0) continue;
+      const std::int64_t tUs = std::llround(tS * 1e6);
+      const double exactS = static_cast<double>(tUs) * 1e-6;  // truth at the written time
+      const LatLon reference = offsetEnu(tg.at(o.t0S, exactS), enuFromPolar(glintM, tg.cogDeg));
+      const RangeBearing rb = rangeBearing(ownAt(exactS), reference);
+      const double rangeM = quantise(rb.rangeM + rangeNoiseM, kRangeQuantumM);
+      if (detect >= kDetectionProbability || rb.rangeM > kMaxRangeNm * kMetresPerNm || rangeM < kMinRangeM) continue;
+      const auto rotation = std::min(static_cast<std::size_t>(std::floor(exactS / kRotationS)),
+                                     sweepScatterDeg.size() - 1);
+      double bearingDeg = quantise(wrapDeg360(rb.bearingDeg + model.gyroBiasDeg + sweepScatterDeg[rotation] +
+                                              beamNoiseDeg + encoderNoiseDeg + backlashDeg),
+                                   kBearingQuantumDeg);
+      if (bearingDeg >= 360.0 - 0.5 * kBearingQuantumDeg) bearingDeg = 0.0;  // 360.0 is north
+      plots.push_back(Plot{tUs, rangeM, bearingDeg, tg.id});
+    }
+  }
+  std::stable_sort(plots.begin(), plots.end(), [](const Plot& a, const Plot& b) { return a.tUs < b.tUs; });
+
+  std::string radar = "utc,range_m,bearing_deg,target_id\n";
+  for (const Plot& p : plots)
+    radar += clock.iso(p.tUs, 6) + fmt(",%.2f", p.rangeM) + fmt(",%.4f", p.bearingDeg) + "," + p.id + "\n";
+  std::string truthTargets = "utc,t_s,target_id,lat_deg,lon_deg,sog_mps,cog_deg\n";
+  for (std::int64_t tUs = 0; tUs <= endUs; tUs += static_cast<std::int64_t>(kRotationS * 1e6)) {
+    const double tS = static_cast<double>(tUs) * 1e-6;
+    for (const Target& tg : targets) {
+      const LatLon p = tg.at(o.t0S, tS);
+      char buf[160];
+      std::snprintf(buf, sizeof buf, ",%.3f,%s,%.9f,%.9f,%.4f,%.4f\n", tS, tg.id.c_str(), p.latDeg, p.lonDeg,
+                    tg.sogMps, tg.cogDeg);
+      truthTargets += clock.iso(tUs, 3) + buf;
+    }
+  }
+
+  // ---- Files ----
+  writeTruthCsv(o.outDir + "/truth.csv", clock, rows);
+  writeOwnShipNmea(o.outDir + "/ownship.nmea", clock, rows, model, o.seed);
+  writeTextFile(o.outDir + "/radar.csv", radar);
+  writeTextFile(o.outDir + "/truth_targets.csv", truthTargets);
+
+  std::string targetText;
+  for (const Target& t : targets) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "%s\n    {\"id\": \"%s\", \"range_nm\": %.6f, \"bearing_deg\": %.6f, \"rel_speed_kn\": %.6f, "
+                  "\"rel_course_deg\": %.6f, \"cpa_nm\": %.6f, \"tcpa_s\": %.3f, \"sog_kn\": %.6f, "
+                  "\"cog_deg\": %.6f, \"lat_deg_at_t0\": %.9f, \"lon_deg_at_t0\": %.9f, \"resamples\": %d}",
+                  targetText.empty() ? "" : ",", t.id.c_str(), t.rangeNm, t.bearingDeg, t.relSpeedKn,
+                  t.relCourseDeg, t.cpaNm, t.tcpaS, t.sogMps / kMpsPerKnot, t.cogDeg, t.atT0.latDeg, t.atT0.lonDeg,
+                  t.resamples);
+    targetText += buf;
+  }
+  char head[4096];
+  std::snprintf(head, sizeof head,
+                "{\n  \"generator\": \"reckoner-indep-sim arpa\",\n  \"seed\": %llu,\n"
+                "  \"start_utc\": \"%s\",\n  \"duration_s\": %.3f,\n  \"t0_s\": %.3f,\n  \"t0_utc\": \"%s\",\n"
+                "  \"own\": {\"start_lat_deg\": %.9f, \"start_lon_deg\": %.9f, \"heading_deg\": %.6f, "
+                "\"stw_kn\": %.6f, \"sog_kn\": %.6f, \"cog_deg\": %.6f, \"lat_deg_at_t0\": %.9f, "
+                "\"lon_deg_at_t0\": %.9f},\n"
+                "  \"current\": {\"speed_mps\": %.3f, \"set_deg\": %.6f},\n"
+                "  \"radar\": {\"rotation_s\": %.2f, \"plot_time\": \"antenna passes the target (bearing-proportional "
+                "from the heading marker)\", \"error_budget\": \"A.823(19) Annex 3\", \"range_sd_m\": %.1f, "
+                "\"range_quantum_m\": %.2f, \"bearing_beam_sd_deg\": %.3f, \"bearing_encoder_sd_deg\": %.3f, "
+                "\"bearing_random_sd_deg\": %.4f, \"bearing_backlash_half_width_deg\": %.3f, "
+                "\"bearing_quantum_deg\": %.2f, \"gyro_calibration_deg\": %.3f, \"gyro_scatter_sd_deg\": %.3f, "
+                "\"detection_probability\": %.2f, \"glint_uniform_half_length_m\": "
+                "%.1f, \"max_range_nm\": %.1f, \"min_range_m\": %.1f, \"plots\": %zu},\n",
+                static_cast<unsigned long long>(o.seed), clock.iso(0, 3).c_str(), o.durationS, o.t0S,
+                clock.iso(std::llround(o.t0S * 1e6), 3).c_str(), start.latDeg, start.lonDeg, headingDeg,
+                stwMps / kMpsPerKnot, ownSogMps / kMpsPerKnot, ownCogDeg, ownT0.latDeg, ownT0.lonDeg, kCurrentMps,
+                azimuthDegOf(currentMps), kRotationS, kRangeSdM, kRangeQuantumM, kBeamSdDeg, kEncoderSdDeg,
+                std::hypot(kBeamSdDeg, kEncoderSdDeg), kBacklashHalfDeg, kBearingQuantumDeg, model.gyroBiasDeg,
+                kGyroScatterSdDeg, kDetectionProbability, kGlintHalfLengthM, kMaxRangeNm, kMinRangeM, plots.size());
+  writeTextFile(o.outDir + "/params.json", std::string(head) + "  \"sensors\": " + sensorModelJson(model) +
+                                               ",\n  \"targets\": [" + targetText + "\n  ]\n}\n");
+  return 0;
+}
+
+}  // namespace reckoner_indep

@@ -1,8 +1,8 @@
 // reckoner-cli: headless runs of the Reckoner engine.
-//   reckoner-cli run SCENARIO [--seed N] [--own-ship-filter drkf|geodetic|lsq] [--profile P] --out DIR [--quiet]
-//   reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] [--profile P] --out DIR [--quiet]
-//   reckoner-cli chart info PATH...
-//   reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association]
+//   reckoner-cli run SCENARIO [--seed N] [--own-ship-filter drkf|geodetic|lsq] [--profile P] --out DIR
+//   [--quiet] reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] [--profile P] --out DIR
+//   [--quiet] reckoner-cli chart info PATH... reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config
+//   SCENARIO] [--assume-association]
 //                       [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] [--profile P] --out DIR
 //   reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR
 //   reckoner-cli compare SCENARIO [--runs N] [--targets LIST] [--threads K] [--seed N] --out DIR [--quiet]
@@ -209,7 +209,9 @@ void printTracking(const metrics::TrackingStats& t, const sim::RunResult& run) {
 std::optional<sim::SensorProfile> profileOption(const Args& a) {
   if (!a.options.count("profile")) return std::nullopt;
   const auto p = sim::sensorProfileFromName(a.options.at("profile"));
-  if (!p) throw UsageError("--profile: expected paper, imo or realistic, got " + io::quoted(a.options.at("profile")));
+  if (!p)
+    throw UsageError("--profile: expected paper, imo or realistic, got " +
+                     io::quoted(a.options.at("profile")));
   return p;
 }
 
@@ -867,10 +869,9 @@ int cmdCompare(int argc, char** argv) {
 }
 
 int cmdReplay(int argc, char** argv) {
-  const Args a =
-      parseArgs(argc, argv, 2,
-                {"nmea", "radar", "config", "out", "assume-association", "max-gap", "date", "variation",
-                 "profile"});
+  const Args a = parseArgs(
+      argc, argv, 2,
+      {"nmea", "radar", "config", "out", "assume-association", "max-gap", "date", "variation", "profile"});
   if (!a.positional.empty()) throw UsageError("replay takes no positional arguments (use --nmea FILE)");
   if (!a.options.count("nmea")) throw UsageError("--nmea FILE is required");
   sim::ReplayOptions o;
@@ -884,7 +885,8 @@ int cmdReplay(int argc, char** argv) {
     // default scenario's figures, seed 000's Table I).
     sim::applySensorProfile(o.settings, profileOption(a).value_or(sim::SensorProfile::Realistic));
   }
-  if (const auto p = profileOption(a); p && a.options.count("config")) sim::applySensorProfile(o.settings, *p);
+  if (const auto p = profileOption(a); p && a.options.count("config"))
+    sim::applySensorProfile(o.settings, *p);
   if (!o.settings.radar.fitted) {  // the radar noise a replay assumes without a configured radar
     o.settings.radar.fitted = true;
     o.settings.radar.rangeSdM = 20.0;

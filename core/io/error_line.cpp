@@ -13,41 +13,51 @@ void appendEscaped(std::string& out, unsigned char c) {
   out += buf;
 }
 
+/// Appends the character at s[i] as one line may show it: a well-formed multi-byte UTF-8 sequence or
+/// a printable ASCII character as it is, any other byte as \xHH. Returns the bytes consumed.
+std::size_t appendVisible(std::string& out, std::string_view s, std::size_t i) {
+  const auto c = static_cast<unsigned char>(s[i]);
+  const std::size_t n = utf8SequenceLength(s, i);
+  if (n > 1) {
+    out.append(s.substr(i, n));
+    return n;
+  }
+  if (n == 1 && c >= 0x20 && c != 0x7F)
+    out += static_cast<char>(c);
+  else
+    appendEscaped(out, c);
+  return 1;
+}
+
 }  // namespace
 
 std::string quoted(std::string_view input, std::size_t maxChars) {
   std::string out = "'";
   std::size_t chars = 0, i = 0;
   while (i < input.size() && chars < maxChars) {
-    const auto c = static_cast<unsigned char>(input[i]);
-    const std::size_t n = utf8SequenceLength(input, i);
-    if (n > 1) {
-      out.append(input.substr(i, n));
-      i += n;
-    } else {
-      switch (c) {
-        case '\n':
-          out += "\\n";
-          break;
-        case '\r':
-          out += "\\r";
-          break;
-        case '\t':
-          out += "\\t";
-          break;
-        case '\\':
-          out += "\\\\";
-          break;
-        case '\'':
-          out += "\\'";
-          break;
-        default:
-          if (n == 1 && c >= 0x20 && c != 0x7F)
-            out += static_cast<char>(c);
-          else
-            appendEscaped(out, c);
-      }
-      ++i;
+    switch (input[i]) {
+      case '\n':
+        out += "\\n";
+        ++i;
+        break;
+      case '\r':
+        out += "\\r";
+        ++i;
+        break;
+      case '\t':
+        out += "\\t";
+        ++i;
+        break;
+      case '\\':
+        out += "\\\\";
+        ++i;
+        break;
+      case '\'':
+        out += "\\'";
+        ++i;
+        break;
+      default:
+        i += appendVisible(out, input, i);
     }
     ++chars;
   }
@@ -86,17 +96,7 @@ std::string oneLine(std::string_view message, std::size_t maxChars) {
       ++chars;
     }
     space = false;
-    const std::size_t n = utf8SequenceLength(message, i);
-    if (n > 1) {
-      out.append(message.substr(i, n));
-      i += n;
-    } else {
-      if (n == 1 && c >= 0x20 && c != 0x7F)
-        out += static_cast<char>(c);
-      else
-        appendEscaped(out, c);
-      ++i;
-    }
+    i += appendVisible(out, message, i);
     ++chars;
   }
   if (i < message.size()) out += "...";

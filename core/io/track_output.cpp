@@ -75,15 +75,16 @@ void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) 
   constexpr double kDeg = 180.0 / 3.14159265358979323846;
   for (const auto& o : r.own) {
     const sim::CalibrationEstimate& c = o.calibration;
-    std::snprintf(buf, sizeof buf,
-                  "%.6f,%s,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f,%.9f,%.9f,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,"
-                  "%.3f,%.3f,%.4f,%.4f\n",
-                  toSeconds(o.timeUs), sim::formatIso8601(o.utcUs).c_str(), o.estimate.xM, o.estimate.yM,
-                  o.estimate.vxMps, o.estimate.vyMps, o.estimate.sdXM, o.estimate.sdYM, o.estimate.sdVxMps,
-                  o.estimate.sdVyMps, o.estimate.latDeg, o.estimate.lonDeg, o.sensors.c_str(), o.rowsApplied,
-                  c.currentXMps, c.currentYMps, c.sdCurrentXMps, c.sdCurrentYMps, c.headingBiasRad * kDeg,
-                  c.sdHeadingBiasRad * kDeg, 100.0 * c.logScale, 100.0 * c.sdLogScale, c.logOffsetMps,
-                  c.sdLogOffsetMps);
+    std::snprintf(
+        buf, sizeof buf,
+        "%.6f,%s,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f,%.9f,%.9f,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,"
+        "%.3f,%.3f,%.4f,%.4f\n",
+        toSeconds(o.timeUs), sim::formatIso8601(o.utcUs).c_str(), o.estimate.xM, o.estimate.yM,
+        o.estimate.vxMps, o.estimate.vyMps, o.estimate.sdXM, o.estimate.sdYM, o.estimate.sdVxMps,
+        o.estimate.sdVyMps, o.estimate.latDeg, o.estimate.lonDeg, o.sensors.c_str(), o.rowsApplied,
+        c.currentXMps, c.currentYMps, c.sdCurrentXMps, c.sdCurrentYMps, c.headingBiasRad * kDeg,
+        c.sdHeadingBiasRad * kDeg, 100.0 * c.logScale, 100.0 * c.sdLogScale, c.logOffsetMps,
+        c.sdLogOffsetMps);
     text.append(buf);
   }
   writeTextFile(path, text);

@@ -147,9 +147,10 @@ Drkf::Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const Belief&
   rejectedSinceUs_.fill(-1);
   const auto& p = config.process;
   // The calibration states count only when modelled (their default beta would shorten the paper's steps).
-  const double betaMax = std::max({p.current.betaPerS, p.acceleration.betaPerS, p.loranError.betaPerS,
-                                   p.speedlogError.betaPerS, p.headingBias.sigma > 0.0 ? p.headingBias.betaPerS : 0.0,
-                                   p.logScale.sigma > 0.0 ? p.logScale.betaPerS : 0.0});
+  const double betaMax =
+      std::max({p.current.betaPerS, p.acceleration.betaPerS, p.loranError.betaPerS, p.speedlogError.betaPerS,
+                p.headingBias.sigma > 0.0 ? p.headingBias.betaPerS : 0.0,
+                p.logScale.sigma > 0.0 ? p.logScale.betaPerS : 0.0});
   maxStepUs_ = std::max<TimeUs>(1, fromSeconds(std::min(kMaxPredictStepS, kMaxBetaDt / betaMax)));
 }
 
@@ -300,11 +301,11 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
                                                                             : SpeedlogModel::Mode::BottomLock;
               const double minSpeed = linearisableSpeed(mode == SpeedlogModel::Mode::GroundLock);
               addBlock(kSpeedlog, SpeedlogModel(mode, minSpeed, config_.process.logScale.sigma > 0.0),
-                       est::Vec<1>(g.scale * s.speedMps),
-                       est::Mat<1>(g.scale * g.scale * s.varM2PerS2));
+                       est::Vec<1>(g.scale * s.speedMps), est::Mat<1>(g.scale * g.scale * s.varM2PerS2));
             },
             [&](const sensors::GyroSample& s) {
-              addBlock(kGyro, GyroHeadingModel(linearisableSpeed(false), config_.process.headingBias.sigma > 0.0),
+              addBlock(kGyro,
+                       GyroHeadingModel(linearisableSpeed(false), config_.process.headingBias.sigma > 0.0),
                        est::Vec<1>(wrapTwoPi(s.headingRad - g.convergenceRad)), est::Mat<1>(s.varRad2));
             },
         },

@@ -1,8 +1,9 @@
 #pragma once
-// The dead-reckoning Kalman filter of seed 000 section 2.0 (its 11 states, and two calibration states). It predicts to each measurement
-// epoch's own timestamp, stacks whatever measurements that epoch has (8 rows with everything on, 2 in
-// dead reckoning), gates each sensor on its own NIS and applies the rest in one Joseph-form update.
-// Measurements referenced to true north are converted to the grid frame here (docs/drkf.md).
+// The dead-reckoning Kalman filter of seed 000 section 2.0 (its 11 states, and two calibration states). It
+// predicts to each measurement epoch's own timestamp, stacks whatever measurements that epoch has (8 rows
+// with everything on, 2 in dead reckoning), gates each sensor on its own NIS and applies the rest in one
+// Joseph-form update. Measurements referenced to true north are converted to the grid frame here
+// (docs/drkf.md).
 #include <array>
 #include <span>
 

@@ -64,7 +64,10 @@ class SpeedlogSimulator {
  public:
   /// scaleRng draws the scale-factor error (its own stream, so the paper's draws do not change).
   SpeedlogSimulator(const SpeedlogSpec& spec, Rng rng, TimeUs t0, Rng scaleRng)
-      : spec_(spec), rng_(rng), error_(spec.error, rng_, t0), scaleRng_(scaleRng),
+      : spec_(spec),
+        rng_(rng),
+        error_(spec.error, rng_, t0),
+        scaleRng_(scaleRng),
         scale_(spec.scaleError, scaleRng_, t0) {}
   void advanceTo(TimeUs t) {
     error_.advanceTo(t, rng_);

@@ -510,9 +510,10 @@ std::vector<Epoch> readNmea(const std::string& text, const std::string& name, co
     auto [it, fresh] = stats.try_emplace(p.source);
     if (fresh) {
       it->second.source = p.source;
-      it->second.quantity = std::holds_alternative<nm::Rmc>(p.sentence.body)   ? "position+velocity"
-                            : std::holds_alternative<nm::Vhw>(p.sentence.body) ? "speed_log+heading"
-                                                                                : sources::quantityName(p.kind.quantity);
+      it->second.quantity = std::holds_alternative<nm::Rmc>(p.sentence.body) ? "position+velocity"
+                            : std::holds_alternative<nm::Vhw>(p.sentence.body)
+                                ? "speed_log+heading"
+                                : sources::quantityName(p.kind.quantity);
       firstSeen.push_back(p.source);
     }
     ++it->second.sentences;

@@ -59,9 +59,8 @@ const Offer* Selector::choose(Quantity q, UtcUs t, const std::vector<const Offer
   // one reports in this epoch (two receivers' epochs need not coincide).
   const Seen& b = st.seen.at(best->source);
   const auto activeSeen = st.seen.find(st.active);
-  const bool bestIsBetter =
-      activeSeen == st.seen.end() || b.rank < activeSeen->second.rank ||
-      (b.rank == activeSeen->second.rank && b.order < activeSeen->second.order);
+  const bool bestIsBetter = activeSeen == st.seen.end() || b.rank < activeSeen->second.rank ||
+                            (b.rank == activeSeen->second.rank && b.order < activeSeen->second.order);
   if (best->source != st.active && bestIsBetter && t - b.since >= holdUs_) {
     st.active = best->source;
     return best;

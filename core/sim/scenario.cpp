@@ -161,12 +161,16 @@ void checkSensors(ScenarioCheck& c, const Scenario& s) {
              squared(limits::kMarkovVelocitySdMps, "m^2/s^2"));
     c.number("sensors.speedlog.markov_beta_per_s", s.speedlog.error.betaPerS, limits::kBetaPerS);
     c.number("sensors.speedlog.white_variance_m2_s2", s.speedlog.whiteVarM2PerS2, velVar);
+    c.number("sensors.speedlog.scale_error.sigma", s.speedlog.scaleError.sigma, limits::kLogScaleSd);
+    c.number("sensors.speedlog.scale_error.beta_per_s", s.speedlog.scaleError.betaPerS, limits::kBetaPerS);
     c.schedule("sensors.speedlog.schedule", s.speedlog.power);
     c.schedule("sensors.speedlog.schedule", s.speedlog.mode);
   }
   if (s.gyro.fitted) {
     c.number("sensors.gyro.rate_hz", s.gyro.rateHz, limits::kRateHz);
     c.number("sensors.gyro.sd_deg", radToDeg(s.gyro.sdRad), limits::kAngleSdDeg);
+    c.number("sensors.gyro.bias.sigma_deg", radToDeg(s.gyro.bias.sigma), limits::kHeadingBiasSdDeg);
+    c.number("sensors.gyro.bias.beta_per_s", s.gyro.bias.betaPerS, limits::kBetaPerS);
     c.schedule("sensors.gyro.schedule", s.gyro.power);
   }
   // The DRKF models the Loran-C and speedlog errors whether or not the sensors are fitted.

@@ -46,6 +46,9 @@ inline constexpr Range kVelocitySdMps{1e-3, 10.0, false, "m/s"};
 inline constexpr Range kMarkovVelocitySdMps{0.0, 10.0, false, "m/s"};
 inline constexpr Range kAngleSdDeg{1e-4, 45.0, false, "deg"};
 inline constexpr Range kAngleErrorDeg{0.0, 45.0, false, "deg"};  ///< backlash, quanta, scatter (0: none)
+inline constexpr Range kHeadingBiasSdDeg{0.0, 30.0, false,
+                                         "deg"};          ///< a heading sensor's calibration (0: none)
+inline constexpr Range kLogScaleSd{0.0, 0.2, false, ""};  ///< a log 20% wrong is broken (0: none)
 inline constexpr Range kSignedAngleErrorDeg{-45.0, 45.0, false, "deg"};
 inline constexpr Range kRangeSdM{1e-2, 1e4, false, "m"};
 inline constexpr Range kRangeQuantumM{0.0, 1e4, false, "m"};

@@ -10,11 +10,11 @@ constexpr double kHour = 3600.0;
 
 /// What real ships carry, and a ship's motion (docs/sensor_profiles.md, "realistic").
 void realistic(Scenario& s) {
-  s.gps.positionVarM2 = 5.0 * 5.0;          // per axis at HDOP 1 (replay scales by HDOP^2 or takes GST)
-  s.gps.velocityVarM2PerS2 = 0.1 * 0.1;     // Doppler speed over ground
-  s.loran.error = {150.0, 1.0 / 600.0};     // additional secondary factor: hundreds of m, minutes
+  s.gps.positionVarM2 = 5.0 * 5.0;       // per axis at HDOP 1 (replay scales by HDOP^2 or takes GST)
+  s.gps.velocityVarM2PerS2 = 0.1 * 0.1;  // Doppler speed over ground
+  s.loran.error = {150.0, 1.0 / 600.0};  // additional secondary factor: hundreds of m, minutes
   s.loran.whiteVarM2 = 20.0 * 20.0;
-  s.speedlog.error = {0.1, 1.0 / kHour};    // offset: 0.2 kn is the IMO log standard's limit
+  s.speedlog.error = {0.1, 1.0 / kHour};  // offset: 0.2 kn is the IMO log standard's limit
   s.speedlog.whiteVarM2PerS2 = 0.06 * 0.06;
   s.speedlog.scaleError = {0.02, 1.0 / (2.0 * kHour)};
   s.gyro.sdRad = degToRad(0.3);
@@ -27,15 +27,15 @@ void realistic(Scenario& s) {
 /// horizontal 95% radius: limit / 2.45).
 void imo(Scenario& s) {
   realistic(s);  // the process model and the Loran-C correlation are not set by any standard
-  s.gps.positionVarM2 = std::pow(13.0 / 2.45, 2);                    // MSC.112(73): 13 m (95%)
+  s.gps.positionVarM2 = std::pow(13.0 / 2.45, 2);  // MSC.112(73): 13 m (95%)
   s.gps.velocityVarM2PerS2 = std::pow(knotsToMps(0.2) / 1.96, 2);
-  s.loran.error = {0.25 * 1852.0 / 2.45, 1.0 / 600.0};               // A.818(19) system: 0.25 NM (95%)
+  s.loran.error = {0.25 * 1852.0 / 2.45, 1.0 / 600.0};  // A.818(19) system: 0.25 NM (95%)
   s.loran.whiteVarM2 = 30.0 * 30.0;
-  s.speedlog.error = {knotsToMps(0.2) / 1.96, 1.0 / kHour};          // MSC.96(72): 0.2 kn or 2%
+  s.speedlog.error = {knotsToMps(0.2) / 1.96, 1.0 / kHour};  // MSC.96(72): 0.2 kn or 2%
   s.speedlog.scaleError = {0.02 / 1.96, 1.0 / (2.0 * kHour)};
   s.speedlog.whiteVarM2PerS2 = std::pow(knotsToMps(0.1), 2);
-  s.gyro.bias = {degToRad(0.75) / 1.96, 1.0 / kHour};                // A.424(XI): settle point 0.75 deg
-  s.gyro.sdRad = degToRad(0.5);                                      // its dynamic errors
+  s.gyro.bias = {degToRad(0.75) / 1.96, 1.0 / kHour};  // A.424(XI): settle point 0.75 deg
+  s.gyro.sdRad = degToRad(0.5);                        // its dynamic errors
 }
 }  // namespace
 

@@ -83,9 +83,17 @@
 #include <string>
 #include <vector>
 
+#include "support/campaign_tools.h"
 #include "support/resource_limits.h"
 
 namespace {
+
+using reckoner::test::Csv;
+using reckoner::test::percentile95;
+using reckoner::test::readCsv;
+using reckoner::test::runTool;
+using reckoner::test::splitFields;
+using reckoner::test::toolPath;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
@@ -126,49 +134,6 @@ double azimuthDeg(const Vec2& v) {
 Vec2 polar(double magnitude, double azimuthDegrees) {
   const double a = azimuthDegrees / kDegPerRad;
   return Vec2(magnitude * std::sin(a), magnitude * std::cos(a));
-}
-
-// ---- Text ----
-std::vector<std::string> split(const std::string& line, char sep) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char c : line) {
-    if (c == sep) {
-      out.push_back(cur);
-      cur.clear();
-    } else if (c != '\r' && c != '\n') {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
-  return out;
-}
-
-/// A CSV file with a header row; rows whose field count differs from the header's are dropped.
-struct Csv {
-  std::map<std::string, std::size_t> column;
-  std::vector<std::vector<std::string>> rows;
-  const std::string& get(const std::vector<std::string>& row, const char* name) const {
-    const auto c = column.find(name);
-    if (c == column.end()) throw std::runtime_error(std::string("no column ") + name);
-    return row[c->second];
-  }
-  double number(const std::vector<std::string>& row, const char* name) const {
-    return std::stod(get(row, name));
-  }
-};
-
-Csv readCsv(const QString& path) {
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) throw std::runtime_error("cannot read " + path.toStdString());
-  Csv csv;
-  const std::vector<std::string> header = split(f.readLine().toStdString(), ',');
-  for (std::size_t i = 0; i < header.size(); ++i) csv.column[header[i]] = i;
-  while (!f.atEnd()) {
-    std::vector<std::string> v = split(f.readLine().toStdString(), ',');
-    if (v.size() == header.size()) csv.rows.push_back(std::move(v));
-  }
-  return csv;
 }
 
 // ---- Time: microseconds since 1970-01-01T00:00:00Z; the tests work in seconds since the run start ----
@@ -486,7 +451,7 @@ OwnFixes readOwnFixes(const QString& path, std::int64_t startUs) {
     unsigned sum = 0;
     for (std::size_t i = 1; i < star; ++i) sum ^= static_cast<unsigned char>(line[i]);
     if (sum != std::stoul(line.substr(star + 1, 2), nullptr, 16)) continue;
-    const std::vector<std::string> v = split(line.substr(1, star - 1), ',');
+    const std::vector<std::string> v = splitFields(line.substr(1, star - 1), ',');
     const std::string type = v[0].size() >= 5 ? v[0].substr(2) : "";
     auto timeS = [&](const std::string& hhmmss) {  // of the day of the last ZDA
       const std::int64_t ofDayUs =
@@ -634,23 +599,6 @@ Errors baselineErrors(const std::vector<Plot>& plots, const OwnFixes& own,
   return errorsOf(est, truth.at(id, tS));
 }
 
-// ---- Running the tools ----
-QString tool(const char* compiled, const char* env) {
-  const QByteArray e = qgetenv(env);
-  return e.isEmpty() ? QString(compiled) : QString::fromLocal8Bit(e);
-}
-
-bool run(const QString& program, const QStringList& args, QString& err) {
-  QProcess p;
-  reckoner::test::limitChildren(p, 300);
-  p.start(program, args);
-  if (!p.waitForFinished(-1) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0) {
-    err = program + " " + args.join(' ') + ": " + QString::fromUtf8(p.readAllStandardError()).left(400);
-    return false;
-  }
-  return true;
-}
-
 /// One target of one run: the errors of Reckoner and of the baseline at 1 and 3 minutes.
 struct Sample {
   int seed = 0;
@@ -663,13 +611,13 @@ struct Sample {
 void scoreRun(const QTemporaryDir& dir, int seed, std::vector<Sample>& samples) {
   const QString out = dir.filePath(QString("arpa-%1").arg(seed));
   QString err;
-  QVERIFY2(run(tool(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"),
-               {"arpa", "--seed", QString::number(seed), "--out", out}, err),
+  QVERIFY2(runTool(toolPath(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"),
+                   {"arpa", "--seed", QString::number(seed), "--out", out}, err),
            qPrintable(err));
-  QVERIFY2(run(tool(RECKONER_CLI, "RECKONER_CLI_UNDER_TEST"),
-               {"replay", "--nmea", out + "/ownship.nmea", "--radar", out + "/radar.csv", "--out",
-                out + "/replay", "--quiet"},
-               err),
+  QVERIFY2(runTool(toolPath(RECKONER_CLI, "RECKONER_CLI_UNDER_TEST"),
+                   {"replay", "--nmea", out + "/ownship.nmea", "--radar", out + "/radar.csv", "--out",
+                    out + "/replay", "--quiet"},
+                   err),
            qPrintable(err));
 
   QFile paramsFile(out + "/params.json");
@@ -727,13 +675,6 @@ void scoreRun(const QTemporaryDir& dir, int seed, std::vector<Sample>& samples) 
   } catch (const std::exception& e) {
     QFAIL(qPrintable(out + ": " + QString::fromStdString(e.what())));
   }
-}
-
-double percentile95(std::vector<double> v) {
-  if (v.empty()) return kInf;
-  std::sort(v.begin(), v.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(v.size())));
-  return v[std::max<std::size_t>(rank, 1) - 1];  // nearest rank
 }
 
 }  // namespace

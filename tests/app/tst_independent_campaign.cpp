@@ -10,9 +10,6 @@
 // (errors inside the sd, and the sd not absurdly larger); without Loran-C, the p95 position error at
 // the end of the outage under 60 m (not met yet: held to the figure measured, see below).
 // docs/consistency.md has the figures.
-#include <QDir>
-#include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -21,89 +18,46 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <vector>
 
+#include "support/campaign_tools.h"
 #include "support/resource_limits.h"
 
 namespace {
+namespace test = reckoner::test;
 
 struct Row {
   double latDeg = 0, lonDeg = 0, sdX = 0, sdY = 0;
   bool gpsOn = true;
-  double tS = 0, sogMps = 0;
+  double tS = 0;
 };
 
-/// Rows keyed by their utc column (ISO 8601 to the millisecond: the first 23 characters).
+/// Rows keyed by their utc column to the second (the first 19 characters of ISO 8601).
 using Rows = std::map<std::string, Row>;
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (char c : line) {
-    if (c == ',') {
-      out.push_back(cur);
-      cur.clear();
-    } else if (c != '\r') {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
-  return out;
-}
-
-/// Reads a CSV with a header into rows; `take` maps a row's named fields to a Row.
+/// Reads a CSV into rows; `take` fills a Row from one of its rows.
 template <class F>
-Rows readCsv(const QString& path, F take) {
+Rows readRows(const QString& path, F take) {
+  const test::Csv csv = test::readCsv(path);
   Rows rows;
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) return rows;
-  const std::vector<std::string> header = split(f.readLine().trimmed().toStdString());
-  std::map<std::string, int> col;
-  for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = static_cast<int>(i);
-  while (!f.atEnd()) {
-    const std::vector<std::string> v = split(f.readLine().trimmed().toStdString());
-    if (v.size() != header.size()) continue;
-    auto get = [&](const char* name) -> const std::string& { return v.at(static_cast<std::size_t>(col.at(name))); };
-    Row r;
-    std::string key;
-    take(get, r, key);
-    rows[key] = r;
-  }
+  for (const auto& v : csv.rows) rows[csv.get(v, "utc").substr(0, 19)] = take(csv, v);
   return rows;
-}
-
-QString tool(const char* compiled, const char* env) {
-  const QByteArray e = qgetenv(env);
-  return e.isEmpty() ? QString(compiled) : QString::fromLocal8Bit(e);
-}
-
-bool run(const QString& program, const QStringList& args, QString& err) {
-  QProcess p;
-  reckoner::test::limitChildren(p, 300);
-  p.start(program, args);
-  if (!p.waitForFinished(-1) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0) {
-    err = program + " " + args.join(' ') + ": " + QString::fromUtf8(p.readAllStandardError()).left(400);
-    return false;
-  }
-  return true;
 }
 
 struct Family {
   std::vector<double> normalised;  ///< axis error / axis sd, over every outage row of every run
   double sumErr2 = 0, sumSd2 = 0;
-  std::vector<double> endErrorM;   ///< position error at the end of each run's outage
+  std::vector<double> endErrorM;  ///< position error at the end of each run's outage
   int runs = 0;
 
   [[nodiscard]] double within(double k) const {
-    const auto n = std::count_if(normalised.begin(), normalised.end(), [k](double z) { return std::abs(z) <= k; });
+    const auto n =
+        std::count_if(normalised.begin(), normalised.end(), [k](double z) { return std::abs(z) <= k; });
     return normalised.empty() ? 0.0 : static_cast<double>(n) / static_cast<double>(normalised.size());
   }
   [[nodiscard]] double ratio() const { return std::sqrt(sumErr2 / sumSd2); }
-  [[nodiscard]] double p95End() const {
-    std::vector<double> e = endErrorM;
-    std::sort(e.begin(), e.end());
-    return e.empty() ? NAN : e[static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(e.size()))) - 1];
-  }
+  [[nodiscard]] double p95End() const { return test::percentile95(endErrorM); }
 };
 
 /// Generates one run, replays it, and adds its outage rows to the family.
@@ -112,25 +66,33 @@ void score(const QTemporaryDir& dir, int seed, bool loran, Family& fam) {
   QString err;
   QStringList genArgs{"ownship", "--seed", QString::number(seed), "--out", out};
   if (loran) genArgs << "--loran";
-  QVERIFY2(run(tool(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"), genArgs, err), qPrintable(err));
-  QVERIFY2(run(tool(RECKONER_CLI, "RECKONER_CLI_UNDER_TEST"),
-               {"replay", "--nmea", out + "/ownship.nmea", "--out", out + "/replay", "--quiet"}, err),
+  QVERIFY2(test::runTool(test::toolPath(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"), genArgs, err),
            qPrintable(err));
-  const Rows truth = readCsv(out + "/truth.csv", [](auto get, Row& r, std::string& key) {
-    key = get("utc").substr(0, 19);
-    r.tS = std::stod(get("t_s"));
-    r.latDeg = std::stod(get("lat_deg"));
-    r.lonDeg = std::stod(get("lon_deg"));
-    r.sogMps = std::stod(get("sog_mps"));
-    r.gpsOn = get("gps_on") == "1";
-  });
-  const Rows est = readCsv(out + "/replay/ownship.csv", [](auto get, Row& r, std::string& key) {
-    key = get("utc").substr(0, 19);
-    r.latDeg = std::stod(get("est_lat_deg"));
-    r.lonDeg = std::stod(get("est_lon_deg"));
-    r.sdX = std::stod(get("sd_x_m"));
-    r.sdY = std::stod(get("sd_y_m"));
-  });
+  QVERIFY2(
+      test::runTool(test::toolPath(RECKONER_CLI, "RECKONER_CLI_UNDER_TEST"),
+                    {"replay", "--nmea", out + "/ownship.nmea", "--out", out + "/replay", "--quiet"}, err),
+      qPrintable(err));
+  Rows truth, est;
+  try {
+    truth = readRows(out + "/truth.csv", [](const test::Csv& c, const auto& v) {
+      Row r;
+      r.tS = c.number(v, "t_s");
+      r.latDeg = c.number(v, "lat_deg");
+      r.lonDeg = c.number(v, "lon_deg");
+      r.gpsOn = c.get(v, "gps_on") == "1";
+      return r;
+    });
+    est = readRows(out + "/replay/ownship.csv", [](const test::Csv& c, const auto& v) {
+      Row r;
+      r.latDeg = c.number(v, "est_lat_deg");
+      r.lonDeg = c.number(v, "est_lon_deg");
+      r.sdX = c.number(v, "sd_x_m");
+      r.sdY = c.number(v, "sd_y_m");
+      return r;
+    });
+  } catch (const std::exception& e) {
+    QFAIL(qPrintable(out + ": " + e.what()));
+  }
   QVERIFY2(truth.size() > 1000, qPrintable(out + "/truth.csv: too few rows"));
   QVERIFY2(est.size() > 1000, qPrintable(out + "/replay/ownship.csv: too few rows"));
   // The outage: truth rows with gps_on 0. Errors east/north at the truth point (the replay's grid
@@ -175,17 +137,20 @@ class TstIndependentCampaign : public QObject {
       if (QTest::currentTestFailed()) return;
     }
     const double w = fam.within(1.96), r = fam.ratio(), p95 = fam.p95End();
-    qInfo("%s: %d runs, %zu axis errors in the outage: %.1f%% within 1.96 sd, RMS error / RMS sd %.2f, "
-          "p95 error at the end of the outage %.1f m",
-          loran ? "Loran-C on" : "dead reckoning", fam.runs, fam.normalised.size(), 100.0 * w, r, p95);
+    qInfo(
+        "%s: %d runs, %zu axis errors in the outage: %.1f%% within 1.96 sd, RMS error / RMS sd %.2f, "
+        "p95 error at the end of the outage %.1f m",
+        loran ? "Loran-C on" : "dead reckoning", fam.runs, fam.normalised.size(), 100.0 * w, r, p95);
     QVERIFY2(w >= 0.90 && w <= 0.99, qPrintable(QString("within 1.96 sd: %1%").arg(100.0 * w, 0, 'f', 1)));
     QVERIFY2(r >= 0.6 && r <= 1.4, qPrintable(QString("RMS error / RMS sd %1").arg(r, 0, 'f', 2)));
     // Issue 16 asks for a p95 under 60 m at the end of a pure dead-reckoning outage; not met yet (280 m
     // on 2026-12-02: docs/consistency.md, "Independent own-ship campaign"). Until it is, the figure is
     // held to what was measured then, so a change that makes dead reckoning worse fails.
     const double recordedP95 = loran ? 285.0 : 310.0;  // the figures then, plus 10%
-    QVERIFY2(p95 < recordedP95,
-             qPrintable(QString("p95 end-of-outage error %1 m, recorded %2 m").arg(p95, 0, 'f', 1).arg(recordedP95)));
+    QVERIFY2(
+        p95 < recordedP95,
+        qPrintable(
+            QString("p95 end-of-outage error %1 m, recorded %2 m").arg(p95, 0, 'f', 1).arg(recordedP95)));
   }
 
  private slots:

@@ -12,10 +12,10 @@ namespace reckoner::est::drkf {
 inline constexpr int kNoiseDim = 9;
 
 struct ProcessParams {
-  GaussMarkov current;        ///< sigma m/s, Table I sigma_c^2, beta_c
-  GaussMarkov acceleration;   ///< sigma m/s^2, Table I footnote sigma_a = 0.5, beta_a = 1
-  GaussMarkov loranError;     ///< sigma m, Table I L-C sigma^2, beta_L-C = 0.25
-  GaussMarkov speedlogError;  ///< sigma m/s, Table I S-L sigma^2, beta_S-L = 0.5
+  GaussMarkov current;                ///< sigma m/s, Table I sigma_c^2, beta_c
+  GaussMarkov acceleration;           ///< sigma m/s^2, Table I footnote sigma_a = 0.5, beta_a = 1
+  GaussMarkov loranError;             ///< sigma m, Table I L-C sigma^2, beta_L-C = 0.25
+  GaussMarkov speedlogError;          ///< sigma m/s, Table I S-L sigma^2, beta_S-L = 0.5
   GaussMarkov headingBias{0.0, 1.0};  ///< sigma rad; not in the paper (0: no heading bias state)
   GaussMarkov logScale{0.0, 1.0};     ///< sigma (fraction of the speed); not in the paper (0: none)
 };

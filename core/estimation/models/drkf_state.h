@@ -13,17 +13,17 @@ inline constexpr int kPaperStateDim = 11;
 
 /// State indices (paper x1..x11 are kPosX..kLogBias).
 enum Index : int {
-  kPosX = 0,      ///< x1  vessel x position, m
-  kCurX = 1,      ///< x2  ocean current x velocity, m/s (Gauss-Markov)
-  kVelX = 2,      ///< x3  vessel x velocity through the water, m/s
-  kAccX = 3,      ///< x4  vessel x acceleration, m/s^2 (Gauss-Markov)
-  kPosY = 4,      ///< x5  vessel y position, m
-  kCurY = 5,      ///< x6  ocean current y velocity, m/s
-  kVelY = 6,      ///< x7  vessel y velocity through the water, m/s
-  kAccY = 7,      ///< x8  vessel y acceleration, m/s^2
-  kLoranX = 8,    ///< x9  Loran-C x position error, m (Gauss-Markov)
-  kLoranY = 9,    ///< x10 Loran-C y position error, m (Gauss-Markov)
-  kLogBias = 10,  ///< x11 speedlog error, m/s (Gauss-Markov): the log's offset
+  kPosX = 0,          ///< x1  vessel x position, m
+  kCurX = 1,          ///< x2  ocean current x velocity, m/s (Gauss-Markov)
+  kVelX = 2,          ///< x3  vessel x velocity through the water, m/s
+  kAccX = 3,          ///< x4  vessel x acceleration, m/s^2 (Gauss-Markov)
+  kPosY = 4,          ///< x5  vessel y position, m
+  kCurY = 5,          ///< x6  ocean current y velocity, m/s
+  kVelY = 6,          ///< x7  vessel y velocity through the water, m/s
+  kAccY = 7,          ///< x8  vessel y acceleration, m/s^2
+  kLoranX = 8,        ///< x9  Loran-C x position error, m (Gauss-Markov)
+  kLoranY = 9,        ///< x10 Loran-C y position error, m (Gauss-Markov)
+  kLogBias = 10,      ///< x11 speedlog error, m/s (Gauss-Markov): the log's offset
   kHeadingBias = 11,  ///< heading sensor's error, rad (Gauss-Markov, slow): gyro error or residual deviation
   kLogScale = 12,     ///< speedlog scale-factor error, dimensionless (Gauss-Markov, slow)
 };

@@ -91,7 +91,8 @@ class TestGaussMarkov : public QObject {
       QVERIFY(Eigen::SelfAdjointEigenSolver<Mat<drkf::kStateDim>>(d.Q).eigenvalues().minCoeff() >
               -1e-12 * std::max(1.0, d.Q.norm()));
       // A calibration state is its own first-order Gauss-Markov process (eq. 2b).
-      const double q = drkf::ProcessParams{{}, {}, {}, {}, {0.017, 1.0 / 3600.0}, {}}.headingBias.discreteVariance(dt);
+      const double q =
+          drkf::ProcessParams{{}, {}, {}, {}, {0.017, 1.0 / 3600.0}, {}}.headingBias.discreteVariance(dt);
       QVERIFY(std::abs(d.Q(drkf::kHeadingBias, drkf::kHeadingBias) - q) < 1e-12 * q + 1e-18);
       QVERIFY(std::abs(d.Phi(drkf::kLogScale, drkf::kLogScale) - std::exp(-dt / 7200.0)) < 1e-14);
     }

@@ -87,9 +87,10 @@ class TestDrkfScenarios : public QObject {
     const auto summary = metrics::summariseMonteCarlo(sc, runs);
     QCOMPARE(summary.neesDof, 13);
     for (const auto& p : summary.phases) {
-      qInfo("%s phase %d %-30s mean NEES %.2f (bounds %.2f-%.2f, max %.2f)", sim::nameOf(static_cast<sim::SensorProfile>(profile)),
-            p.stats.phase.index + 1, p.stats.phase.label.c_str(), p.stats.meanNees, summary.bounds.lower,
-            summary.bounds.upper, p.maxMeanNees);
+      qInfo("%s phase %d %-30s mean NEES %.2f (bounds %.2f-%.2f, max %.2f)",
+            sim::nameOf(static_cast<sim::SensorProfile>(profile)), p.stats.phase.index + 1,
+            p.stats.phase.label.c_str(), p.stats.meanNees, summary.bounds.lower, summary.bounds.upper,
+            p.maxMeanNees);
       const QString label = QString::fromStdString(p.stats.phase.label);
       QVERIFY2(p.stats.meanNees < summary.bounds.upper, qPrintable(label));
       const bool fixes = p.stats.phase.kind != metrics::PhaseKind::DeadReckoning;

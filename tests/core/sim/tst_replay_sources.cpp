@@ -340,8 +340,10 @@ class TestReplaySources : public QObject {
     QVERIFY(worstError(r) < 30.0);
     const auto g = sim::replay(build(true), "two-gap.nmea", nullptr, "", options());
     const auto* backup = sourceOf(g, "GN:GGA");
-    qInfo("with the first silent: GN used %ld, active %.0f s", backup ? backup->used : -1L, backup ? backup->activeS : 0.0);
-    QVERIFY(backup && backup->used >= 55 && backup->used <= 63);  // the 60 s, less the hold, plus the hold back
+    qInfo("with the first silent: GN used %ld, active %.0f s", backup ? backup->used : -1L,
+          backup ? backup->activeS : 0.0);
+    QVERIFY(backup && backup->used >= 55 &&
+            backup->used <= 63);  // the 60 s, less the hold, plus the hold back
     QVERIFY(backup->activeS > 50.0);
     QVERIFY(worstError(g) < 30.0);
     const auto& st = g.stats;

@@ -58,10 +58,10 @@ constexpr double kRotationS = 2.5;
 constexpr double kDetectionProbability = 0.95;
 constexpr double kGlintHalfLengthM = 30.0, kMaxRangeNm = 12.0, kMinRangeM = 50.0;
 // A.823(19) Annex 3 radar error budget (see the top of this file).
-constexpr double kRangeSdM = 20.0;                        // pulse shape
+constexpr double kRangeSdM = 20.0;                         // pulse shape
 constexpr double kBeamSdDeg = 0.05, kEncoderSdDeg = 0.03;  // random bearing terms, per plot
-constexpr double kBacklashHalfDeg = 0.05;                 // antenna backlash, uniform +-
-constexpr double kGyroScatterSdDeg = 0.12;                // per rotation, common to its plots
+constexpr double kBacklashHalfDeg = 0.05;                  // antenna backlash, uniform +-
+constexpr double kGyroScatterSdDeg = 0.12;                 // per rotation, common to its plots
 constexpr double kRangeQuantumM = 0.02 * kMetresPerNm;     // 37.04 m
 constexpr double kBearingQuantumDeg = 0.2;
 constexpr double kTargetSpeedMaxKn = 40.0, kCurrentMps = 0.3;
@@ -108,8 +108,8 @@ int runArpa(const ArpaOptions& o) {
   const std::int64_t endUs = static_cast<std::int64_t>(std::floor(o.durationS)) * 1000000;
   std::vector<TruthRow> rows;
   for (std::int64_t tUs = 0; tUs <= endUs; tUs += 1000000)
-    rows.push_back(TruthRow{tUs, ownAt(static_cast<double>(tUs) * 1e-6), ownSogMps, ownCogDeg, headingDeg, stwMps,
-                            currentMps, true});
+    rows.push_back(TruthRow{tUs, ownAt(static_cast<double>(tUs) * 1e-6), ownSogMps, ownCogDeg, headingDeg,
+                            stwMps, currentMps, true});
 
   // ---- Targets: geometry drawn at t0 in the tangent plane at own ship's position then
   // (GeographicLib::LocalCartesian, x east, y north), resampled while implausible. Own ship is at
@@ -127,7 +127,8 @@ int runArpa(const ArpaOptions& o) {
   std::vector<Target> targets;
   for (int i = 0; i < kTargets; ++i) {
     Target t;
-    t.id = std::string("T").append(std::to_string(i + 1));  // (not "T" + ...: GCC 12 -Wrestrict false positive)
+    t.id =
+        std::string("T").append(std::to_string(i + 1));  // (not "T" + ...: GCC 12 -Wrestrict false positive)
     Enu positionM, velocityMps;
     for (;; ++t.resamples) {
       if (t.resamples > 100000) throw std::runtime_error("cannot place target " + t.id);
@@ -192,9 +193,10 @@ int runArpa(const ArpaOptions& o) {
       const LatLon reference = offsetEnu(tg.at(o.t0S, exactS), enuFromPolar(glintM, tg.cogDeg));
       const RangeBearing rb = rangeBearing(ownAt(exactS), reference);
       const double rangeM = quantise(rb.rangeM + rangeNoiseM, kRangeQuantumM);
-      if (detect >= kDetectionProbability || rb.rangeM > kMaxRangeNm * kMetresPerNm || rangeM < kMinRangeM) continue;
-      const auto rotation = std::min(static_cast<std::size_t>(std::floor(exactS / kRotationS)),
-                                     sweepScatterDeg.size() - 1);
+      if (detect >= kDetectionProbability || rb.rangeM > kMaxRangeNm * kMetresPerNm || rangeM < kMinRangeM)
+        continue;
+      const auto rotation =
+          std::min(static_cast<std::size_t>(std::floor(exactS / kRotationS)), sweepScatterDeg.size() - 1);
       double bearingDeg = quantise(wrapDeg360(rb.bearingDeg + model.gyroBiasDeg + sweepScatterDeg[rotation] +
                                               beamNoiseDeg + encoderNoiseDeg + backlashDeg),
                                    kBearingQuantumDeg);
@@ -228,36 +230,37 @@ int runArpa(const ArpaOptions& o) {
   std::string targetText;
   for (const Target& t : targets) {
     char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "%s\n    {\"id\": \"%s\", \"range_nm\": %.6f, \"bearing_deg\": %.6f, \"rel_speed_kn\": %.6f, "
-                  "\"rel_course_deg\": %.6f, \"cpa_nm\": %.6f, \"tcpa_s\": %.3f, \"sog_kn\": %.6f, "
-                  "\"cog_deg\": %.6f, \"lat_deg_at_t0\": %.9f, \"lon_deg_at_t0\": %.9f, \"resamples\": %d}",
-                  targetText.empty() ? "" : ",", t.id.c_str(), t.rangeNm, t.bearingDeg, t.relSpeedKn,
-                  t.relCourseDeg, t.cpaNm, t.tcpaS, t.sogMps / kMpsPerKnot, t.cogDeg, t.atT0.latDeg, t.atT0.lonDeg,
-                  t.resamples);
+    std::snprintf(
+        buf, sizeof buf,
+        "%s\n    {\"id\": \"%s\", \"range_nm\": %.6f, \"bearing_deg\": %.6f, \"rel_speed_kn\": %.6f, "
+        "\"rel_course_deg\": %.6f, \"cpa_nm\": %.6f, \"tcpa_s\": %.3f, \"sog_kn\": %.6f, "
+        "\"cog_deg\": %.6f, \"lat_deg_at_t0\": %.9f, \"lon_deg_at_t0\": %.9f, \"resamples\": %d}",
+        targetText.empty() ? "" : ",", t.id.c_str(), t.rangeNm, t.bearingDeg, t.relSpeedKn, t.relCourseDeg,
+        t.cpaNm, t.tcpaS, t.sogMps / kMpsPerKnot, t.cogDeg, t.atT0.latDeg, t.atT0.lonDeg, t.resamples);
     targetText += buf;
   }
   char head[4096];
-  std::snprintf(head, sizeof head,
-                "{\n  \"generator\": \"reckoner-indep-sim arpa\",\n  \"seed\": %llu,\n"
-                "  \"start_utc\": \"%s\",\n  \"duration_s\": %.3f,\n  \"t0_s\": %.3f,\n  \"t0_utc\": \"%s\",\n"
-                "  \"own\": {\"start_lat_deg\": %.9f, \"start_lon_deg\": %.9f, \"heading_deg\": %.6f, "
-                "\"stw_kn\": %.6f, \"sog_kn\": %.6f, \"cog_deg\": %.6f, \"lat_deg_at_t0\": %.9f, "
-                "\"lon_deg_at_t0\": %.9f},\n"
-                "  \"current\": {\"speed_mps\": %.3f, \"set_deg\": %.6f},\n"
-                "  \"radar\": {\"rotation_s\": %.2f, \"plot_time\": \"antenna passes the target (bearing-proportional "
-                "from the heading marker)\", \"error_budget\": \"A.823(19) Annex 3\", \"range_sd_m\": %.1f, "
-                "\"range_quantum_m\": %.2f, \"bearing_beam_sd_deg\": %.3f, \"bearing_encoder_sd_deg\": %.3f, "
-                "\"bearing_random_sd_deg\": %.4f, \"bearing_backlash_half_width_deg\": %.3f, "
-                "\"bearing_quantum_deg\": %.2f, \"gyro_calibration_deg\": %.3f, \"gyro_scatter_sd_deg\": %.3f, "
-                "\"detection_probability\": %.2f, \"glint_uniform_half_length_m\": "
-                "%.1f, \"max_range_nm\": %.1f, \"min_range_m\": %.1f, \"plots\": %zu},\n",
-                static_cast<unsigned long long>(o.seed), clock.iso(0, 3).c_str(), o.durationS, o.t0S,
-                clock.iso(std::llround(o.t0S * 1e6), 3).c_str(), start.latDeg, start.lonDeg, headingDeg,
-                stwMps / kMpsPerKnot, ownSogMps / kMpsPerKnot, ownCogDeg, ownT0.latDeg, ownT0.lonDeg, kCurrentMps,
-                azimuthDegOf(currentMps), kRotationS, kRangeSdM, kRangeQuantumM, kBeamSdDeg, kEncoderSdDeg,
-                std::hypot(kBeamSdDeg, kEncoderSdDeg), kBacklashHalfDeg, kBearingQuantumDeg, model.gyroBiasDeg,
-                kGyroScatterSdDeg, kDetectionProbability, kGlintHalfLengthM, kMaxRangeNm, kMinRangeM, plots.size());
+  std::snprintf(
+      head, sizeof head,
+      "{\n  \"generator\": \"reckoner-indep-sim arpa\",\n  \"seed\": %llu,\n"
+      "  \"start_utc\": \"%s\",\n  \"duration_s\": %.3f,\n  \"t0_s\": %.3f,\n  \"t0_utc\": \"%s\",\n"
+      "  \"own\": {\"start_lat_deg\": %.9f, \"start_lon_deg\": %.9f, \"heading_deg\": %.6f, "
+      "\"stw_kn\": %.6f, \"sog_kn\": %.6f, \"cog_deg\": %.6f, \"lat_deg_at_t0\": %.9f, "
+      "\"lon_deg_at_t0\": %.9f},\n"
+      "  \"current\": {\"speed_mps\": %.3f, \"set_deg\": %.6f},\n"
+      "  \"radar\": {\"rotation_s\": %.2f, \"plot_time\": \"antenna passes the target (bearing-proportional "
+      "from the heading marker)\", \"error_budget\": \"A.823(19) Annex 3\", \"range_sd_m\": %.1f, "
+      "\"range_quantum_m\": %.2f, \"bearing_beam_sd_deg\": %.3f, \"bearing_encoder_sd_deg\": %.3f, "
+      "\"bearing_random_sd_deg\": %.4f, \"bearing_backlash_half_width_deg\": %.3f, "
+      "\"bearing_quantum_deg\": %.2f, \"gyro_calibration_deg\": %.3f, \"gyro_scatter_sd_deg\": %.3f, "
+      "\"detection_probability\": %.2f, \"glint_uniform_half_length_m\": "
+      "%.1f, \"max_range_nm\": %.1f, \"min_range_m\": %.1f, \"plots\": %zu},\n",
+      static_cast<unsigned long long>(o.seed), clock.iso(0, 3).c_str(), o.durationS, o.t0S,
+      clock.iso(std::llround(o.t0S * 1e6), 3).c_str(), start.latDeg, start.lonDeg, headingDeg,
+      stwMps / kMpsPerKnot, ownSogMps / kMpsPerKnot, ownCogDeg, ownT0.latDeg, ownT0.lonDeg, kCurrentMps,
+      azimuthDegOf(currentMps), kRotationS, kRangeSdM, kRangeQuantumM, kBeamSdDeg, kEncoderSdDeg,
+      std::hypot(kBeamSdDeg, kEncoderSdDeg), kBacklashHalfDeg, kBearingQuantumDeg, model.gyroBiasDeg,
+      kGyroScatterSdDeg, kDetectionProbability, kGlintHalfLengthM, kMaxRangeNm, kMinRangeM, plots.size());
   writeTextFile(o.outDir + "/params.json", std::string(head) + "  \"sensors\": " + sensorModelJson(model) +
                                                ",\n  \"targets\": [" + targetText + "\n  ]\n}\n");
   return 0;

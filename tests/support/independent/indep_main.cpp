@@ -96,19 +96,32 @@ void require(bool condition, const std::string& message) {
 OwnShipOptions parseOwnShip(Args& args) {
   OwnShipOptions o;
   for (std::string opt; args.next(opt);) {
-    if (opt == "--seed") o.seed = args.seed(opt);
-    else if (opt == "--out") o.outDir = args.value(opt);
-    else if (opt == "--loran") o.loran = true;
-    else if (opt == "--no-log") o.log = false;
-    else if (opt == "--no-gyro") o.gyro = false;
-    else if (opt == "--steady-current") o.steadyCurrent = true;
-    else if (opt == "--current-max") o.currentMaxMps = args.number(opt);
-    else if (opt == "--duration") o.durationS = args.number(opt);
-    else if (opt == "--outage-start") o.outageStartS = args.number(opt);
-    else if (opt == "--outage-length") o.outageLengthS = args.number(opt);
-    else if (opt == "--speed-min") o.speedMinKn = args.number(opt);
-    else if (opt == "--speed-max") o.speedMaxKn = args.number(opt);
-    else throw UsageError{"ownship: unknown option '" + opt + "'"};
+    if (opt == "--seed")
+      o.seed = args.seed(opt);
+    else if (opt == "--out")
+      o.outDir = args.value(opt);
+    else if (opt == "--loran")
+      o.loran = true;
+    else if (opt == "--no-log")
+      o.log = false;
+    else if (opt == "--no-gyro")
+      o.gyro = false;
+    else if (opt == "--steady-current")
+      o.steadyCurrent = true;
+    else if (opt == "--current-max")
+      o.currentMaxMps = args.number(opt);
+    else if (opt == "--duration")
+      o.durationS = args.number(opt);
+    else if (opt == "--outage-start")
+      o.outageStartS = args.number(opt);
+    else if (opt == "--outage-length")
+      o.outageLengthS = args.number(opt);
+    else if (opt == "--speed-min")
+      o.speedMinKn = args.number(opt);
+    else if (opt == "--speed-max")
+      o.speedMaxKn = args.number(opt);
+    else
+      throw UsageError{"ownship: unknown option '" + opt + "'"};
   }
   require(!o.outDir.empty(), "ownship: --out DIR is required");
   require(o.durationS >= 1.0 && o.durationS <= 7.0 * 86400.0, "ownship: --duration must be in [1, 604800] s");
@@ -122,11 +135,16 @@ OwnShipOptions parseOwnShip(Args& args) {
 ArpaOptions parseArpa(Args& args) {
   ArpaOptions o;
   for (std::string opt; args.next(opt);) {
-    if (opt == "--seed") o.seed = args.seed(opt);
-    else if (opt == "--out") o.outDir = args.value(opt);
-    else if (opt == "--duration") o.durationS = args.number(opt);
-    else if (opt == "--t0") o.t0S = args.number(opt);
-    else throw UsageError{"arpa: unknown option '" + opt + "'"};
+    if (opt == "--seed")
+      o.seed = args.seed(opt);
+    else if (opt == "--out")
+      o.outDir = args.value(opt);
+    else if (opt == "--duration")
+      o.durationS = args.number(opt);
+    else if (opt == "--t0")
+      o.t0S = args.number(opt);
+    else
+      throw UsageError{"arpa: unknown option '" + opt + "'"};
   }
   require(!o.outDir.empty(), "arpa: --out DIR is required");
   require(o.durationS >= 1.0 && o.durationS <= 86400.0, "arpa: --duration must be in [1, 86400] s");

@@ -49,9 +49,10 @@ void writeOwnShipNmea(const std::string& path, const UtcClock& clock, const std:
     const double altitudeM = 12.0 + gnssRng.normal(1.5 * model.gnssWhiteSdM);
     const Enu loranErrorM(loranEast.value() + loranRng.normal(model.loranWhiteSdM),
                           loranNorth.value() + loranRng.normal(model.loranWhiteSdM));
-    const double gyroDeg = wrapDeg360(row.headingDeg + model.gyroBiasDeg + gyroRng.normal(model.gyroNoiseSdDeg));
-    const double logKn = std::max(
-        0.0, (1.0 + model.logScale) * row.stwMps / kMpsPerKnot + model.logOffsetKn + logRng.normal(model.logNoiseSdKn));
+    const double gyroDeg =
+        wrapDeg360(row.headingDeg + model.gyroBiasDeg + gyroRng.normal(model.gyroNoiseSdDeg));
+    const double logKn = std::max(0.0, (1.0 + model.logScale) * row.stwMps / kMpsPerKnot + model.logOffsetKn +
+                                           logRng.normal(model.logNoiseSdKn));
 
     // The receiver's ZDA leads its burst, as many receivers write it; it keeps coming in an outage
     // (the receiver's clock runs on), which also gives the untimed HDT and VHW their epoch.
@@ -60,9 +61,9 @@ void writeOwnShipNmea(const std::string& path, const UtcClock& clock, const std:
       const LatLon fix = offsetEnu(row.pos, gnssErrorM);
       const Enu velocityMps = enuFromPolar(row.sogMps, row.cogDeg) + velocityErrorMps;
       const std::string lat = nmeaLat(fix.latDeg), lon = nmeaLon(fix.lonDeg);
-      text += nmeaSentence("GPRMC," + time + ",A," + lat + "," + lon + "," +
-                           fmt("%.3f", velocityMps.norm() / kMpsPerKnot) + "," +
-                           fmt("%.2f", azimuthDegOf(velocityMps)) + "," + clock.nmeaDateDdmmyy(row.tUs) + ",,,A");
+      text += nmeaSentence(
+          "GPRMC," + time + ",A," + lat + "," + lon + "," + fmt("%.3f", velocityMps.norm() / kMpsPerKnot) +
+          "," + fmt("%.2f", azimuthDegOf(velocityMps)) + "," + clock.nmeaDateDdmmyy(row.tUs) + ",,,A");
       text += nmeaSentence("GPGGA," + time + "," + lat + "," + lon + ",1,10,1.0," + fmt("%.1f", altitudeM) +
                            ",M,-23.4,M,,");
       // GST: rms, semi-major sd, semi-minor sd, orientation, lat sd, lon sd, altitude sd (metres).
@@ -83,24 +84,24 @@ void writeOwnShipNmea(const std::string& path, const UtcClock& clock, const std:
 
 std::string sensorModelJson(const SensorModel& m) {
   char buf[2048];
-  std::snprintf(buf, sizeof buf,
-                "{\n"
-                "    \"gnss\": {\"white_sd_m_per_axis\": %.6f, \"gst_lat_lon_sd_m\": %.2f, "
-                "\"correlated_sd_m_per_axis\": %.3f, \"correlation_time_s\": %.1f, "
-                "\"total_sd_m_per_axis\": %.6f, \"velocity_sd_kn_per_axis\": %.3f, "
-                "\"outage_start_s\": %.3f, \"outage_length_s\": %.3f},\n"
-                "    \"gyro\": {\"enabled\": %s, \"bias_deg\": %.6f, \"noise_sd_deg\": %.3f},\n"
-                "    \"log\": {\"enabled\": %s, \"scale\": %.8f, \"scale_percent\": %.6f, \"offset_kn\": %.6f, "
-                "\"noise_sd_kn\": %.3f},\n"
-                "    \"loran\": {\"enabled\": %s, \"correlated_sd_m_per_axis\": %.1f, \"correlation_time_s\": %.1f, "
-                "\"white_sd_m_per_axis\": %.1f}\n"
-                "  }",
-                m.gnssWhiteSdM, m.gnssWhiteSdM, m.gnssCorrelatedSdM, m.gnssCorrelationS,
-                std::sqrt(m.gnssWhiteSdM * m.gnssWhiteSdM + m.gnssCorrelatedSdM * m.gnssCorrelatedSdM),
-                m.gnssVelocitySdKn, m.outageStartS, m.outageLengthS, m.gyro ? "true" : "false", m.gyroBiasDeg,
-                m.gyroNoiseSdDeg, m.log ? "true" : "false", m.logScale, 100.0 * m.logScale, m.logOffsetKn,
-                m.logNoiseSdKn, m.loran ? "true" : "false", m.loranCorrelatedSdM, m.loranCorrelationS,
-                m.loranWhiteSdM);
+  std::snprintf(
+      buf, sizeof buf,
+      "{\n"
+      "    \"gnss\": {\"white_sd_m_per_axis\": %.6f, \"gst_lat_lon_sd_m\": %.2f, "
+      "\"correlated_sd_m_per_axis\": %.3f, \"correlation_time_s\": %.1f, "
+      "\"total_sd_m_per_axis\": %.6f, \"velocity_sd_kn_per_axis\": %.3f, "
+      "\"outage_start_s\": %.3f, \"outage_length_s\": %.3f},\n"
+      "    \"gyro\": {\"enabled\": %s, \"bias_deg\": %.6f, \"noise_sd_deg\": %.3f},\n"
+      "    \"log\": {\"enabled\": %s, \"scale\": %.8f, \"scale_percent\": %.6f, \"offset_kn\": %.6f, "
+      "\"noise_sd_kn\": %.3f},\n"
+      "    \"loran\": {\"enabled\": %s, \"correlated_sd_m_per_axis\": %.1f, \"correlation_time_s\": %.1f, "
+      "\"white_sd_m_per_axis\": %.1f}\n"
+      "  }",
+      m.gnssWhiteSdM, m.gnssWhiteSdM, m.gnssCorrelatedSdM, m.gnssCorrelationS,
+      std::sqrt(m.gnssWhiteSdM * m.gnssWhiteSdM + m.gnssCorrelatedSdM * m.gnssCorrelatedSdM),
+      m.gnssVelocitySdKn, m.outageStartS, m.outageLengthS, m.gyro ? "true" : "false", m.gyroBiasDeg,
+      m.gyroNoiseSdDeg, m.log ? "true" : "false", m.logScale, 100.0 * m.logScale, m.logOffsetKn,
+      m.logNoiseSdKn, m.loran ? "true" : "false", m.loranCorrelatedSdM, m.loranCorrelationS, m.loranWhiteSdM);
   return buf;
 }
 

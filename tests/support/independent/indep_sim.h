@@ -35,10 +35,10 @@ double azimuthDegOf(const Enu& v);                      // [0, 360); 0 for a zer
 class Rng {
  public:
   explicit Rng(std::uint64_t seed) : engine_(seed) {}
-  double uniform01();                      // [0, 1), 53 bits
-  double uniform(double lo, double hi);    // [lo, hi)
-  double normal(double sd = 1.0);          // Box-Muller (both values of a pair are used)
-  double sign();                           // -1 or +1 with equal probability
+  double uniform01();                    // [0, 1), 53 bits
+  double uniform(double lo, double hi);  // [lo, hi)
+  double normal(double sd = 1.0);        // Box-Muller (both values of a pair are used)
+  double sign();                         // -1 or +1 with equal probability
  private:
   std::mt19937_64 engine_;
   bool haveSpare_ = false;
@@ -57,13 +57,14 @@ class GaussMarkov {
   GaussMarkov(double sd, double tauS, Rng& rng) : sd_(sd), tauS_(tauS), x_(rng.normal(sd)) {}
   double value() const { return x_; }
   void step(double dtS, Rng& rng);
+
  private:
   double sd_, tauS_, x_;
 };
 
 // ---- Time: integer microseconds since the run start; the start is a UTC instant. ----
 struct UtcClock {
-  std::int64_t startUnixS = 0;  // seconds since 1970-01-01T00:00:00Z
+  std::int64_t startUnixS = 0;                                  // seconds since 1970-01-01T00:00:00Z
   std::string iso(std::int64_t tUs, int fractionDigits) const;  // 2026-06-15T10:00:00.000Z
   std::string nmeaTime(std::int64_t tUs) const;                 // hhmmss.ss
   std::string nmeaDateDdmmyy(std::int64_t tUs) const;           // RMC date
@@ -86,8 +87,8 @@ RangeBearing rangeBearing(const LatLon& from, const LatLon& to);
 
 // ---- NMEA 0183 ----
 std::string nmeaSentence(std::string_view body);  // "$" body "*hh\r\n", hh = XOR of body
-std::string nmeaLat(double latDeg);  // "ddmm.mmmmmm,N"
-std::string nmeaLon(double lonDeg);  // "dddmm.mmmmmm,W"
+std::string nmeaLat(double latDeg);               // "ddmm.mmmmmm,N"
+std::string nmeaLon(double lonDeg);               // "dddmm.mmmmmm,W"
 std::string fmt(const char* format, double value);
 
 // ---- Own-ship truth, 1 Hz, as written to truth.csv ----

@@ -884,6 +884,7 @@ int cmdReplay(int argc, char** argv) {
     // Recorded data come from real sensors: the realistic profile unless asked otherwise (paper: the
     // default scenario's figures, seed 000's Table I).
     sim::applySensorProfile(o.settings, profileOption(a).value_or(sim::SensorProfile::Realistic));
+    o.sweepFromPlots = true;  // no radar configured: the antenna's rotation as the plots show it
   }
   if (const auto p = profileOption(a); p && a.options.count("config"))
     sim::applySensorProfile(o.settings, *p);

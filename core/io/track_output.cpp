@@ -204,6 +204,8 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   n("time_jumps", s.radarTimeJumps);
   n("reordered", s.radarReordered);
   n("before_fix", s.radarBeforeFix);
+  w.key("sweep_period_s").value(r.sweepPeriodS, 6);
+  w.key("sweep_period_from").value(r.sweepFromPlots ? "plots" : "settings");
   n("tracks_started", r.tracking.tracksStarted);
   n("tracks_confirmed", r.tracking.tracksConfirmed);
   n("tracks_lost", r.tracking.tracksLost);

@@ -330,7 +330,8 @@ void Runner::finish() {
 }  // namespace
 
 ReplayResult replay(const std::string& nmeaText, const std::string& nmeaName, const std::string* radarCsv,
-                    const std::string& radarName, const ReplayOptions& o) {
+                    const std::string& radarName, const ReplayOptions& options) {
+  ReplayOptions o = options;  // the sweep period may come from the plots
   ReplayResult res;
   ReplayStats& st = res.stats;
   replay_input::NmeaOptions nmeaOptions;
@@ -347,6 +348,14 @@ ReplayResult replay(const std::string& nmeaText, const std::string& nmeaName, co
         [](const Plot& p) { return p.utc; }, o.time, st.radarTimeJumps, st.radarReordered);
     st.radarPlots = static_cast<long>(plots.size());
     if (plots.empty()) res.warnings.push_back(io::oneLine(radarName + ": holds no radar plot"));
+    if (o.sweepFromPlots) {
+      if (const auto period = replay_input::rotationPeriodS(plots);
+          period && *period >= 0.5 && *period <= 60.0) {
+        o.settings.radar.sweepPeriodS = std::round(*period * 1000.0) / 1000.0;
+        res.sweepFromPlots = true;
+      }
+    }
+    res.sweepPeriodS = o.settings.radar.sweepPeriodS;
   }
   const auto firstFix = std::find_if(epochs.begin(), epochs.end(), [](const Epoch& e) { return e.hasFix(); });
   if (firstFix == epochs.end())

@@ -60,6 +60,9 @@ struct ReplayOptions {
   std::optional<double> variationDeg;      ///< magnetic variation when the file gives none (--variation)
   double magneticHeadingSdDeg = 2.0;       ///< sd of a magnetic heading (HDG, HDM) after deviation
   double sourceHoldS = 3.0;                ///< a source silent this long loses its quantity
+  /// The radar's sweep period is the antenna's rotation as the plots show it (replay_input::
+  /// rotationPeriodS), when they show one, rather than settings.radar's.
+  bool sweepFromPlots = false;
 };
 
 /// Outcome of the DRKF updates of one sensor block over the replay (all restarts summed).
@@ -122,6 +125,8 @@ struct ReplayResult {
   std::vector<SourceStats> sources;  ///< every source of the NMEA file, in first-seen order
   /// The radar file's target_id labels; TrackRow::targetId indexes this (-1: none).
   std::vector<std::string> targetLabels;
+  double sweepPeriodS = 0.0;    ///< the radar sweep period used (with a radar file)
+  bool sweepFromPlots = false;  ///< ... found in the plots (ReplayOptions::sweepFromPlots)
   ReplayStats stats;
   nav::DrkfCounters drkf;                                          ///< summed over restarts
   std::array<SensorUpdateCounts, nav::kDrkfBlockCount> updates{};  ///< indexed by nav::DrkfBlock

@@ -215,4 +215,31 @@ std::string formatIso8601(UtcUs t) {
   return buf;
 }
 
+namespace replay_input {
+
+std::optional<double> rotationPeriodS(const std::vector<Plot>& plots) {
+  constexpr TimeUs kMinUs = 300'000, kMaxUs = 30'000'000;
+  constexpr double kNearM = 100.0, kNearRad = degToRad(1.5);
+  constexpr std::size_t kLookAhead = 256, kMinIntervals = 20;
+  std::vector<double> intervals;
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    for (std::size_t j = i + 1; j < plots.size() && j <= i + kLookAhead; ++j) {
+      const TimeUs dt = plots[j].utc - plots[i].utc;
+      if (dt > kMaxUs) break;
+      if (dt < kMinUs) continue;
+      if (std::abs(plots[j].rangeM - plots[i].rangeM) <= kNearM &&
+          std::abs(angleDiff(plots[j].bearingRad, plots[i].bearingRad)) <= kNearRad) {
+        intervals.push_back(toSeconds(dt));
+        break;
+      }
+    }
+  }
+  if (intervals.size() < kMinIntervals) return std::nullopt;
+  const auto mid = intervals.begin() + static_cast<std::ptrdiff_t>(intervals.size() / 2);
+  std::nth_element(intervals.begin(), mid, intervals.end());
+  return *mid;
+}
+
+}  // namespace replay_input
+
 }  // namespace reckoner::sim

@@ -57,6 +57,11 @@ struct Plot {
   friend bool operator==(const Plot&, const Plot&) = default;
 };
 
+/// The antenna's rotation period from the plots themselves: for each plot, the first later one within
+/// 100 m and 1.5 degrees of it, 0.3 to 30 s on (the same echo one turn later); the median of those
+/// intervals when there are at least 20 of them, else nullopt. Plots in time order.
+std::optional<double> rotationPeriodS(const std::vector<Plot>& plots);
+
 /// The own-ship epochs of an NMEA file in replay order (empty epochs dropped), each source's counts
 /// and clock, and warnings. Counts into st; throws io::InputError for a file with no sentence Reckoner
 /// reads or a datum other than WGS-84.

@@ -19,6 +19,10 @@ void realistic(Scenario& s) {
   s.speedlog.scaleError = {0.02, 1.0 / (2.0 * kHour)};
   s.gyro.sdRad = degToRad(0.3);
   s.gyro.bias = {degToRad(1.0), 1.0 / kHour};
+  // A plot extractor's range error with its quantisation (A.823(19): 20 m and 0.02 NM steps, about
+  // 23 m together) taken a little wide; the bearing's with the gyro's scatter and calibration.
+  s.radar.rangeSdM = 25.0;
+  s.radar.bearingSdRad = degToRad(0.5);
   s.filter.current = est::GaussMarkov{0.5, 1.0 / kHour};
   s.filter.acceleration = {0.05, 1.0 / 30.0};
 }

@@ -16,6 +16,7 @@
 #include "io/track_output.h"
 #include "sim/nmea_export.h"
 #include "sim/replay.h"
+#include "sim/replay_input.h"
 #include "support/drkf_fixtures.h"
 #include "support/resource_limits.h"
 
@@ -391,6 +392,30 @@ class TestReplaySources : public QObject {
     }
     lines[4] = nm::withChecksum("GPDTM,W84,,0.0,N,0.0,E,0.0,W84");
     QCOMPARE(sim::replay(joined(lines), "datum.nmea", nullptr, "", options()).stats.notUsed, 1L);
+  }
+  void rotationPeriodFromPlots() {
+    // GIVEN three echoes seen once per turn of a 2.5 s antenna (each at its own bearing's moment, with
+    // 20 m and 0.1 deg noise) and scattered clutter WHEN the period is read from the plots THEN it is
+    // the antenna's; a few plots give none.
+    using sim::replay_input::Plot;
+    Rng rng(7, 1);
+    std::vector<Plot> plots;
+    const double bearings[] = {0.3, 2.0, 4.4};
+    for (int turn = 0; turn < 40; ++turn) {
+      for (int k = 0; k < 3; ++k) {
+        const sim::UtcUs t = static_cast<sim::UtcUs>((turn * 2.5 + 2.5 * bearings[k] / (2 * kPi)) * 1e6);
+        plots.push_back({t, 3000.0 + 800.0 * k + turn * 4.0 + rng.normal(0.0, 20.0),
+                         bearings[k] + rng.normal(0.0, degToRad(0.1)), -1});
+      }
+      plots.push_back({static_cast<sim::UtcUs>((turn * 2.5 + 2.5 * rng.uniform()) * 1e6),
+                       500.0 + 8500.0 * rng.uniform(), 2 * kPi * rng.uniform(), -1});
+    }
+    std::sort(plots.begin(), plots.end(), [](const Plot& a, const Plot& b) { return a.utc < b.utc; });
+    const auto period = sim::replay_input::rotationPeriodS(plots);
+    QVERIFY(period);
+    QVERIFY2(std::abs(*period - 2.5) < 0.05, qPrintable(QString::number(*period)));
+    plots.resize(12);
+    QVERIFY(!sim::replay_input::rotationPeriodS(plots));
   }
 };
 

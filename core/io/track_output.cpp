@@ -165,6 +165,12 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
     n("accepted", c.accepted);
     n("gated", c.gated);
     n("failed", c.failed);
+    w.key("nis").beginObject();
+    n("windows", c.nis.windows);
+    n("above", c.nis.above);
+    n("below", c.nis.below);
+    if (c.nis.dof > 0) w.key("mean_per_dof").value(c.nis.meanPerDof(), 4);
+    w.endObject();
     w.endObject();
   }
   w.endObject();

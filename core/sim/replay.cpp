@@ -140,6 +140,7 @@ class Runner {
   std::optional<track::TrackManager> bank_;
   TimeUs sweepUs_, maxGapUs_;
   std::optional<TimeUs> nextSweepEnd_, lastEpochUs_;
+  std::array<est::NisWindow, nav::kDrkfBlockCount> nis_{};
   bool restarted_ = false;
   int failedEpochs_ = 0;
 };
@@ -203,12 +204,14 @@ void Runner::count(const nav::DrkfUpdateReport& rep, const std::vector<sensors::
   for (int i = 0; i < rep.blockCount; ++i) {
     const est::BlockReport& b = rep.blocks[static_cast<std::size_t>(i)];
     SensorUpdateCounts& c = res_.updates[static_cast<std::size_t>(b.tag)];
+    const bool gated = b.status == est::UpdateStatus::RejectedGate;
     if (est::isApplied(b.status))
       ++c.accepted;
-    else if (b.status == est::UpdateStatus::RejectedGate)
+    else if (gated)
       ++c.gated;
     else if (b.status != est::UpdateStatus::Empty)
       ++c.failed;
+    if (est::isApplied(b.status) || gated) nis_[static_cast<std::size_t>(b.tag)].add(b.nis, b.dim);
   }
 }
 
@@ -325,6 +328,19 @@ void Runner::finish() {
   if (nextSweepEnd_) closeSweepsUntil(*nextSweepEnd_);  // the last sweep ends with the data
   stop();
   if (bank_) res_.tracking = bank_->counters();
+  for (std::size_t b = 0; b < nis_.size(); ++b) {
+    const est::NisWindowCounts& n = res_.updates[b].nis = nis_[b].counts();
+    // A fifth of the windows or more above the band: the sensor is noisier than the settings say (the gate
+    // will reject good data, the sd is too small).
+    if (n.windows >= 3 && 5 * n.above >= n.windows) {
+      char buf[240];
+      std::snprintf(buf, sizeof buf,
+                    "%s: innovations larger than its configured noise in %ld of %ld windows of 60 updates "
+                    "(mean NIS per degree of freedom %.2f): the sensor's noise is larger than configured",
+                    nav::blockName(static_cast<nav::DrkfBlock>(b)), n.above, n.windows, n.meanPerDof());
+      res_.warnings.push_back(buf);
+    }
+  }
 }
 
 }  // namespace

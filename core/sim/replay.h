@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "estimation/nis_window.h"
 #include "navigation/drkf.h"
 #include "sim/scenario.h"
 #include "sim/scenario_run.h"
@@ -70,6 +71,8 @@ struct SensorUpdateCounts {
   long accepted = 0;  ///< applied (gated, or forced after a persistent rejection)
   long gated = 0;     ///< rejected by the chi-square gate
   long failed = 0;    ///< not applied for any other reason: not finite, numerical, not linearisable, stale
+  /// Online consistency: NIS of the applied and gated updates in windows of 60 (est::NisWindow).
+  est::NisWindowCounts nis;
 };
 
 struct ReplayStats {

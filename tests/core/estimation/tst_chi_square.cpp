@@ -1,6 +1,8 @@
 #include <QTest>
 
+#include "common/rng.h"
 #include "estimation/chi_square.h"
+#include "estimation/nis_window.h"
 
 using namespace reckoner::est;
 
@@ -50,6 +52,31 @@ class TestChiSquare : public QObject {
     QVERIFY(std::isnan(chiSquareQuantile(0.5, -1.0)));
     QVERIFY(std::isnan(regularisedGammaP(-1.0, 1.0)));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, averageNeesBounds(0, 50));
+  }
+  void nisWindowFlagsNoiseLargerThanConfigured() {
+    // GIVEN 2-dof innovations drawn with the covariance the filter claims WHEN windows of 60 are tested
+    // at 99% THEN about 1% of windows fall outside the band; with the true sd twice the claimed one every
+    // window is above it, and with half of it every window is below.
+    auto run = [](double sdRatio) {
+      reckoner::Rng rng(5, 1);
+      reckoner::est::NisWindow w(60, 0.99);
+      for (int k = 0; k < 60 * 400; ++k) {
+        const double a = sdRatio * rng.normal(), b = sdRatio * rng.normal();
+        w.add(a * a + b * b, 2);
+      }
+      return w.counts();
+    };
+    const auto ok = run(1.0), noisy = run(2.0), quiet = run(0.5);
+    QCOMPARE(ok.windows, 400L);
+    QVERIFY2(ok.above + ok.below <= 12,
+             qPrintable(QString("%1 above, %2 below").arg(ok.above).arg(ok.below)));
+    QVERIFY(std::abs(ok.meanPerDof() - 1.0) < 0.03);
+    QCOMPARE(noisy.above, 400L);
+    QCOMPARE(quiet.below, 400L);
+    reckoner::est::NisWindow w;
+    w.add(std::nan(""), 2);
+    w.add(1.0, 0);
+    QCOMPARE(w.counts().dof, 0L);
   }
 };
 

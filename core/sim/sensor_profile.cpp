@@ -6,7 +6,7 @@
 
 namespace reckoner::sim {
 namespace {
-constexpr double kHour = 3600.0;
+constexpr double kDay = 86400.0;
 
 /// What real ships carry, and a ship's motion (docs/sensor_profiles.md, "realistic").
 void realistic(Scenario& s) {
@@ -14,16 +14,19 @@ void realistic(Scenario& s) {
   s.gps.velocityVarM2PerS2 = 0.1 * 0.1;  // Doppler speed over ground
   s.loran.error = {150.0, 1.0 / 600.0};  // additional secondary factor: hundreds of m, minutes
   s.loran.whiteVarM2 = 20.0 * 20.0;
-  s.speedlog.error = {0.1, 1.0 / kHour};  // offset: 0.2 kn is the IMO log standard's limit
+  // Calibration errors are constant over a passage: a day's correlation lets them settle, not wander.
+  s.speedlog.error = {0.1, 1.0 / kDay};  // offset: 0.2 kn is the IMO log standard's limit
   s.speedlog.whiteVarM2PerS2 = 0.06 * 0.06;
-  s.speedlog.scaleError = {0.02, 1.0 / (2.0 * kHour)};
+  s.speedlog.scaleError = {0.02, 1.0 / kDay};
   s.gyro.sdRad = degToRad(0.3);
-  s.gyro.bias = {degToRad(1.0), 1.0 / kHour};
+  s.gyro.bias = {degToRad(1.0), 1.0 / kDay};
   // A plot extractor's range error with its quantisation (A.823(19): 20 m and 0.02 NM steps, about
   // 23 m together) taken a little wide; the bearing's with the gyro's scatter and calibration.
   s.radar.rangeSdM = 25.0;
   s.radar.bearingSdRad = degToRad(0.5);
-  s.filter.current = est::GaussMarkov{0.5, 1.0 / kHour};
+  // The current's random walk, 2 sigma^2 / tau, sets how fast dead reckoning forgets it: 0.03 m/s in ten
+  // minutes, 0.07 m/s in an hour (docs/sensor_profiles.md).
+  s.filter.current = est::GaussMarkov{0.5, 1.0 / (4.0 * kDay)};
   s.filter.acceleration = {0.05, 1.0 / 30.0};
 }
 
@@ -35,11 +38,11 @@ void imo(Scenario& s) {
   s.gps.velocityVarM2PerS2 = std::pow(knotsToMps(0.2) / 1.96, 2);
   s.loran.error = {0.25 * 1852.0 / 2.45, 1.0 / 600.0};  // A.818(19) system: 0.25 NM (95%)
   s.loran.whiteVarM2 = 30.0 * 30.0;
-  s.speedlog.error = {knotsToMps(0.2) / 1.96, 1.0 / kHour};  // MSC.96(72): 0.2 kn or 2%
-  s.speedlog.scaleError = {0.02 / 1.96, 1.0 / (2.0 * kHour)};
+  s.speedlog.error = {knotsToMps(0.2) / 1.96, 1.0 / kDay};  // MSC.96(72): 0.2 kn or 2%
+  s.speedlog.scaleError = {0.02 / 1.96, 1.0 / kDay};
   s.speedlog.whiteVarM2PerS2 = std::pow(knotsToMps(0.1), 2);
-  s.gyro.bias = {degToRad(0.75) / 1.96, 1.0 / kHour};  // A.424(XI): settle point 0.75 deg
-  s.gyro.sdRad = degToRad(0.5);                        // its dynamic errors
+  s.gyro.bias = {degToRad(0.75) / 1.96, 1.0 / kDay};  // A.424(XI): settle point 0.75 deg
+  s.gyro.sdRad = degToRad(0.5);                       // its dynamic errors
 }
 }  // namespace
 

@@ -93,7 +93,7 @@ void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) 
 void writeReplayTargetsCsv(const std::string& path, const sim::ReplayResult& r) {
   std::string text =
       "t_s,utc,track_id,target_id,status,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,"
-      "sd_vy_mps,est_lat_deg,est_lon_deg,course_deg,speed_kn,cpa_nm,tcpa_min,nis\n";
+      "sd_vy_mps,est_lat_deg,est_lon_deg,course_deg,speed_kn,cpa_nm,tcpa_min,nis,manoeuvring\n";
   for (std::size_t i = 0; i < r.tracks.size(); ++i) {
     const sim::TrackRow& t = r.tracks[i];
     char head[128];
@@ -119,6 +119,7 @@ void writeReplayTargetsCsv(const std::string& path, const sim::ReplayResult& r) 
     appendNumber(s, t.cpaNm, "%.5f");
     appendNumber(s, t.tcpaMin, "%.4f");
     appendNumber(s, t.nis, "%.4f");
+    s.append(t.manoeuvring ? ",1" : ",0");
     text.append(s);
     text += '\n';
   }

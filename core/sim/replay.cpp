@@ -304,6 +304,7 @@ void Runner::closeSweepsUntil(TimeUs t) {
       const auto b = bank_->beliefAt(tr, *nextSweepEnd_);
       res_.tracks.push_back(trackEstimateRow(*nextSweepEnd_, tr.id, tr.tag(), tr.status, tr.dangerous, b,
                                              track::kinematicsOf(b, gamma), tr.lastRadar.nis, frame_));
+      res_.tracks.back().manoeuvring = tr.manoeuvring;
       res_.trackRowUtc.push_back(res_.utc0 + *nextSweepEnd_);
     }
     *nextSweepEnd_ += sweepUs_;

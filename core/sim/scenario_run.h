@@ -60,6 +60,7 @@ struct TrackRow {
   double cpaNm = 0, tcpaMin = 0;  ///< NaN when there is no relative motion
   double nees = 0;                ///< all 12 TTKF states (own ship and target); NaN without truth
   double nis = 0;                 ///< of the last radar update
+  bool manoeuvring = false;       ///< the track's manoeuvre flag (ekf-ie, imm)
 
   [[nodiscard]] double positionErrorM() const;
   [[nodiscard]] double velocityErrorMps() const;

@@ -211,6 +211,29 @@ def check_truth(d, params, arpa):
     return truth
 
 
+def check_turn(k, m, track, sog):
+    """A --manoeuvre turn in the truth: straight before, the course turning at the stated rate during,
+    the stated final course after, the speed kept."""
+    check(m["end_s"] > m["start_s"] and 45 <= abs(m["turn_deg"]) <= 90 and 0.5 <= abs(m["rate_deg_s"]) <= 1.0
+          and abs(m["turn_deg"] / m["rate_deg_s"] - (m["end_s"] - m["start_s"])) < 0.05, f"{k} turn parameters")
+    ts = sorted(track)
+    chords = []  # (mid time, azimuth) of each step between truth rows
+    worst_speed = 0.0
+    for a, b in zip(ts, ts[1:]):
+        dist, az = inverse(*track[a], *track[b])
+        worst_speed = max(worst_speed, abs(dist / (b - a) - sog))
+        chords.append((0.5 * (a + b), az))
+    worst_rate = 0.0  # course change between consecutive chords, per second
+    for (ta, aa), (tb, ab) in zip(chords, chords[1:]):
+        worst_rate = max(worst_rate, abs((ab - aa + 540) % 360 - 180) / (tb - ta))
+    after = [t for t in ts if t > m["end_s"] + 5]
+    if len(after) >= 2:
+        az = inverse(*track[after[0]], *track[after[-1]])[1] % 360
+        check(abs((az - m["cog_after_deg"] + 540) % 360 - 180) < 0.3, f"{k} course after the turn")
+    check(worst_rate <= abs(m["rate_deg_s"]) * 1.05 + 0.01, f"{k} turn rate {worst_rate:.3f} deg/s")
+    check(worst_speed < 0.05, f"{k} speed kept through the turn (worst {worst_speed:.3f} m/s)")
+
+
 def check_arpa(d, params, truth):
     own = {round(float(r["t_s"]), 3): (float(r["lat_deg"]), float(r["lon_deg"])) for r in truth}
     tgt = defaultdict(dict)
@@ -235,8 +258,12 @@ def check_arpa(d, params, truth):
         worst_r = max(worst_r, abs(rng - p["range_nm"] * 1852))
         check(abs(math.sqrt(v2) / KN - p["rel_speed_kn"]) < 0.005, f"{k} relative speed")
         check(p["sog_kn"] <= 40 and 3 <= p["range_nm"] <= 11 and 8 <= p["rel_speed_kn"] <= 30 and 0 <= p["cpa_nm"] <= 2 and p["tcpa_s"] > 0, f"{k} ranges")
-        # Where the CPA falls inside the run, the closest truth range confirms it directly.
-        times = [t for t in tgt[k] if t in own]
+        # Where the CPA falls inside the run (before a --manoeuvre turn), the closest truth range
+        # confirms it directly.
+        m = p.get("manoeuvre")
+        times = [t for t in tgt[k] if t in own and (m is None or t <= m["start_s"])]
+        if m is not None:
+            check_turn(k, m, tgt[k], p["sog_kn"] * KN)
         tmin = min(times, key=lambda t: math.hypot(*rel(t)))
         direct = ""
         if tmin < max(times):  # closest geodesic range in the truth

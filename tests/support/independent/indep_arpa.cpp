@@ -12,6 +12,11 @@
 // straight-line relative motion from there. Every ship then keeps its course and speed over ground
 // (a rhumb line), which curves slightly in that plane (meridian convergence), so the closest range
 // in the truth can differ from the t0 CPA by metres to a few tens of metres.
+// With --manoeuvre every target then turns once, after the 3-minute scoring time: starting at
+// t0 + U(240, 540) s, by U(45, 90) deg to a random side at U(0.5, 1) deg/s, keeping its speed (a rhumb
+// line per 0.1 s of the arc at the step's mid course), and runs straight again; params.json gives each
+// turn's start, end, angle, rate and final course. The draws come from a stream of their own, so the
+// plots before the first turn are the same as without --manoeuvre.
 //
 // Radar model (all numbers are the constants below; params.json repeats them):
 //  * antenna: one rotation per 2.5 s, clockwise, at the ship's heading marker at t = 0, 2.5, 5, ...
@@ -73,7 +78,37 @@ struct Target {
   // drawn geometry at t0
   double rangeNm = 0.0, bearingDeg = 0.0, relSpeedKn = 0.0, relCourseDeg = 0.0, cpaNm = 0.0, tcpaS = 0.0;
   int resamples = 0;
-  LatLon at(double t0S, double tS) const { return rhumbDirect(atT0, cogDeg, sogMps * (tS - t0S)); }
+  // A turn (--manoeuvre): from turnStartS at turnRateDegS (signed) by turnDeg, at constant speed. The
+  // arc is tabulated every kTurnStepS (each step a rhumb line of the step's mid course), then straight.
+  double turnStartS = -1.0, turnDeg = 0.0, turnRateDegS = 0.0;
+  std::vector<LatLon> arc;  ///< positions at turnStartS + k kTurnStepS, k = 0..n
+  [[nodiscard]] bool turns() const { return turnStartS >= 0.0; }
+  [[nodiscard]] double turnEndS() const { return turnStartS + std::abs(turnDeg / turnRateDegS); }
+  [[nodiscard]] double courseAt(double tS) const {
+    if (!turns() || tS <= turnStartS) return cogDeg;
+    return wrapDeg360(cogDeg + turnRateDegS * (std::min(tS, turnEndS()) - turnStartS));
+  }
+  LatLon at(double t0S, double tS) const {
+    if (!turns() || tS <= turnStartS) return rhumbDirect(atT0, cogDeg, sogMps * (tS - t0S));
+    if (tS >= turnEndS()) return rhumbDirect(arc.back(), courseAt(tS), sogMps * (tS - turnEndS()));
+    const double k = (tS - turnStartS) / kTurnStepS;
+    const auto i = std::min(static_cast<std::size_t>(k), arc.size() - 2);
+    const double f = k - static_cast<double>(i);  // linear between tabulated points (sagitta < 1 mm)
+    return {arc[i].latDeg + f * (arc[i + 1].latDeg - arc[i].latDeg),
+            arc[i].lonDeg + f * (arc[i + 1].lonDeg - arc[i].lonDeg)};
+  }
+  void tabulateTurn(double t0S) {
+    const double lengthS = turnEndS() - turnStartS;
+    const auto n = static_cast<std::size_t>(std::ceil(lengthS / kTurnStepS));
+    arc.assign(1, at(t0S, turnStartS));
+    for (std::size_t k = 0; k < n; ++k) {
+      const double a = turnStartS + static_cast<double>(k) * kTurnStepS;
+      const double b = std::min(a + kTurnStepS, turnEndS());
+      arc.push_back(rhumbDirect(arc.back(), courseAt(0.5 * (a + b)), sogMps * (b - a)));
+    }
+    if (arc.size() < 2) arc.push_back(arc.back());
+  }
+  static constexpr double kTurnStepS = 0.1;
 };
 
 struct Plot {
@@ -87,6 +122,7 @@ int runArpa(const ArpaOptions& o) {
   ensureDirectory(o.outDir);
   Rng params = makeRng(o.seed, Stream::Params);
   Rng targetRng = makeRng(o.seed, Stream::Targets);
+  Rng manoeuvreRng = makeRng(o.seed, Stream::Manoeuvre);
 
   // ---- Own ship: constant heading and speed through the water in a constant current ----
   const LatLon start{47.6 + params.uniform(-0.1, 0.1), -122.4 + params.uniform(-0.1, 0.1)};
@@ -151,6 +187,12 @@ int runArpa(const ArpaOptions& o) {
     const RangeBearing step = rangeBearing(t.atT0, fromPlane(positionM + velocityMps * dtS));
     t.sogMps = step.rangeM / dtS;
     t.cogDeg = step.bearingDeg;
+    if (o.manoeuvre) {
+      t.turnStartS = o.t0S + manoeuvreRng.uniform(240.0, 540.0);
+      t.turnDeg = manoeuvreRng.sign() * manoeuvreRng.uniform(45.0, 90.0);
+      t.turnRateDegS = std::copysign(manoeuvreRng.uniform(0.5, 1.0), t.turnDeg);
+      t.tabulateTurn(o.t0S);
+    }
     targets.push_back(t);
   }
 
@@ -190,7 +232,7 @@ int runArpa(const ArpaOptions& o) {
       if (tS < 0.0) continue;
       const std::int64_t tUs = std::llround(tS * 1e6);
       const double exactS = static_cast<double>(tUs) * 1e-6;  // truth at the written time
-      const LatLon reference = offsetEnu(tg.at(o.t0S, exactS), enuFromPolar(glintM, tg.cogDeg));
+      const LatLon reference = offsetEnu(tg.at(o.t0S, exactS), enuFromPolar(glintM, tg.courseAt(exactS)));
       const RangeBearing rb = rangeBearing(ownAt(exactS), reference);
       const double rangeM = quantise(rb.rangeM + rangeNoiseM, kRangeQuantumM);
       if (detect >= kDetectionProbability || rb.rangeM > kMaxRangeNm * kMetresPerNm || rangeM < kMinRangeM)
@@ -216,7 +258,7 @@ int runArpa(const ArpaOptions& o) {
       const LatLon p = tg.at(o.t0S, tS);
       char buf[160];
       std::snprintf(buf, sizeof buf, ",%.3f,%s,%.9f,%.9f,%.4f,%.4f\n", tS, tg.id.c_str(), p.latDeg, p.lonDeg,
-                    tg.sogMps, tg.cogDeg);
+                    tg.sogMps, tg.courseAt(tS));
       truthTargets += clock.iso(tUs, 3) + buf;
     }
   }
@@ -234,10 +276,18 @@ int runArpa(const ArpaOptions& o) {
         buf, sizeof buf,
         "%s\n    {\"id\": \"%s\", \"range_nm\": %.6f, \"bearing_deg\": %.6f, \"rel_speed_kn\": %.6f, "
         "\"rel_course_deg\": %.6f, \"cpa_nm\": %.6f, \"tcpa_s\": %.3f, \"sog_kn\": %.6f, "
-        "\"cog_deg\": %.6f, \"lat_deg_at_t0\": %.9f, \"lon_deg_at_t0\": %.9f, \"resamples\": %d}",
+        "\"cog_deg\": %.6f, \"lat_deg_at_t0\": %.9f, \"lon_deg_at_t0\": %.9f, \"resamples\": %d",
         targetText.empty() ? "" : ",", t.id.c_str(), t.rangeNm, t.bearingDeg, t.relSpeedKn, t.relCourseDeg,
         t.cpaNm, t.tcpaS, t.sogMps / kMpsPerKnot, t.cogDeg, t.atT0.latDeg, t.atT0.lonDeg, t.resamples);
     targetText += buf;
+    if (t.turns()) {
+      std::snprintf(buf, sizeof buf,
+                    ", \"manoeuvre\": {\"start_s\": %.3f, \"end_s\": %.3f, \"turn_deg\": %.4f, "
+                    "\"rate_deg_s\": %.4f, \"cog_after_deg\": %.6f}",
+                    t.turnStartS, t.turnEndS(), t.turnDeg, t.turnRateDegS, t.courseAt(t.turnEndS()));
+      targetText += buf;
+    }
+    targetText += "}";
   }
   char head[4096];
   std::snprintf(

@@ -28,7 +28,7 @@
 //   reckoner-indep-sim ownship --seed N --out DIR [--loran] [--current-max MPS] [--steady-current]
 //       [--duration S] [--outage-start S] [--outage-length S] [--speed-min KN] [--speed-max KN]
 //       [--no-log] [--no-gyro]
-//   reckoner-indep-sim arpa --seed N --out DIR [--duration S] [--t0 S]
+//   reckoner-indep-sim arpa --seed N --out DIR [--duration S] [--t0 S] [--manoeuvre]
 // Bad arguments: one line on stderr, exit status 2. Failure to write: one line, exit status 1.
 #include "indep_sim.h"
 
@@ -50,7 +50,7 @@ constexpr const char* kUsage =
     "usage: reckoner-indep-sim ownship --seed N --out DIR [--loran] [--current-max MPS] [--steady-current] "
     "[--duration S] [--outage-start S] [--outage-length S] [--speed-min KN] [--speed-max KN] [--no-log] "
     "[--no-gyro]\n"
-    "       reckoner-indep-sim arpa --seed N --out DIR [--duration S] [--t0 S]\n";
+    "       reckoner-indep-sim arpa --seed N --out DIR [--duration S] [--t0 S] [--manoeuvre]\n";
 
 class Args {
  public:
@@ -143,6 +143,8 @@ ArpaOptions parseArpa(Args& args) {
       o.durationS = args.number(opt);
     else if (opt == "--t0")
       o.t0S = args.number(opt);
+    else if (opt == "--manoeuvre")
+      o.manoeuvre = true;
     else
       throw UsageError{"arpa: unknown option '" + opt + "'"};
   }

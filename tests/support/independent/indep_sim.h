@@ -47,7 +47,18 @@ class Rng {
 
 // One independent stream per purpose: enabling a sensor never changes another sensor's errors.
 // (Append only: a stream's seed depends on its value, so inserting one would change the others.)
-enum class Stream : std::uint64_t { Params = 1, Plan, Gnss, Gyro, Log, Loran, Radar, Targets, RadarSweep };
+enum class Stream : std::uint64_t {
+  Params = 1,
+  Plan,
+  Gnss,
+  Gyro,
+  Log,
+  Loran,
+  Radar,
+  Targets,
+  RadarSweep,
+  Manoeuvre
+};
 Rng makeRng(std::uint64_t seed, Stream stream);
 
 // First-order Gauss-Markov process x' = -x/tau + w, sampled exactly: x(k+1) = phi x(k) +
@@ -135,6 +146,9 @@ struct ArpaOptions {
   std::string outDir;
   double durationS = 1200.0;
   double t0S = 300.0;  // instant at which each target's drawn geometry holds
+  // Every target turns once, at constant speed, after the 3-minute scoring time (t0 + 240 to 540 s):
+  // by 45-90 deg either way at 0.5-1 deg/s (params.json "manoeuvre").
+  bool manoeuvre = false;
 };
 int runArpa(const ArpaOptions& options);
 

@@ -589,6 +589,22 @@ void readFilter(Fields& top, sim::Scenario& s) {
   }
   fs.gateReopenS = f.numberOr("gate_reopen_s", fs.gateReopenS, Fields::Check::NonNegative);
   fs.minSpeedMps = f.numberOr("min_speed_mps", fs.minSpeedMps, Fields::Check::NonNegative);
+  if (const JsonValue* sm = f.get("ship_motion")) {
+    Fields g(top.file(), *sm, "filter.ship_motion");
+    auto& m = fs.shipMotion;
+    m.enabled = true;
+    if (const JsonValue* e = g.get("enabled")) m.enabled = g.boolean(*e, g.pathOf("enabled"));
+    m.alongAcceleration = {
+        g.numberOr("along_sigma_mps2", m.alongAcceleration.sigma, Fields::Check::NonNegative),
+        g.numberOr("along_beta_per_s", m.alongAcceleration.betaPerS, Fields::Check::Positive)};
+    m.turnRate = {
+        degToRad(g.numberOr("turn_sigma_dps", radToDeg(m.turnRate.sigma), Fields::Check::NonNegative)),
+        g.numberOr("turn_beta_per_s", m.turnRate.betaPerS, Fields::Check::Positive)};
+    m.whiteAccelerationQ =
+        g.numberOr("white_acceleration_m2_s3", m.whiteAccelerationQ, Fields::Check::NonNegative);
+    m.minSpeedMps = g.numberOr("min_speed_mps", m.minSpeedMps, Fields::Check::Positive);
+    g.finish();
+  }
   f.finish();
 }
 
@@ -863,6 +879,17 @@ std::string writeScenario(const sim::Scenario& s) {
   w.key("gate_probability").value(f.gateProbability, kExact);
   w.key("gate_reopen_s").value(f.gateReopenS, kExact);
   w.key("min_speed_mps").value(f.minSpeedMps, kExact);
+  if (f.shipMotion.enabled) {
+    const auto& m = f.shipMotion;
+    w.key("ship_motion").beginObject();
+    w.key("along_sigma_mps2").value(m.alongAcceleration.sigma, kExact);
+    w.key("along_beta_per_s").value(m.alongAcceleration.betaPerS, kExact);
+    w.key("turn_sigma_dps").value(radToDeg(m.turnRate.sigma), kExact);
+    w.key("turn_beta_per_s").value(m.turnRate.betaPerS, kExact);
+    w.key("white_acceleration_m2_s3").value(m.whiteAccelerationQ, kExact);
+    w.key("min_speed_mps").value(m.minSpeedMps, kExact);
+    w.endObject();
+  }
   w.endObject();
 
   const auto& t = s.tracker;

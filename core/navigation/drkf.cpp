@@ -85,6 +85,10 @@ Covariance initialCovariance(const ProcessParams& p, double positionSdM, double 
   constexpr double kFloor = 1e-6;
   sd[kCurX] = sd[kCurY] = std::max(p.current.sigma, kFloor);
   sd[kAccX] = sd[kAccY] = std::max(p.acceleration.sigma, kFloor);
+  if (p.ship.enabled) {
+    sd[kAlongAccel] = std::max(p.ship.alongAcceleration.sigma, kFloor);
+    sd[kTurnRate] = std::max(p.ship.turnRate.sigma, kFloor);
+  }
   sd[kLoranX] = sd[kLoranY] = std::max(p.loranError.sigma, kFloor);
   sd[kLogBias] = std::max(p.speedlogError.sigma, kFloor);
   sd[kHeadingBias] = std::max(p.headingBias.sigma, kFloor);
@@ -100,7 +104,12 @@ std::array<bool, kStateDim> neesStates(const ProcessParams& p) {
     for (int i : states) keep[static_cast<std::size_t>(i)] = false;
   };
   drop(p.current, {kCurX, kCurY});
-  drop(p.acceleration, {kAccX, kAccY});
+  if (p.ship.enabled) {
+    drop(p.ship.alongAcceleration, {kAlongAccel});
+    drop(p.ship.turnRate, {kTurnRate});
+  } else {
+    drop(p.acceleration, {kAccX, kAccY});
+  }
   drop(p.loranError, {kLoranX, kLoranY});
   drop(p.speedlogError, {kLogBias});
   drop(p.headingBias, {kHeadingBias});
@@ -147,8 +156,11 @@ Drkf::Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const Belief&
   rejectedSinceUs_.fill(-1);
   const auto& p = config.process;
   // The calibration states count only when modelled (their default beta would shorten the paper's steps).
+  const double accelBeta = p.ship.enabled
+                               ? std::max(p.ship.alongAcceleration.betaPerS, p.ship.turnRate.betaPerS)
+                               : p.acceleration.betaPerS;
   const double betaMax =
-      std::max({p.current.betaPerS, p.acceleration.betaPerS, p.loranError.betaPerS, p.speedlogError.betaPerS,
+      std::max({p.current.betaPerS, accelBeta, p.loranError.betaPerS, p.speedlogError.betaPerS,
                 p.headingBias.sigma > 0.0 ? p.headingBias.betaPerS : 0.0,
                 p.logScale.sigma > 0.0 ? p.logScale.betaPerS : 0.0});
   maxStepUs_ = std::max<TimeUs>(1, fromSeconds(std::min(kMaxPredictStepS, kMaxBetaDt / betaMax)));
@@ -182,12 +194,37 @@ void Drkf::setBelief(const Belief& b, TimeUs t) {
   timeUs_ = t;
 }
 
+bool Drkf::predictShipMotion(TimeUs dtUs) {
+  // Linearised afresh every step of at most kShipStepS (longer steps for long gaps, where the restart
+  // logic of a replay takes over anyway): the mean by Runge-Kutta, the covariance by Van Loan at the
+  // step's start.
+  constexpr double kShipStepS = 1.0;
+  constexpr int kMaxSteps = 600;
+  const double dtS = toSeconds(dtUs);
+  const int n = std::clamp(static_cast<int>(std::ceil(dtS / kShipStepS)), 1, kMaxSteps);
+  const double h = dtS / n;
+  Belief b = belief_;
+  for (int i = 0; i < n; ++i) {
+    const auto d = process_.discretiseAt(b.x, h);
+    const State x = process_.propagate(b.x, h);
+    Covariance P = d.Phi.lazyProduct(b.P).lazyProduct(d.Phi.transpose()) + d.Q;
+    est::symmetrise(P);
+    if (!x.allFinite() || !P.allFinite()) return false;
+    b.x = x;
+    b.P = P;
+  }
+  belief_ = b;
+  return true;
+}
+
 bool Drkf::predictTo(TimeUs t) {
   if (t < timeUs_) return false;
   if (t == timeUs_) return true;
   const TimeUs dtUs = t - timeUs_;
   bool ok = false;
-  if (dtUs <= maxStepUs_) {
+  if (process_.params().ship.enabled) {
+    ok = predictShipMotion(dtUs);
+  } else if (dtUs <= maxStepUs_) {
     const auto& d = discretisation(dtUs);
     ok = est::predictLinear(belief_, d.Phi, d.Q);
   } else {
@@ -274,11 +311,25 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
     if (!stack.add(b, model, x, z, R, gate, forced)) ++counters_.overflowSamples;
   };
 
+  // Under a ship's motion model a heading without a log in its epoch is applied after the stack, with a
+  // gain that leaves the speed alone (headingOnlyUpdate).
+  const sensors::GyroSample* headingOnly = nullptr;
+  if (config_.process.ship.enabled) {
+    bool log = false;
+    for (const auto& sample : samples) {
+      if (sensors::timeOf(sample) != t) continue;
+      if (std::holds_alternative<sensors::SpeedlogSample>(sample)) log = true;
+      if (const auto* h = std::get_if<sensors::GyroSample>(&sample); h && !headingOnly) headingOnly = h;
+    }
+    if (log) headingOnly = nullptr;
+  }
+
   for (const auto& sample : samples) {
     if (sensors::timeOf(sample) != t) {
       ++counters_.staleSamples;
       continue;
     }
+    if (headingOnly != nullptr && std::get_if<sensors::GyroSample>(&sample) == headingOnly) continue;
     std::visit(
         Overloaded{
             [&](const sensors::GpsSample& s) {
@@ -315,9 +366,14 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
   report.joint = stack.apply(belief_);
   report.dim = report.joint.applied() ? report.joint.dim : 0;
   report.blockCount = stack.blockCount();
-  for (int i = 0; i < stack.blockCount(); ++i) {
-    const est::BlockReport& b = stack.block(i);
-    report.blocks[static_cast<std::size_t>(i)] = b;
+  for (int i = 0; i < stack.blockCount(); ++i) report.blocks[static_cast<std::size_t>(i)] = stack.block(i);
+  if (headingOnly != nullptr && report.blockCount < kMaxBlocksPerEpoch) {
+    report.blocks[static_cast<std::size_t>(report.blockCount++)] = headingOnlyUpdate(t, *headingOnly, g);
+    if (report.blocks[static_cast<std::size_t>(report.blockCount - 1)].status == est::UpdateStatus::Accepted)
+      ++report.dim;
+  }
+  for (int i = 0; i < report.blockCount; ++i) {
+    const est::BlockReport& b = report.blocks[static_cast<std::size_t>(i)];
     ++counters_.byStatus[static_cast<std::size_t>(b.tag)][static_cast<std::size_t>(b.status)];
     TimeUs& since = rejectedSinceUs_[static_cast<std::size_t>(b.tag)];
     if (b.status == est::UpdateStatus::RejectedGate) {
@@ -329,6 +385,103 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
   return report;
 }
 
+est::BlockReport Drkf::headingOnlyUpdate(TimeUs t, const sensors::GyroSample& s, const geo::GridInfo& g) {
+  // The gyro's model (drkf_gyro.h) with the Kalman gain K = P H^T / S projected so that it moves neither
+  // the speed through the water (the velocity along its own direction) nor the along-track
+  // acceleration: a heading carries no information about the speed, and the full gain's speed
+  // component, which comes from the linearisation of atan2 in a Cartesian velocity, drives the speed of
+  // a ship with no log away within minutes (docs/drkf.md, "Ship motion"). Any gain is valid in the
+  // Joseph form: P stays this estimator's covariance.
+  est::BlockReport rep{kGyro,
+                       1,
+                       std::numeric_limits<double>::quiet_NaN(),
+                       gateFor(kGyro, 1, t),
+                       false,
+                       -1,
+                       est::UpdateStatus::Empty};
+  const State& x = belief_.x;
+  const Covariance& P = belief_.P;
+  const double vx = x[kVelX], vy = x[kVelY], speed = std::hypot(vx, vy);
+  // atan2 is near-linear when the direction is known: the velocity's sd across its own direction, not
+  // along it (an uncertain speed of a ship underway does not make its heading ambiguous).
+  if (!(speed >= config_.minSpeedMps)) {
+    rep.status = est::UpdateStatus::RejectedDegenerate;
+    return rep;
+  }
+  const double nx = vy / speed, ny = -vx / speed;
+  const double acrossVar =
+      nx * nx * P(kVelX, kVelX) + 2.0 * nx * ny * P(kVelX, kVelY) + ny * ny * P(kVelY, kVelY);
+  const GyroHeadingModel model(config_.minSpeedMps, config_.process.headingBias.sigma > 0.0);
+  const double z = wrapTwoPi(s.headingRad - g.convergenceRad);
+  if (!(speed >= config_.minSpeedSigmas * std::sqrt(std::max(0.0, acrossVar)))) {
+    // The direction is too uncertain for atan2's linearisation (no heading for a minute or more): the
+    // heading re-anchors it. The velocity turns to the measured heading (less the estimated bias) at
+    // its estimated speed; across it the variance becomes the heading's and the bias's, uncorrelated
+    // with the rest (dropping those correlations keeps P positive definite).
+    const bool withBias = config_.process.headingBias.sigma > 0.0;
+    const double heading = z - (withBias ? x[kHeadingBias] : 0.0);
+    const double ux = std::sin(heading), uy = std::cos(heading);
+    // Rotate P's velocity block to (along, across) of the new direction, reset the across row.
+    Covariance M = Covariance::Identity();
+    M(kVelX, kVelX) = ux;
+    M(kVelX, kVelY) = uy;  // along = u . v
+    M(kVelY, kVelX) = uy;
+    M(kVelY, kVelY) = -ux;  // across = n . v, n = (uy, -ux)
+    Covariance Pr = M * P * M.transpose();
+    const double across = speed * speed * (s.varRad2 + (withBias ? P(kHeadingBias, kHeadingBias) : 0.0));
+    Pr.row(kVelY).setZero();
+    Pr.col(kVelY).setZero();
+    Pr(kVelY, kVelY) = across;
+    Covariance Pn = M.transpose() * Pr * M;  // M is orthogonal and symmetric here
+    est::symmetrise(Pn);
+    State xn = x;
+    xn[kVelX] = speed * ux;
+    xn[kVelY] = speed * uy;
+    if (!xn.allFinite() || !Pn.allFinite()) {
+      rep.status = est::UpdateStatus::RejectedNumerical;
+      return rep;
+    }
+    belief_.x = xn;
+    belief_.P = Pn;
+    rep.forced = true;
+    rep.status = est::UpdateStatus::AcceptedForced;
+    return rep;
+  }
+  const double y = model.residual(est::Vec<1>(z), model.h(x))[0];
+  const est::MatRC<1, kStateDim> H = model.jacobian(x);
+  const est::Vec<kStateDim> PHt = P * H.transpose();
+  const double S = H.dot(PHt) + s.varRad2;
+  if (!std::isfinite(y) || !std::isfinite(S) || !(S > 0.0)) {
+    rep.status = est::UpdateStatus::RejectedNumerical;
+    return rep;
+  }
+  rep.nis = y * y / S;
+  if (rep.gate > 0.0 && rep.nis > rep.gate) {
+    rep.status = est::UpdateStatus::RejectedGate;
+    return rep;
+  }
+  est::Vec<kStateDim> K = PHt / S;
+  const double ux = vx / speed, uy = vy / speed;
+  for (const auto& [ix, iy] : {std::pair{kVelX, kVelY}, std::pair{kPosX, kPosY}, std::pair{kCurX, kCurY}}) {
+    const double along = K[ix] * ux + K[iy] * uy;
+    K[ix] -= along * ux;
+    K[iy] -= along * uy;
+  }
+  K[kAlongAccel] = 0.0;
+  const Covariance A = Covariance::Identity() - K * H;
+  Covariance Pn = A.lazyProduct(P).lazyProduct(A.transpose()) + (s.varRad2 * K) * K.transpose();
+  est::symmetrise(Pn);
+  const State xn = x + K * y;
+  if (!xn.allFinite() || !Pn.allFinite()) {
+    rep.status = est::UpdateStatus::RejectedNumerical;
+    return rep;
+  }
+  belief_.x = xn;
+  belief_.P = Pn;
+  rep.status = est::UpdateStatus::Accepted;
+  return rep;
+}
+
 est::UpdateReport<3> Drkf::updateRadarFix(TimeUs t, const est::Vec<3>& z, const est::Mat<3>& R,
                                           const est::Mat<3>& sensitivity, const est::Vec<3>& assumedMotion) {
   est::UpdateReport<3> rep;
@@ -338,7 +491,9 @@ est::UpdateReport<3> Drkf::updateRadarFix(TimeUs t, const est::Vec<3>& z, const 
   }
   const State& x = belief_.x;
   if (std::hypot(x[kVelX], x[kVelY]) >= linearisableSpeed(false)) {
-    return est::update(belief_, est::drkf::RadarFixModel(sensitivity, assumedMotion), z, R, gates_[3]);
+    return est::update(belief_,
+                       est::drkf::RadarFixModel(sensitivity, assumedMotion, config_.process.ship.enabled), z,
+                       R, gates_[3]);
   }
   const auto r2 = est::update(belief_,
                               est::drkf::RadarPositionModel(est::Mat<2>(sensitivity.topLeftCorner<2, 2>()),

@@ -114,6 +114,10 @@ class Drkf {
     drkf::Covariance Q;
   };
   const Transition& discretisation(TimeUs dtUs);
+  /// predictTo's step under a ship's motion model (drkf_process.h): nonlinear, linearised per second.
+  bool predictShipMotion(TimeUs dtUs);
+  /// A heading with no log in its epoch under a ship's motion model (applied after the stack).
+  est::BlockReport headingOnlyUpdate(TimeUs t, const sensors::GyroSample& s, const geo::GridInfo& g);
   const geo::GridInfo& gridAt(double xM, double yM);
   double gateFor(DrkfBlock b, int dim, TimeUs t) const;
   /// Smallest speed at which the heading / speed magnitude of the velocity block (i0, i1) summed with

@@ -54,7 +54,7 @@ void scoreFix(const RadarFixReport& r, const SimFrame& f, RunOut& o) {
 est::Vec<3> radarFixError(const RadarFixReport& r, const SimFrame& f) {
   const est::Vec<3> err(r.fixPosition[0] - f.truth.position.xM, r.fixPosition[1] - f.truth.position.yM,
                         angleDiff(r.fixHeadingRad, f.truth.headingRad));
-  return err - r.motionSensitivity * (est::drkf::sweepMotionOf(f.trueState) - r.assumedMotion);
+  return err - r.motionSensitivity * (est::drkf::sweepMotionOf(f.trueState, f.shipMotion) - r.assumedMotion);
 }
 
 RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const radar::Coastline> coast,

@@ -9,6 +9,7 @@
 #include "common/step_schedule.h"
 #include "common/time.h"
 #include "estimation/gauss_markov.h"
+#include "estimation/models/drkf_process.h"
 #include "geo/local_frame.h"
 #include "sensors/own_ship_sensor_specs.h"
 #include "sensors/radar.h"
@@ -46,6 +47,10 @@ struct VesselMotionSpec {
   /// Optional Gauss-Markov acceleration added to the scheduled motion (truth drawn from the filter's
   /// own model for consistency tests).
   std::optional<est::GaussMarkov> randomAcceleration;
+  /// Optional random motion of a ship's kind (drkf_process.h's ship motion model: an along-track
+  /// acceleration and a turn rate, Gauss-Markov, and a white acceleration) added to the scheduled motion;
+  /// a matched-model test of a filter with that model. Not together with randomAcceleration.
+  std::optional<est::drkf::ShipMotionParams> randomShipMotion;
 };
 
 /// A radar target: its motion is over ground (no current).
@@ -98,6 +103,8 @@ struct FilterSpec {
   double gateProbability = 0.9999;  ///< per-sensor chi-square gate; 0 disables gating
   double gateReopenS = 10.0;        ///< a sensor rejected this long is applied ungated once
   double minSpeedMps = 0.5;         ///< below: gyro and speedlog are not linearisable
+  /// A ship's motion model in place of the Cartesian acceleration (drkf_process.h); off in the paper.
+  est::drkf::ShipMotionParams shipMotion{};
 };
 
 /// Seed 004: a radar picture matched to the chart's contours every few sweeps, fed to the DRKF as a

@@ -37,6 +37,7 @@ nav::DrkfConfig drkfConfigFor(const Scenario& s) {
   c.process.speedlogError = s.speedlog.error;
   c.process.headingBias = s.gyro.bias;
   c.process.logScale = s.speedlog.scaleError;
+  c.process.ship = s.filter.shipMotion;
   c.gateProbability = s.filter.gateProbability;
   c.gateReopenS = s.filter.gateReopenS;
   c.minSpeedMps = s.filter.minSpeedMps;
@@ -129,6 +130,12 @@ State SimulationEngine::trueState() const {
   x[kLogBias] = speedlog_.errorMps();
   x[kHeadingBias] = gyro_.biasRad();
   x[kLogScale] = speedlog_.scaleError();
+  if (scenario_.filter.shipMotion.enabled) {  // the ship model's x4, x8: along-track and turn rate
+    const double vx = t.waterVxMps, vy = t.waterVyMps, v2 = vx * vx + vy * vy;
+    const double r = std::sqrt(v2);
+    x[kAlongAccel] = r > 0.0 ? (vx * t.accelXMps2 + vy * t.accelYMps2) / r : 0.0;
+    x[kTurnRate] = v2 > 0.0 ? (vy * t.accelXMps2 - vx * t.accelYMps2) / v2 : 0.0;
+  }
   return x;
 }
 
@@ -285,6 +292,7 @@ SimFrame SimulationEngine::step() {
   frame.timeUs = end;
   frame.truth = truth_.state();
   frame.trueState = trueState();
+  frame.shipMotion = scenario_.filter.shipMotion.enabled;
   frame.estimate = drkf_->belief();
   frame.sensors = sensorStatesAt(scenario_, end);
   frame.order = truth_.order();
@@ -392,7 +400,7 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
   // (the direction of the velocity through the water) at t, turning as below.
   const auto& x = drkf_->belief().x;
   const est::Vec<2> estPos(x[est::drkf::kPosX], x[est::drkf::kPosY]);
-  const est::Vec<3> motion = est::drkf::sweepMotionOf(x);
+  const est::Vec<3> motion = est::drkf::sweepMotionOf(x, scenario_.filter.shipMotion.enabled);
   radar::SweepPose estPose;
   estPose.startUs = truePose.startUs;
   estPose.periodS = T;

@@ -78,6 +78,7 @@ struct SimFrame {
   TimeUs timeUs = 0;
   VesselTruth truth;
   est::drkf::State trueState;  ///< truth in the DRKF's coordinates (incl. sensor error states)
+  bool shipMotion = false;     ///< trueState's x4, x8 are the ship model's (along-track, turn rate)
   est::drkf::Belief estimate;
   std::vector<sensors::OwnShipSample> measurements;  ///< taken during this cycle
   std::vector<nav::DrkfUpdateReport> updates;        ///< one per measurement epoch of this cycle

@@ -33,12 +33,25 @@ VesselMotionModel::VesselMotionModel(const VesselMotionSpec& spec, const est::Ga
       rng_(rng) {
   if (!current_.valid() || !randomAccel_.valid())
     throw std::invalid_argument("vessel motion: Gauss-Markov sigma must be >= 0 and beta > 0");
+  if (spec.randomShipMotion) {
+    const auto& sm = *spec.randomShipMotion;
+    if (spec.randomAcceleration)
+      throw std::invalid_argument(
+          "vessel motion: a random acceleration and a random ship motion exclude each other");
+    if (!sm.alongAcceleration.valid() || !sm.turnRate.valid() || !(sm.whiteAccelerationQ >= 0.0) ||
+        !(sm.minSpeedMps > 0.0))
+      throw std::invalid_argument("vessel motion: invalid random ship motion");
+  }
   committed_.commanded = spec.initialVelocityMps;
   committed_.scheduledVel = spec.initialVelocityMps;
   for (auto& r : committed_.random) {
     r.setZero();
     r[1] = rng_.normal(0.0, current_.sigma);      // current from its stationary distribution
     r[3] = rng_.normal(0.0, randomAccel_.sigma);  // so is the random acceleration
+  }
+  if (spec.randomShipMotion) {  // from their stationary distributions
+    committed_.shipAlong = rng_.normal(0.0, spec.randomShipMotion->alongAcceleration.sigma);
+    committed_.shipTurn = rng_.normal(0.0, spec.randomShipMotion->turnRate.sigma);
   }
   committed_.headingRad = initialHeading(spec);
   committed_.timeUs = startUs;
@@ -154,9 +167,37 @@ void VesselMotionModel::substep(Motion& m, TimeUs dtUs, bool noisy) {
     const est::Mat<4> Phi = transition(dtUs);
     for (auto& r : m.random) r = (Phi * r).eval();
   }
+  if (spec_.randomShipMotion) shipSubstep(m, dt, noisy);
   m.timeUs += dtUs;
-  const double vx = m.scheduledVel[0] + m.random[0][2], vy = m.scheduledVel[1] + m.random[1][2];
+  const double vx = m.scheduledVel[0] + m.random[0][2] + m.shipVel[0],
+               vy = m.scheduledVel[1] + m.random[1][2] + m.shipVel[1];
   if (std::hypot(vx, vy) > kHeadingMinSpeedMps) m.headingRad = bearingOf(vx, vy);
+}
+
+void VesselMotionModel::shipSubstep(Motion& m, double dt, bool noisy) {
+  // dv/dt = a v / max(|v|, minSpeed) + omega (v_y, -v_x) + w for the whole velocity through the water
+  // (schedule + ship part), the ship part carrying it (Euler-Maruyama on the 0.1 s grid: the mean
+  // rotation error over a step is ~(omega dt)^2 / 2, 1e-7 at a degree a second); a and omega exact
+  // Gauss-Markov steps.
+  const auto& sm = *spec_.randomShipMotion;
+  const double vx = m.scheduledVel[0] + m.shipVel[0], vy = m.scheduledVel[1] + m.shipVel[1];
+  const double r = std::max(std::hypot(vx, vy), sm.minSpeedMps);
+  const std::array<double, 2> before = m.shipVel;
+  m.shipVel[0] += (m.shipAlong * vx / r + m.shipTurn * vy) * dt;
+  m.shipVel[1] += (m.shipAlong * vy / r - m.shipTurn * vx) * dt;
+  if (noisy) {
+    const double w = std::sqrt(sm.whiteAccelerationQ * dt);
+    m.shipVel[0] += w * rng_.normal();
+    m.shipVel[1] += w * rng_.normal();
+    m.shipAlong = sm.alongAcceleration.phi(dt) * m.shipAlong +
+                  std::sqrt(sm.alongAcceleration.discreteVariance(dt)) * rng_.normal();
+    m.shipTurn =
+        sm.turnRate.phi(dt) * m.shipTurn + std::sqrt(sm.turnRate.discreteVariance(dt)) * rng_.normal();
+  } else {
+    m.shipAlong *= sm.alongAcceleration.phi(dt);
+    m.shipTurn *= sm.turnRate.phi(dt);
+  }
+  for (int i = 0; i < 2; ++i) m.scheduledDisplacement[i] += 0.5 * (before[i] + m.shipVel[i]) * dt;
 }
 
 void VesselMotionModel::advanceTo(TimeUs t) {
@@ -185,11 +226,17 @@ void VesselMotionModel::refreshOutputs(const Motion& m) {
                      spec_.initialPosition.yM + m.scheduledDisplacement[1] + m.random[1][0]};
   truth_.currentXMps = m.random[0][1];
   truth_.currentYMps = m.random[1][1];
-  truth_.waterVxMps = m.scheduledVel[0] + m.random[0][2];
-  truth_.waterVyMps = m.scheduledVel[1] + m.random[1][2];
+  truth_.waterVxMps = m.scheduledVel[0] + m.random[0][2] + m.shipVel[0];
+  truth_.waterVyMps = m.scheduledVel[1] + m.random[1][2] + m.shipVel[1];
   // Scheduled acceleration: the turn (d/dt of the Table II rotation) plus any speed ramp.
   truth_.accelXMps2 = m.turnRateRadPerS * m.scheduledVel[1] + m.rampAccel[0] + m.random[0][3];
   truth_.accelYMps2 = -m.turnRateRadPerS * m.scheduledVel[0] + m.rampAccel[1] + m.random[1][3];
+  if (spec_.randomShipMotion) {  // the ship part's (its white acceleration has no value to show)
+    const double vx = truth_.waterVxMps, vy = truth_.waterVyMps;
+    const double r = std::max(std::hypot(vx, vy), spec_.randomShipMotion->minSpeedMps);
+    truth_.accelXMps2 += m.shipAlong * vx / r + m.shipTurn * vy;
+    truth_.accelYMps2 += m.shipAlong * vy / r - m.shipTurn * vx;
+  }
   truth_.headingRad = m.headingRad;
   order_ = m.order;
 }

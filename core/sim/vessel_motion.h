@@ -61,8 +61,13 @@ class VesselMotionModel {
     // Random part per axis: [displacement from current and random velocity, current, random
     // velocity, random acceleration] (the DRKF's per-axis block).
     std::array<est::Vec<4>, 2> random{};
+    // Random ship motion (spec.randomShipMotion): its velocity through the water on top of the
+    // schedule, along-track acceleration and turn rate.
+    std::array<double, 2> shipVel{};
+    double shipAlong = 0.0, shipTurn = 0.0;
     double headingRad = 0.0;
   };
+  void shipSubstep(Motion& m, double dt, bool noisy);
   struct AxisDiscretisation {
     TimeUs dtUs = -1;
     est::Mat<4> Phi;

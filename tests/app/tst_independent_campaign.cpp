@@ -5,10 +5,10 @@
 // it with its default settings and no per-file tuning; this test scores the output against the
 // generator's truth, converted with GeographicLib alone (nothing of Reckoner's code does the scoring).
 //
-// What must hold, per family (GNSS outage of 10 minutes, with and without Loran-C), over the outage's
-// axis errors of every run: 90-99% within 1.96 reported sd, and RMS error / RMS sd in [0.6, 1.4]
-// (errors inside the sd, and the sd not absurdly larger); without Loran-C, the p95 position error at
-// the end of the outage under 60 m.
+// What must hold, per family (GNSS outage of 10 minutes: with a log, with a log and Loran-C, and with a
+// gyro but no log), over the outage's axis errors of every run: 90-99% within 1.96 reported sd, and RMS
+// error / RMS sd in [0.6, 1.4] (errors inside the sd, and the sd not absurdly larger); with a log, the
+// p95 position error at the end of the outage under 60 m (without one, held to its measured figure).
 // docs/consistency.md has the figures.
 #include <QTemporaryDir>
 #include <QTest>
@@ -61,11 +61,15 @@ struct Family {
 };
 
 /// Generates one run, replays it, and adds its outage rows to the family.
-void score(const QTemporaryDir& dir, int seed, bool loran, Family& fam) {
-  const QString out = dir.filePath(QString("%1-%2").arg(loran ? "loran" : "dr").arg(seed));
+enum class Kind { DeadReckoning, LoranC, NoLog };
+
+void score(const QTemporaryDir& dir, int seed, Kind kind, Family& fam) {
+  const char* name = kind == Kind::LoranC ? "loran" : kind == Kind::NoLog ? "nolog" : "dr";
+  const QString out = dir.filePath(QString("%1-%2").arg(name).arg(seed));
   QString err;
   QStringList genArgs{"ownship", "--seed", QString::number(seed), "--out", out};
-  if (loran) genArgs << "--loran";
+  if (kind == Kind::LoranC) genArgs << "--loran";
+  if (kind == Kind::NoLog) genArgs << "--no-log";
   QVERIFY2(test::runTool(test::toolPath(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"), genArgs, err),
            qPrintable(err));
   QVERIFY2(
@@ -126,23 +130,35 @@ void score(const QTemporaryDir& dir, int seed, bool loran, Family& fam) {
 class TstIndependentCampaign : public QObject {
   Q_OBJECT
 
-  void campaign(bool loran) {
+  void campaign(Kind kind) {
     reckoner::test::limitThisProcess(1200, std::size_t{4} << 30);
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     Family fam;
     constexpr int kRuns = 24;
+    const int seedOffset = kind == Kind::LoranC ? 100 : kind == Kind::NoLog ? 200 : 0;
     for (int seed = 1; seed <= kRuns; ++seed) {
-      score(dir, seed + (loran ? 100 : 0), loran, fam);
+      score(dir, seed + seedOffset, kind, fam);
       if (QTest::currentTestFailed()) return;
     }
     const double w = fam.within(1.96), r = fam.ratio(), p95 = fam.p95End();
     qInfo(
         "%s: %d runs, %zu axis errors in the outage: %.1f%% within 1.96 sd, RMS error / RMS sd %.2f, "
         "p95 error at the end of the outage %.1f m",
-        loran ? "Loran-C on" : "dead reckoning", fam.runs, fam.normalised.size(), 100.0 * w, r, p95);
+        kind == Kind::LoranC  ? "Loran-C on"
+        : kind == Kind::NoLog ? "gyro, no log"
+                              : "dead reckoning",
+        fam.runs, fam.normalised.size(), 100.0 * w, r, p95);
     QVERIFY2(w >= 0.90 && w <= 0.99, qPrintable(QString("within 1.96 sd: %1%").arg(100.0 * w, 0, 'f', 1)));
     QVERIFY2(r >= 0.6 && r <= 1.4, qPrintable(QString("RMS error / RMS sd %1").arg(r, 0, 'f', 2)));
+    if (kind == Kind::NoLog) {
+      // No speed sensor: ten minutes at an unknown speed (the generator changes it by up to 3 kn a leg)
+      // cannot meet 60 m; the figure is held to what was measured (2026-12-02, docs/consistency.md) plus
+      // 15%, so that a change that makes it worse fails.
+      QVERIFY2(p95 < 800.0,
+               qPrintable(QString("p95 end-of-outage error %1 m (recorded 702 m)").arg(p95, 0, 'f', 1)));
+      return;
+    }
     // Issue 16: the p95 position error at the end of ten minutes of pure dead reckoning under 60 m (at
     // 6-14 kn, in a current known before the outage). With Loran-C the same bound holds (it only adds
     // information); docs/consistency.md has the figures.
@@ -151,8 +167,10 @@ class TstIndependentCampaign : public QObject {
   }
 
  private slots:
-  void deadReckoningOutages() { campaign(false); }
-  void loranCOutages() { campaign(true); }
+  void deadReckoningOutages() { campaign(Kind::DeadReckoning); }
+  void loranCOutages() { campaign(Kind::LoranC); }
+  /// GNSS and gyro only (the icebreaker's outfit): the ship motion model's dead reckoning on a heading.
+  void gyroWithoutLogOutages() { campaign(Kind::NoLog); }
 };
 
 QTEST_GUILESS_MAIN(TstIndependentCampaign)

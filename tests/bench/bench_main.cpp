@@ -32,8 +32,9 @@ namespace {
 using namespace reckoner;
 namespace dk = est::drkf;
 
-nav::DrkfConfig benchConfig(bool calibration = false) {
+nav::DrkfConfig benchConfig(bool calibration = false, bool ship = false) {
   nav::DrkfConfig c;
+  c.process.ship.enabled = ship;  // the realistic profile's ship motion model (drkf_process.h)
   if (calibration) {  // the realistic profile's heading bias and log scale states (docs/sensor_profiles.md)
     c.process.headingBias = {degToRad(1.0), 1.0 / 3600.0};
     c.process.logScale = {0.02, 1.0 / 7200.0};
@@ -58,8 +59,8 @@ std::vector<sensors::OwnShipSample> samplesAt(TimeUs t, bool deadReckoning) {
   return out;
 }
 
-nav::Drkf makeFilter(bool calibration = false) {
-  const nav::DrkfConfig c = benchConfig(calibration);
+nav::Drkf makeFilter(bool calibration = false, bool ship = false) {
+  const nav::DrkfConfig c = benchConfig(calibration, ship);
   dk::Belief b;
   b.x.setZero();
   b.x[dk::kVelX] = b.x[dk::kVelY] = 6.0;
@@ -68,8 +69,8 @@ nav::Drkf makeFilter(bool calibration = false) {
   return nav::Drkf(c, geo::LocalFrame(49.0, -123.0), b, 0);
 }
 
-void cycle(benchmark::State& state, bool deadReckoning, bool calibration = false) {
-  nav::Drkf f = makeFilter(calibration);
+void cycle(benchmark::State& state, bool deadReckoning, bool calibration = false, bool ship = false) {
+  nav::Drkf f = makeFilter(calibration, ship);
   // Precompute a long sample sequence so the loop times only the filter.
   constexpr int kEpochs = 4096;
   std::vector<std::vector<sensors::OwnShipSample>> epochs;
@@ -79,7 +80,7 @@ void cycle(benchmark::State& state, bool deadReckoning, bool calibration = false
   for (auto _ : state) {
     if (k == kEpochs) {  // restart the filter (not timed) so the state stays consistent with the samples
       state.PauseTiming();
-      f = makeFilter(calibration);
+      f = makeFilter(calibration, ship);
       k = 0;
       base = 0;
       state.ResumeTiming();
@@ -101,6 +102,12 @@ void BM_DrkfCycleAllSensorsCalibrated(benchmark::State& state) {
   cycle(state, false, true);
 }
 BENCHMARK(BM_DrkfCycleAllSensorsCalibrated);
+
+/// And with the ship motion model (the realistic profile's process: nonlinear, linearised per step).
+void BM_DrkfCycleAllSensorsShipMotion(benchmark::State& state) {
+  cycle(state, false, true, true);
+}
+BENCHMARK(BM_DrkfCycleAllSensorsShipMotion);
 
 void BM_DrkfCycleDeadReckoning(benchmark::State& state) {
   cycle(state, true);

@@ -17,8 +17,10 @@
 
 namespace reckoner::est::drkf {
 
-/// Velocity over ground and the turn rate of the velocity through the water.
-inline Vec<3> sweepMotionOf(const State& x) {
+/// Velocity over ground and the turn rate of the velocity through the water; with a ship's motion
+/// model (turnRateState) the turn rate is the state x8 itself.
+inline Vec<3> sweepMotionOf(const State& x, bool turnRateState = false) {
+  if (turnRateState) return {groundVx(x), groundVy(x), x[kTurnRate]};
   const double vx = x[kVelX], vy = x[kVelY], v2 = vx * vx + vy * vy;
   return {groundVx(x), groundVy(x), v2 > 0.0 ? (vy * x[kAccX] - vx * x[kAccY]) / v2 : 0.0};
 }
@@ -28,12 +30,12 @@ class RadarFixModel {
   static constexpr int kDim = 3;
 
   RadarFixModel() = default;
-  RadarFixModel(const Mat<3>& sensitivity, const Vec<3>& assumedMotion)
-      : S_(sensitivity), assumed_(assumedMotion) {}
+  RadarFixModel(const Mat<3>& sensitivity, const Vec<3>& assumedMotion, bool turnRateState = false)
+      : S_(sensitivity), assumed_(assumedMotion), turnRateState_(turnRateState) {}
 
   [[nodiscard]] Vec<3> h(const State& x) const {
     const Vec<3> base(x[kPosX], x[kPosY], bearingOf(x[kVelX], x[kVelY]));
-    Vec<3> z = base + S_ * (sweepMotionOf(x) - assumed_);
+    Vec<3> z = base + S_ * (sweepMotionOf(x, turnRateState_) - assumed_);
     z[2] = wrapTwoPi(z[2]);
     return z;
   }
@@ -49,10 +51,14 @@ class RadarFixModel {
     MatRC<3, kStateDim> R = MatRC<3, kStateDim>::Zero();
     R(0, kCurX) = R(0, kVelX) = 1.0;
     R(1, kCurY) = R(1, kVelY) = 1.0;
-    R(2, kAccX) = vy / r2;
-    R(2, kAccY) = -vx / r2;
-    R(2, kVelX) = (-x[kAccY] - 2.0 * vx * w) / r2;
-    R(2, kVelY) = (x[kAccX] - 2.0 * vy * w) / r2;
+    if (turnRateState_) {
+      R(2, kTurnRate) = 1.0;
+    } else {
+      R(2, kAccX) = vy / r2;
+      R(2, kAccY) = -vx / r2;
+      R(2, kVelX) = (-x[kAccY] - 2.0 * vx * w) / r2;
+      R(2, kVelY) = (x[kAccX] - 2.0 * vy * w) / r2;
+    }
     H += S_ * R;
     return H;
   }
@@ -63,6 +69,7 @@ class RadarFixModel {
  private:
   Mat<3> S_ = Mat<3>::Zero();
   Vec<3> assumed_ = Vec<3>::Zero();
+  bool turnRateState_ = false;
 };
 
 /// The position part alone (slow ship: no heading, no turn rate), with its sensitivity to the velocity

@@ -28,6 +28,11 @@ enum Index : int {
   kLogScale = 12,     ///< speedlog scale-factor error, dimensionless (Gauss-Markov, slow)
 };
 
+/// Under a ship's motion model (ProcessParams::ship, docs/drkf.md "Ship motion") x4 and x8 are not the
+/// Cartesian acceleration but the acceleration along the velocity through the water and its turn rate.
+inline constexpr int kAlongAccel = kAccX;  ///< m/s^2, along the velocity through the water
+inline constexpr int kTurnRate = kAccY;    ///< rad/s, clockwise (the heading's rate)
+
 using State = Vec<kStateDim>;
 using Covariance = Mat<kStateDim>;
 using Belief = Gaussian<kStateDim>;

@@ -1,6 +1,7 @@
 #include <QTest>
 
 #include "common/angles.h"
+#include "estimation/discretize.h"
 #include "estimation/models/drkf_ground_velocity.h"
 #include "estimation/models/drkf_gyro.h"
 #include "estimation/models/drkf_position_fix.h"
@@ -67,6 +68,63 @@ class TestDrkfModels : public QObject {
     S << -0.4, 0.1, -150.0, 0.2, -0.7, 320.0, 0.01, -0.02, -1.1;
     checkJacobian(RadarFixModel(S, sweepMotionOf(x) + Vec<3>(0.1, -0.05, 0.002)), x);
     checkJacobian(RadarPositionModel(Mat<2>(S.topLeftCorner<2, 2>()), Vec<2>(0.3, 0.1)), x);
+    // Under the ship motion model the fix's turn rate is the state x8.
+    checkJacobian(RadarFixModel(S, sweepMotionOf(x, true) + Vec<3>(0.1, -0.05, 0.002), true), x);
+    QCOMPARE(sweepMotionOf(x, true)[2], x[kTurnRate]);
+  }
+  void shipMotionJacobian_data() { jacobians_data(); }
+  void shipMotionJacobian() {
+    // GIVEN the ship motion model WHEN its continuous Jacobian is compared with central differences of
+    // its derivative THEN they agree, above and below the speed at which the along-track term fades.
+    QFETCH(State, x);
+    ProcessParams p{{0.5, 1.0 / 3600.0}, {0.05, 1.0 / 30.0},    {150.0, 1.0 / 600.0},
+                    {0.1, 1.0 / 3600.0}, {0.017, 1.0 / 3600.0}, {0.02, 1.0 / 7200.0}};
+    p.ship.enabled = true;
+    const ProcessModel m(p);
+    const auto numeric =
+        numericJacobian<kStateDim, kStateDim>([&](const State& s) { return m.derivative(s); }, x,
+                                              [](const State& a, const State& b) { return State(a - b); });
+    const Mat<kStateDim> analytic = m.jacobianAt(x);
+    const double worst = (numeric - analytic).cwiseAbs().maxCoeff();
+    const double speed = std::hypot(x[kVelX], x[kVelY]);
+    if (std::abs(speed - p.ship.minSpeedMps) > 1e-3)  // the kink at minSpeed itself has no derivative
+      QVERIFY2(worst < 1e-6, qPrintable(QString("max |numeric - analytic| = %1").arg(worst)));
+  }
+  void shipMotionDiscretisationIsVanLoansOnTheWholeState() {
+    // GIVEN the ship model linearised at a turning, accelerating ship WHEN discretised on its coupled
+    // states alone THEN Phi and Q equal Van Loan's on all 13 states (the rest are independent).
+    ProcessParams p{{0.5, 1.0 / 3600.0}, {0.05, 1.0 / 30.0},    {150.0, 1.0 / 600.0},
+                    {0.1, 1.0 / 3600.0}, {0.017, 1.0 / 3600.0}, {0.02, 1.0 / 7200.0}};
+    p.ship.enabled = true;
+    const ProcessModel m(p);
+    State x = makeState(4.0, -3.0);
+    x[kAlongAccel] = 0.01;
+    x[kTurnRate] = 0.01;
+    for (const double dt : {0.1, 1.0, 7.5}) {
+      const auto fast = m.discretiseAt(x, dt);
+      const auto full = discretiseVanLoan<kStateDim, kShipNoiseDim>(m.jacobianAt(x), m.shipNoiseInput(), dt);
+      QVERIFY((fast.Phi - full.Phi).cwiseAbs().maxCoeff() <
+              1e-9 * std::max(1.0, full.Phi.cwiseAbs().maxCoeff()));
+      QVERIFY((fast.Q - full.Q).cwiseAbs().maxCoeff() < 1e-9 * std::max(1.0, full.Q.cwiseAbs().maxCoeff()));
+    }
+  }
+  void shipMotionTurnsWithoutChangingSpeed() {
+    // GIVEN a ship at 5 m/s turning at 1 deg/s with no along-track acceleration WHEN propagated 90 s
+    // THEN its speed is kept and its heading has turned 90 deg (the mean's integration is exact enough).
+    ProcessParams p{{0.5, 1e-9}, {0.05, 1.0 / 30.0}, {150.0, 1.0 / 600.0},
+                    {0.1, 1e-9}, {0.0, 1.0},         {0.0, 1.0}};
+    p.ship.enabled = true;
+    p.ship.turnRate = {degToRad(0.5), 1e-9};  // a turn rate that does not decay over the test
+    const ProcessModel m(p);
+    State x = State::Zero();
+    x[kVelY] = 5.0;  // north
+    x[kTurnRate] = degToRad(1.0);
+    const State y = m.propagate(x, 90.0);
+    QVERIFY(std::abs(std::hypot(y[kVelX], y[kVelY]) - 5.0) < 1e-6);
+    QVERIFY(std::abs(angleDiff(bearingOf(y[kVelX], y[kVelY]), degToRad(90.0))) < 1e-6);
+    // the arc: radius 5 / (pi / 180) = 286.5 m, from (0, 0) to (r, r)
+    const double r = 5.0 / degToRad(1.0);
+    QVERIFY(std::abs(y[kPosX] - r) < 1e-3 && std::abs(y[kPosY] - r) < 1e-3);
   }
   void radarFixMovesWithTheAssumedMotion() {
     // GIVEN a fix taken with the filter's own motion, WHEN the state's turn rate differs from the one the

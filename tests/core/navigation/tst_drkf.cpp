@@ -38,6 +38,64 @@ const est::BlockReport* blockOf(const DrkfUpdateReport& r, DrkfBlock b) {
 class TestDrkf : public QObject {
   Q_OBJECT
  private slots:
+  void headingAloneLeavesTheSpeedAlone() {
+    // GIVEN the ship motion model, a ship at 5 m/s whose speed is uncertain by 1 m/s and whose turn
+    // rate and along-track acceleration are correlated with its velocity (after a minute of prediction)
+    // WHEN headings alone arrive, 0.5 deg to starboard of its course THEN the velocity turns towards them,
+    // its length stays what the prediction made it, the along-track acceleration is untouched, and P
+    // stays symmetric positive definite; a heading of a ship stopped is refused as degenerate.
+    DrkfConfig c = config();
+    c.process.ship.enabled = true;
+    Belief b;
+    b.x.setZero();
+    b.x[kVelY] = 5.0;
+    b.x[kAlongAccel] = 0.002;
+    b.x[kTurnRate] = 0.001;
+    b.P = initialCovariance(c.process, 30.0, 1.0);
+    Drkf f(c, geo::LocalFrame(49.0, -123.0), b, 0);
+    QVERIFY(f.predictTo(60 * kMicrosPerSecond));
+    for (int k = 1; k <= 10; ++k) {
+      if (k == 1) {  // a minute without a heading: the first one re-anchors the direction
+        const TimeUs t = 61 * kMicrosPerSecond;
+        QVERIFY(f.predictTo(t));
+        const double speed = std::hypot(f.belief().x[kVelX], f.belief().x[kVelY]);
+        const std::vector<OwnShipSample> s{GyroSample{t, degToRad(10.0), 1e-6}};
+        const auto* g = blockOf(f.update(t, s), kGyro);
+        QVERIFY(g && g->status == est::UpdateStatus::AcceptedForced);
+        const State& x = f.belief().x;
+        QVERIFY(std::abs(std::hypot(x[kVelX], x[kVelY]) - speed) < 1e-9);
+        QVERIFY2(std::abs(angleDiff(bearingOf(x[kVelX], x[kVelY]), degToRad(10.0) - x[kHeadingBias])) < 1e-5,
+                 qPrintable(QString("%1 %2 %3")
+                                .arg(radToDeg(bearingOf(x[kVelX], x[kVelY])))
+                                .arg(x[kVelX])
+                                .arg(x[kVelY])));
+        QVERIFY(est::isPositiveDefinite(f.belief().P));
+        continue;
+      }
+      const TimeUs t = (60 + k) * kMicrosPerSecond;
+      QVERIFY(f.predictTo(t));
+      const State before = f.belief().x;
+      const double course = bearingOf(before[kVelX], before[kVelY]);
+      const std::vector<OwnShipSample> s{
+          GyroSample{t, wrapTwoPi(course + degToRad(0.5)), degToRad(0.3) * degToRad(0.3)}};
+      const auto r = f.update(t, s);
+      const auto* g = blockOf(r, kGyro);
+      QVERIFY(g);
+      QVERIFY2(g->status == est::UpdateStatus::Accepted, std::string(est::statusName(g->status)).c_str());
+      const State& x = f.belief().x;
+      QVERIFY(std::abs(std::hypot(x[kVelX], x[kVelY]) - std::hypot(before[kVelX], before[kVelY])) < 1e-3);
+      QCOMPARE(x[kAlongAccel], before[kAlongAccel]);
+      QVERIFY(angleDiff(bearingOf(x[kVelX], x[kVelY]), course) > 0.0);  // turned to starboard
+      QVERIFY(est::isPositiveDefinite(f.belief().P));
+      QVERIFY((f.belief().P - f.belief().P.transpose()).cwiseAbs().maxCoeff() == 0.0);
+    }
+    Belief stopped = b;
+    stopped.x[kVelY] = 0.1;
+    Drkf g(c, geo::LocalFrame(49.0, -123.0), stopped, 0);
+    const std::vector<OwnShipSample> s{GyroSample{kMicrosPerSecond, 0.0, 1e-4}};
+    const auto r = g.update(kMicrosPerSecond, s);
+    QVERIFY(blockOf(r, kGyro) && blockOf(r, kGyro)->status == est::UpdateStatus::RejectedDegenerate);
+  }
   void gyroAcrossNorthPullsTheShortWay() {
     // GIVEN a ship heading 359 deg WHEN the gyro says 1 deg THEN the innovation is +2 deg and the
     // estimated heading moves towards north, not the long way round through south.

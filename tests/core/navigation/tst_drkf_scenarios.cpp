@@ -68,8 +68,11 @@ class TestDrkfScenarios : public QObject {
 
   void calibrationStatesAreConsistent_data() {
     QTest::addColumn<int>("profile");
-    QTest::newRow("imo") << static_cast<int>(sim::SensorProfile::Imo);
-    QTest::newRow("realistic") << static_cast<int>(sim::SensorProfile::Realistic);
+    QTest::addColumn<bool>("log");
+    QTest::newRow("imo") << static_cast<int>(sim::SensorProfile::Imo) << true;
+    QTest::newRow("realistic") << static_cast<int>(sim::SensorProfile::Realistic) << true;
+    // No log: dead reckoning on the heading alone (the speed-neutral heading update, docs/drkf.md).
+    QTest::newRow("realistic, no log") << static_cast<int>(sim::SensorProfile::Realistic) << false;
   }
   void calibrationStatesAreConsistent() {
     // GIVEN the matched-model scenario with a profile's sensors (a gyro with a calibration error, a
@@ -78,11 +81,18 @@ class TestDrkfScenarios : public QObject {
     // (never optimistic), inside them with GNSS and Loran-C, and within 15% of 13 in dead reckoning
     // (slightly conservative there: docs/consistency.md).
     QFETCH(int, profile);
+    QFETCH(bool, log);
     sim::Scenario sc = test::builtinScenario("matched-model");
     sim::applySensorProfile(sc, static_cast<sim::SensorProfile>(profile));
+    sc.speedlog.fitted = log;
     // The world drawn from the filter's own models: matched.
     sc.current = *sc.filter.current;
-    sc.ownShip.randomAcceleration = sc.filter.acceleration;
+    if (sc.filter.shipMotion.enabled) {  // the profile's ship motion model
+      sc.ownShip.randomAcceleration.reset();
+      sc.ownShip.randomShipMotion = sc.filter.shipMotion;
+    } else {
+      sc.ownShip.randomAcceleration = sc.filter.acceleration;
+    }
     const auto runs = sim::runMonteCarlo(sc, kRuns, 2, sc.seed);
     const auto summary = metrics::summariseMonteCarlo(sc, runs);
     QCOMPARE(summary.neesDof, 13);
@@ -92,7 +102,10 @@ class TestDrkfScenarios : public QObject {
             p.stats.phase.label.c_str(), p.stats.meanNees, summary.bounds.lower, summary.bounds.upper,
             p.maxMeanNees);
       const QString label = QString::fromStdString(p.stats.phase.label);
-      QVERIFY2(p.stats.meanNees < summary.bounds.upper, qPrintable(label));
+      // Dead reckoning on a heading alone is a little optimistic (the EKF's linearisation of a turning
+      // ship whose speed is uncertain by a metre per second: docs/consistency.md), by up to 10% there.
+      const bool headingOnly = !log && p.stats.phase.kind == metrics::PhaseKind::DeadReckoning;
+      QVERIFY2(p.stats.meanNees < summary.bounds.upper * (headingOnly ? 1.1 : 1.0), qPrintable(label));
       const bool fixes = p.stats.phase.kind != metrics::PhaseKind::DeadReckoning;
       QVERIFY2(p.stats.meanNees > (fixes ? summary.bounds.lower : 0.85 * 13.0), qPrintable(label));
     }

@@ -3,7 +3,8 @@
 //   [--quiet] reckoner-cli montecarlo SCENARIO --runs N [--threads K] [--seed N] [--profile P] --out DIR
 //   [--quiet] reckoner-cli chart info PATH... reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config
 //   SCENARIO] [--assume-association]
-//                       [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] [--profile P] --out DIR
+//                       [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] [--profile P]
+//                       [--adaptive-gnss on|off] --out DIR
 //   reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR
 //   reckoner-cli compare SCENARIO [--runs N] [--targets LIST] [--threads K] [--seed N] --out DIR [--quiet]
 //   reckoner-cli imo [SCENARIO...] [--runs N] [--threads K] [--seed N]   (exit 1 if a cell fails)
@@ -76,10 +77,13 @@ constexpr const char* kUsage =
     "  reckoner-cli chart pick PATH... --at LAT,LON [--scale N] [--tolerance PX]   (pick report as JSON)\n"
     "  (PATH builtin:default is the embedded fictional chart)\n"
     "  reckoner-cli replay --nmea FILE [--radar FILE.csv] [--config SCENARIO] [--assume-association]\n"
-    "               [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] [--profile P] --out DIR\n"
+    "               [--max-gap S] [--date YYYY-MM-DD] [--variation DEG] [--profile P] [--adaptive-gnss "
+    "on|off]\n"
+    "               --out DIR\n"
     "               (S: no data longer than this restarts the DRKF, default 120; --date: for a log without\n"
     "               dates; --variation: magnetic variation, east positive, when the file gives none;\n"
-    "               --profile: default realistic, or the --config scenario's own sensor figures)\n"
+    "               --profile: default realistic, or the --config scenario's own sensor figures;\n"
+    "               --adaptive-gnss: scale the receiver's position noise by a variational-Bayes estimate)\n"
     "  reckoner-cli export SCENARIO [--seed N] [--date YYYY-MM-DD] --out DIR   (NMEA + radar CSV of a run)\n"
     "  reckoner-cli compare SCENARIO [--runs N] [--targets 1,2,5,10,20] [--threads K] [--seed N] --out DIR\n"
     "  reckoner-cli own-ship-compare SCENARIO [--runs N] [--threads K] [--seed N]   (DRKF, seed 002 geodetic "
@@ -869,9 +873,9 @@ int cmdCompare(int argc, char** argv) {
 }
 
 int cmdReplay(int argc, char** argv) {
-  const Args a = parseArgs(
-      argc, argv, 2,
-      {"nmea", "radar", "config", "out", "assume-association", "max-gap", "date", "variation", "profile"});
+  const Args a = parseArgs(argc, argv, 2,
+                           {"nmea", "radar", "config", "out", "assume-association", "max-gap", "date",
+                            "variation", "profile", "adaptive-gnss"});
   if (!a.positional.empty()) throw UsageError("replay takes no positional arguments (use --nmea FILE)");
   if (!a.options.count("nmea")) throw UsageError("--nmea FILE is required");
   sim::ReplayOptions o;
@@ -894,6 +898,12 @@ int cmdReplay(int argc, char** argv) {
     o.settings.radar.bearingSdRad = degToRad(0.5);
   }
   o.assumeAssociation = a.assumeAssociation;
+  if (a.options.count("adaptive-gnss")) {
+    const std::string& v = a.options.at("adaptive-gnss");
+    if (v != "on" && v != "off")
+      throw UsageError("--adaptive-gnss: expected on or off, got " + io::quoted(v));
+    o.settings.filter.adaptiveGnssNoise = v == "on";
+  }
   if (a.options.count("max-gap")) o.maxGapS = parseReal("max-gap", a.options.at("max-gap"), 1.0, 1e7);
   if (a.options.count("variation"))
     o.variationDeg = parseReal("variation", a.options.at("variation"), -180.0, 180.0);

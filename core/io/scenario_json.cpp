@@ -589,6 +589,8 @@ void readFilter(Fields& top, sim::Scenario& s) {
   }
   fs.gateReopenS = f.numberOr("gate_reopen_s", fs.gateReopenS, Fields::Check::NonNegative);
   fs.minSpeedMps = f.numberOr("min_speed_mps", fs.minSpeedMps, Fields::Check::NonNegative);
+  if (const JsonValue* ag = f.get("adaptive_gnss_noise"))
+    fs.adaptiveGnssNoise = f.boolean(*ag, f.pathOf("adaptive_gnss_noise"));
   if (const JsonValue* sm = f.get("ship_motion")) {
     Fields g(top.file(), *sm, "filter.ship_motion");
     auto& m = fs.shipMotion;
@@ -879,6 +881,7 @@ std::string writeScenario(const sim::Scenario& s) {
   w.key("gate_probability").value(f.gateProbability, kExact);
   w.key("gate_reopen_s").value(f.gateReopenS, kExact);
   w.key("min_speed_mps").value(f.minSpeedMps, kExact);
+  if (f.adaptiveGnssNoise) w.key("adaptive_gnss_noise").value(true);
   if (f.shipMotion.enabled) {
     const auto& m = f.shipMotion;
     w.key("ship_motion").beginObject();

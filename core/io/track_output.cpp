@@ -179,6 +179,12 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   n("after_gap", s.restartsAfterGap);
   n("after_failure", s.restartsAfterFailure);
   w.endObject();
+  if (r.gnssNoiseScale)
+    w.key("gnss_noise_scale")
+        .beginArray()
+        .value((*r.gnssNoiseScale)[0], 4)
+        .value((*r.gnssNoiseScale)[1], 4)
+        .endArray();
   w.endObject();
   w.key("sources").beginArray();
   const double span = r.own.empty() ? 0.0 : toSeconds(r.own.back().timeUs - r.own.front().timeUs);

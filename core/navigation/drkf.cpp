@@ -311,6 +311,7 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
     if (!stack.add(b, model, x, z, R, gate, forced)) ++counters_.overflowSamples;
   };
 
+  const sensors::GpsSample* gnssFix = nullptr;  // for the adaptive GNSS noise
   // Under a ship's motion model a heading without a log in its epoch is applied after the stack, with a
   // gain that leaves the speed alone (headingOnlyUpdate).
   const sensors::GyroSample* headingOnly = nullptr;
@@ -333,8 +334,14 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
     std::visit(
         Overloaded{
             [&](const sensors::GpsSample& s) {
+              est::Mat<2> R = est::Mat<2>::Identity() * s.positionVarM2;
+              if (config_.adaptiveGnssNoise) {
+                R(0, 0) *= gnssScale_.scale(0);
+                R(1, 1) *= gnssScale_.scale(1);
+                gnssFix = &s;
+              }
               addBlock(kGpsPosition, PositionFixModel(PositionFixModel::Source::Gps),
-                       est::Vec<2>(s.position.xM, s.position.yM), est::Mat<2>::Identity() * s.positionVarM2);
+                       est::Vec<2>(s.position.xM, s.position.yM), R);
               if (s.hasVelocity) {
                 // True east/north to grid: rotate by -convergence, scale by the point scale.
                 const est::Vec<2> v(g.scale * (s.velEastMps * cg - s.velNorthMps * sg),
@@ -372,6 +379,10 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
     if (report.blocks[static_cast<std::size_t>(report.blockCount - 1)].status == est::UpdateStatus::Accepted)
       ++report.dim;
   }
+  if (gnssFix != nullptr) {
+    const est::BlockReport* b = report.block(kGpsPosition);
+    if (b && est::isApplied(b->status)) adaptGnssNoise(*gnssFix);
+  }
   for (int i = 0; i < report.blockCount; ++i) {
     const est::BlockReport& b = report.blocks[static_cast<std::size_t>(i)];
     ++counters_.byStatus[static_cast<std::size_t>(b.tag)][static_cast<std::size_t>(b.status)];
@@ -383,6 +394,26 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
     }
   }
   return report;
+}
+
+void Drkf::adaptGnssNoise(const sensors::GpsSample& s) {
+  // Variational Bayes for an unknown scale lambda on a known R0 (Sarkka and Nummenmaa 2009, one
+  // iteration): with the posterior x+, P+ of this update and a forgetting factor rho,
+  //   alpha <- rho alpha + 1/2,   beta <- rho beta + ((z - x+)^2 + P+) / (2 R0),   lambda = beta / alpha,
+  // per grid axis. lambda is clamped to [0.25, 100] so that one odd stretch cannot make R absurd.
+  const double rho = 1.0 - 1.0 / std::max(2.0, config_.adaptiveWindow);
+  const double z[2] = {s.position.xM, s.position.yM};
+  const int pos[2] = {kPosX, kPosY};
+  for (int a = 0; a < 2; ++a) {
+    const auto i = static_cast<std::size_t>(a);
+    const double e = z[a] - belief_.x[pos[a]];
+    const double term = (e * e + belief_.P(pos[a], pos[a])) / (2.0 * s.positionVarM2);
+    if (!std::isfinite(term)) continue;
+    gnssScale_.alpha[i] = rho * gnssScale_.alpha[i] + 0.5;
+    gnssScale_.beta[i] = rho * gnssScale_.beta[i] + term;
+    const double lambda = std::clamp(gnssScale_.scale(a), 0.25, 100.0);
+    gnssScale_.beta[i] = lambda * gnssScale_.alpha[i];
+  }
 }
 
 est::BlockReport Drkf::headingOnlyUpdate(TimeUs t, const sensors::GyroSample& s, const geo::GridInfo& g) {

@@ -28,6 +28,19 @@ struct DrkfConfig {
   /// ... nor below this many standard deviations of the speed (largest axis of the velocity covariance):
   /// atan2 and |v| are only near-linear when the velocity is known to be clearly non-zero.
   double minSpeedSigmas = 3.0;
+  /// Adaptive GNSS position noise (docs/drkf.md, "Adaptive GNSS noise"): each axis's R is the
+  /// receiver's (GST or HDOP) times a scale estimated by a variational-Bayes inverse-gamma recursion
+  /// with forgetting over about adaptiveWindow fixes. Off: R as the receiver says.
+  bool adaptiveGnssNoise = false;
+  double adaptiveWindow = 60.0;
+};
+
+/// The adaptive GNSS noise's state: per grid axis, the inverse-gamma (alpha, beta) of the scale on R.
+struct GnssNoiseScale {
+  std::array<double, 2> alpha{5.0, 5.0}, beta{5.0, 5.0};  ///< prior: scale 1, worth ten fixes
+  [[nodiscard]] double scale(int axis) const {
+    return beta[static_cast<std::size_t>(axis)] / alpha[static_cast<std::size_t>(axis)];
+  }
 };
 
 /// The DRKF's measurement blocks (each with its own gate).
@@ -105,6 +118,8 @@ class Drkf {
   /// std::invalid_argument for a non-finite belief.
   void setBelief(const drkf::Belief& b, TimeUs t);
   [[nodiscard]] const DrkfCounters& counters() const { return counters_; }
+  /// The adaptive GNSS noise's current scale per axis (1, 1 when not adaptive).
+  [[nodiscard]] const GnssNoiseScale& gnssNoiseScale() const { return gnssScale_; }
   [[nodiscard]] const DrkfConfig& config() const { return config_; }
   [[nodiscard]] const geo::LocalFrame& frame() const { return frame_; }
 
@@ -118,6 +133,8 @@ class Drkf {
   bool predictShipMotion(TimeUs dtUs);
   /// A heading with no log in its epoch under a ship's motion model (applied after the stack).
   est::BlockReport headingOnlyUpdate(TimeUs t, const sensors::GyroSample& s, const geo::GridInfo& g);
+  /// The adaptive GNSS noise's recursion after an applied GNSS position fix.
+  void adaptGnssNoise(const sensors::GpsSample& s);
   const geo::GridInfo& gridAt(double xM, double yM);
   double gateFor(DrkfBlock b, int dim, TimeUs t) const;
   /// Smallest speed at which the heading / speed magnitude of the velocity block (i0, i1) summed with
@@ -141,6 +158,7 @@ class Drkf {
   geo::GridPoint gridPoint_{std::numeric_limits<double>::quiet_NaN(), 0.0};
   geo::GridInfo grid_;
   DrkfCounters counters_;
+  GnssNoiseScale gnssScale_;
 };
 
 }  // namespace reckoner::nav

@@ -257,6 +257,8 @@ void Runner::ownShip(const Epoch& e) {
   }
   const nav::DrkfUpdateReport rep = drkf_->update(t, samples);
   count(rep, samples);
+  if (config_.adaptiveGnssNoise)
+    res_.gnssNoiseScale = {drkf_->gnssNoiseScale().scale(0), drkf_->gnssNoiseScale().scale(1)};
   const bool failed = rep.joint.status == est::UpdateStatus::RejectedNumerical ||
                       rep.joint.status == est::UpdateStatus::RejectedNonFinite;
   failedEpochs_ = failed ? failedEpochs_ + 1 : 0;

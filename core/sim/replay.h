@@ -134,6 +134,8 @@ struct ReplayResult {
   nav::DrkfCounters drkf;                                          ///< summed over restarts
   std::array<SensorUpdateCounts, nav::kDrkfBlockCount> updates{};  ///< indexed by nav::DrkfBlock
   track::TrackCounters tracking;
+  /// The adaptive GNSS noise's scale on R per grid axis at the end (empty: not adaptive).
+  std::optional<std::array<double, 2>> gnssNoiseScale;
   /// One line each: what the replay changed or doubted (an origin far from the data, a file written out
   /// of time order, ...). The command line prints them as warnings.
   std::vector<std::string> warnings;

@@ -105,6 +105,8 @@ struct FilterSpec {
   double minSpeedMps = 0.5;         ///< below: gyro and speedlog are not linearisable
   /// A ship's motion model in place of the Cartesian acceleration (drkf_process.h); off in the paper.
   est::drkf::ShipMotionParams shipMotion{};
+  /// nav::DrkfConfig::adaptiveGnssNoise: the GNSS position noise scaled by a variational-Bayes estimate.
+  bool adaptiveGnssNoise = false;
 };
 
 /// Seed 004: a radar picture matched to the chart's contours every few sweeps, fed to the DRKF as a

@@ -38,6 +38,7 @@ nav::DrkfConfig drkfConfigFor(const Scenario& s) {
   c.process.headingBias = s.gyro.bias;
   c.process.logScale = s.speedlog.scaleError;
   c.process.ship = s.filter.shipMotion;
+  c.adaptiveGnssNoise = s.filter.adaptiveGnssNoise;
   c.gateProbability = s.filter.gateProbability;
   c.gateReopenS = s.filter.gateReopenS;
   c.minSpeedMps = s.filter.minSpeedMps;

@@ -10,6 +10,10 @@
 // error / RMS sd in [0.6, 1.4] (errors inside the sd, and the sd not absurdly larger); with a log, the
 // p95 position error at the end of the outage under 60 m (without one, held to its measured figure).
 // docs/consistency.md has the figures.
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -50,6 +54,7 @@ struct Family {
   double sumErr2 = 0, sumSd2 = 0;
   std::vector<double> endErrorM;  ///< position error at the end of each run's outage
   int runs = 0;
+  std::vector<double> noiseScale;  ///< the adaptive GNSS noise's final scale, both axes of every run
 
   [[nodiscard]] double within(double k) const {
     const auto n =
@@ -63,19 +68,37 @@ struct Family {
 /// Generates one run, replays it, and adds its outage rows to the family.
 enum class Kind { DeadReckoning, LoranC, NoLog };
 
-void score(const QTemporaryDir& dir, int seed, Kind kind, Family& fam) {
+/// What else a run is given: generator and replay options, and which rows are scored (the outage, or
+/// the rows with GNSS on from 600 s, after the filter has settled).
+struct Extra {
+  QStringList generator, replay;
+  bool scoreGnssOn = false;
+  QString tag;
+};
+
+void score(const QTemporaryDir& dir, int seed, Kind kind, Family& fam, const Extra& extra = {}) {
   const char* name = kind == Kind::LoranC ? "loran" : kind == Kind::NoLog ? "nolog" : "dr";
-  const QString out = dir.filePath(QString("%1-%2").arg(name).arg(seed));
+  const QString out = dir.filePath(QString("%1%2-%3").arg(name, extra.tag).arg(seed));
   QString err;
   QStringList genArgs{"ownship", "--seed", QString::number(seed), "--out", out};
   if (kind == Kind::LoranC) genArgs << "--loran";
   if (kind == Kind::NoLog) genArgs << "--no-log";
+  genArgs << extra.generator;
   QVERIFY2(test::runTool(test::toolPath(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"), genArgs, err),
            qPrintable(err));
-  QVERIFY2(
-      test::runTool(test::toolPath(RECKONER_CLI, "RECKONER_CLI_UNDER_TEST"),
-                    {"replay", "--nmea", out + "/ownship.nmea", "--out", out + "/replay", "--quiet"}, err),
-      qPrintable(err));
+  QStringList replayArgs{"replay", "--nmea", out + "/ownship.nmea", "--out", out + "/replay", "--quiet"};
+  replayArgs << extra.replay;
+  QVERIFY2(test::runTool(test::toolPath(RECKONER_CLI, "RECKONER_CLI_UNDER_TEST"), replayArgs, err),
+           qPrintable(err));
+  if (extra.replay.contains("--adaptive-gnss")) {  // the estimated scale on the receiver's R
+    QFile f(out + "/replay/summary.json");
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QJsonArray s = QJsonDocument::fromJson(f.readAll())
+                             .object()["own_ship_filter"]
+                             .toObject()["gnss_noise_scale"]
+                             .toArray();
+    for (const auto& v : s) fam.noiseScale.push_back(v.toDouble());
+  }
   Rows truth, est;
   try {
     truth = readRows(out + "/truth.csv", [](const test::Csv& c, const auto& v) {
@@ -104,7 +127,7 @@ void score(const QTemporaryDir& dir, int seed, Kind kind, Family& fam) {
   double lastOutageT = -1, endErr = NAN;
   int rows = 0;
   for (const auto& [utc, t] : truth) {
-    if (t.gpsOn) continue;
+    if (t.gpsOn != extra.scoreGnssOn || (extra.scoreGnssOn && t.tS < 600.0)) continue;
     const auto e = est.find(utc);
     QVERIFY2(e != est.end(), qPrintable(out + ": no estimate at " + QString::fromStdString(utc)));
     const GeographicLib::LocalCartesian enu(t.latDeg, t.lonDeg, 0.0);
@@ -171,6 +194,41 @@ class TstIndependentCampaign : public QObject {
   void loranCOutages() { campaign(Kind::LoranC); }
   /// GNSS and gyro only (the icebreaker's outfit): the ship motion model's dead reckoning on a heading.
   void gyroWithoutLogOutages() { campaign(Kind::NoLog); }
+
+  /// A receiver whose GST claims a third of its noise: with GNSS on, the filter believes it and its sd
+  /// is several times too small; `--adaptive-gnss on` estimates the scale on R (about 9) and recovers
+  /// the consistency the same filter has with an honest GST; with an honest GST it changes little.
+  void adaptiveGnssNoiseRecoversAnUnderstatedGst() {
+    reckoner::test::limitThisProcess(1200, std::size_t{4} << 30);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    constexpr int kRuns = 8;
+    const QStringList understated{"--gst-understates", "3"};
+    Family plain, adaptive, honest, honestAdaptive;
+    for (int seed = 301; seed < 301 + kRuns; ++seed) {
+      score(dir, seed, Kind::DeadReckoning, plain, {understated, {}, true, "u"});
+      score(dir, seed, Kind::DeadReckoning, adaptive, {understated, {"--adaptive-gnss", "on"}, true, "ua"});
+      score(dir, seed, Kind::DeadReckoning, honest, {{}, {}, true, "h"});
+      score(dir, seed, Kind::DeadReckoning, honestAdaptive, {{}, {"--adaptive-gnss", "on"}, true, "ha"});
+      if (QTest::currentTestFailed()) return;
+    }
+    std::vector<double> scale = adaptive.noiseScale;
+    std::sort(scale.begin(), scale.end());
+    QVERIFY(scale.size() == 2 * kRuns);
+    qInfo(
+        "GNSS on, GST understating 3x: RMS error / RMS sd %.2f (%.1f%% within 1.96 sd); adaptive %.2f "
+        "(%.1f%%), "
+        "scale on R %.2f to %.2f (9 expected); honest GST %.2f (%.1f%%), adaptive %.2f (%.1f%%)",
+        plain.ratio(), 100.0 * plain.within(1.96), adaptive.ratio(), 100.0 * adaptive.within(1.96),
+        scale.front(), scale.back(), honest.ratio(), 100.0 * honest.within(1.96), honestAdaptive.ratio(),
+        100.0 * honestAdaptive.within(1.96));
+    QVERIFY2(plain.ratio() > 3.0, "the understated GST did not make the filter over-confident");
+    QVERIFY2(scale.front() > 6.0 && scale.back() < 13.0, "the estimated scale is not about 9");
+    QVERIFY2(std::abs(adaptive.ratio() - honest.ratio()) < 0.15 * honest.ratio(),
+             "adaptive on an understated GST is not as consistent as the plain filter on an honest one");
+    QVERIFY2(std::abs(honestAdaptive.ratio() - honest.ratio()) < 0.1 * honest.ratio(),
+             "the adaptive estimate changes an honest receiver's consistency by more than 10%");
+  }
 };
 
 QTEST_GUILESS_MAIN(TstIndependentCampaign)

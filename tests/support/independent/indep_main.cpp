@@ -27,7 +27,7 @@
 // Usage:
 //   reckoner-indep-sim ownship --seed N --out DIR [--loran] [--current-max MPS] [--steady-current]
 //       [--duration S] [--outage-start S] [--outage-length S] [--speed-min KN] [--speed-max KN]
-//       [--no-log] [--no-gyro]
+//       [--no-log] [--no-gyro] [--gst-understates F]
 //   reckoner-indep-sim arpa --seed N --out DIR [--duration S] [--t0 S] [--manoeuvre]
 // Bad arguments: one line on stderr, exit status 2. Failure to write: one line, exit status 1.
 #include "indep_sim.h"
@@ -49,7 +49,7 @@ struct UsageError {
 constexpr const char* kUsage =
     "usage: reckoner-indep-sim ownship --seed N --out DIR [--loran] [--current-max MPS] [--steady-current] "
     "[--duration S] [--outage-start S] [--outage-length S] [--speed-min KN] [--speed-max KN] [--no-log] "
-    "[--no-gyro]\n"
+    "[--no-gyro] [--gst-understates F]\n"
     "       reckoner-indep-sim arpa --seed N --out DIR [--duration S] [--t0 S] [--manoeuvre]\n";
 
 class Args {
@@ -120,12 +120,16 @@ OwnShipOptions parseOwnShip(Args& args) {
       o.speedMinKn = args.number(opt);
     else if (opt == "--speed-max")
       o.speedMaxKn = args.number(opt);
+    else if (opt == "--gst-understates")
+      o.gstUnderstates = args.number(opt);
     else
       throw UsageError{"ownship: unknown option '" + opt + "'"};
   }
   require(!o.outDir.empty(), "ownship: --out DIR is required");
   require(o.durationS >= 1.0 && o.durationS <= 7.0 * 86400.0, "ownship: --duration must be in [1, 604800] s");
   require(o.currentMaxMps >= 0.0 && o.currentMaxMps <= 5.0, "ownship: --current-max must be in [0, 5] m/s");
+  require(o.gstUnderstates >= 1.0 && o.gstUnderstates <= 100.0,
+          "ownship: --gst-understates must be in [1, 100]");
   require(o.outageStartS >= 0.0 && o.outageLengthS >= 0.0, "ownship: outage start and length must be >= 0 s");
   require(o.speedMinKn >= 0.0 && o.speedMaxKn <= 40.0 && o.speedMinKn <= o.speedMaxKn,
           "ownship: speeds must satisfy 0 <= --speed-min <= --speed-max <= 40 kn");

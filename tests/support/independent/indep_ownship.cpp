@@ -70,6 +70,7 @@ int runOwnShip(const OwnShipOptions& o) {
   model.outageLengthS = o.outageLengthS;
   model.gyro = o.gyro;
   model.log = o.log;
+  model.gstUnderstates = o.gstUnderstates;
   model.loran = o.loran;
   Current current{params.uniform(0.0, o.currentMaxMps),
                   params.uniform(0.0, 360.0),

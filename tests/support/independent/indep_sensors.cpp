@@ -67,9 +67,10 @@ void writeOwnShipNmea(const std::string& path, const UtcClock& clock, const std:
       text += nmeaSentence("GPGGA," + time + "," + lat + "," + lon + ",1,10,1.0," + fmt("%.1f", altitudeM) +
                            ",M,-23.4,M,,");
       // GST: rms, semi-major sd, semi-minor sd, orientation, lat sd, lon sd, altitude sd (metres).
-      const std::string sd = fmt("%.2f", model.gnssWhiteSdM);
+      const double reportedSdM = model.gnssWhiteSdM / model.gstUnderstates;
+      const std::string sd = fmt("%.2f", reportedSdM);
       text += nmeaSentence("GPGST," + time + ",1.0," + sd + "," + sd + ",0.0," + sd + "," + sd + "," +
-                           fmt("%.2f", 1.5 * model.gnssWhiteSdM));
+                           fmt("%.2f", 1.5 * reportedSdM));
     }
     if (model.loran) {
       const LatLon fix = offsetEnu(row.pos, loranErrorM);
@@ -97,7 +98,7 @@ std::string sensorModelJson(const SensorModel& m) {
       "    \"loran\": {\"enabled\": %s, \"correlated_sd_m_per_axis\": %.1f, \"correlation_time_s\": %.1f, "
       "\"white_sd_m_per_axis\": %.1f}\n"
       "  }",
-      m.gnssWhiteSdM, m.gnssWhiteSdM, m.gnssCorrelatedSdM, m.gnssCorrelationS,
+      m.gnssWhiteSdM, m.gnssWhiteSdM / m.gstUnderstates, m.gnssCorrelatedSdM, m.gnssCorrelationS,
       std::sqrt(m.gnssWhiteSdM * m.gnssWhiteSdM + m.gnssCorrelatedSdM * m.gnssCorrelatedSdM),
       m.gnssVelocitySdKn, m.outageStartS, m.outageLengthS, m.gyro ? "true" : "false", m.gyroBiasDeg,
       m.gyroNoiseSdDeg, m.log ? "true" : "false", m.logScale, 100.0 * m.logScale, m.logOffsetKn,

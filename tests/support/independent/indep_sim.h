@@ -116,6 +116,7 @@ void writeTruthCsv(const std::string& path, const UtcClock& clock, const std::ve
 struct SensorModel {
   // GNSS: white per axis sd gnssWhiteSdM, plus a Gauss-Markov part per axis.
   double gnssWhiteSdM = 4.0, gnssCorrelatedSdM = 1.0, gnssCorrelationS = 60.0;
+  double gstUnderstates = 1.0;    ///< the receiver's GST reports its white sd divided by this
   double gnssVelocitySdKn = 0.1;  // per axis (east, north) of the velocity over ground
   double outageStartS = 0.0, outageLengthS = 0.0;
   bool gyro = true;
@@ -138,6 +139,7 @@ struct OwnShipOptions {
   bool loran = false, log = true, gyro = true, steadyCurrent = false;
   double currentMaxMps = 1.0, durationS = 3600.0, outageStartS = 2400.0, outageLengthS = 600.0;
   double speedMinKn = 6.0, speedMaxKn = 14.0;
+  double gstUnderstates = 1.0;  // --gst-understates F: the GST reports the GNSS noise divided by F
 };
 int runOwnShip(const OwnShipOptions& options);
 

@@ -599,6 +599,27 @@ Errors baselineErrors(const std::vector<Plot>& plots, const OwnFixes& own,
   return errorsOf(est, truth.at(id, tS));
 }
 
+/// `reckoner-indep-sim arpa --seed N` (with `extra`) into out, replayed with default settings into
+/// out/replay; params is the generator's params.json. False with err set when a step fails.
+bool generateAndReplay(const QString& out, int seed, const QStringList& extra, QJsonObject& params,
+                       QString& err) {
+  if (!runTool(toolPath(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"),
+               QStringList{"arpa", "--seed", QString::number(seed), "--out", out} + extra, err))
+    return false;
+  if (!runTool(toolPath(RECKONER_CLI, "RECKONER_CLI_UNDER_TEST"),
+               {"replay", "--nmea", out + "/ownship.nmea", "--radar", out + "/radar.csv", "--out",
+                out + "/replay", "--quiet"},
+               err))
+    return false;
+  QFile f(out + "/params.json");
+  if (!f.open(QIODevice::ReadOnly)) {
+    err = out + "/params.json: cannot read";
+    return false;
+  }
+  params = QJsonDocument::fromJson(f.readAll()).object();
+  return true;
+}
+
 /// One target of one run: the errors of Reckoner and of the baseline at 1 and 3 minutes.
 struct Sample {
   int seed = 0;
@@ -611,18 +632,8 @@ struct Sample {
 void scoreRun(const QTemporaryDir& dir, int seed, std::vector<Sample>& samples) {
   const QString out = dir.filePath(QString("arpa-%1").arg(seed));
   QString err;
-  QVERIFY2(runTool(toolPath(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"),
-                   {"arpa", "--seed", QString::number(seed), "--out", out}, err),
-           qPrintable(err));
-  QVERIFY2(runTool(toolPath(RECKONER_CLI, "RECKONER_CLI_UNDER_TEST"),
-                   {"replay", "--nmea", out + "/ownship.nmea", "--radar", out + "/radar.csv", "--out",
-                    out + "/replay", "--quiet"},
-                   err),
-           qPrintable(err));
-
-  QFile paramsFile(out + "/params.json");
-  QVERIFY(paramsFile.open(QIODevice::ReadOnly));
-  const QJsonObject params = QJsonDocument::fromJson(paramsFile.readAll()).object();
+  QJsonObject params;
+  QVERIFY2(generateAndReplay(out, seed, {}, params, err), qPrintable(err));
   try {
     const std::int64_t startUs = isoToUs(params["start_utc"].toString().toStdString());
     const auto t0Us = static_cast<std::int64_t>(std::llround(params["t0_s"].toDouble() * 1e6));
@@ -692,17 +703,8 @@ struct TurnOutcome {
 void scoreTurns(const QTemporaryDir& dir, int seed, std::vector<TurnOutcome>& outcomes) {
   const QString out = dir.filePath(QString("turns-%1").arg(seed));
   QString err;
-  QVERIFY2(runTool(toolPath(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"),
-                   {"arpa", "--seed", QString::number(seed), "--out", out, "--manoeuvre"}, err),
-           qPrintable(err));
-  QVERIFY2(runTool(toolPath(RECKONER_CLI, "RECKONER_CLI_UNDER_TEST"),
-                   {"replay", "--nmea", out + "/ownship.nmea", "--radar", out + "/radar.csv", "--out",
-                    out + "/replay", "--quiet"},
-                   err),
-           qPrintable(err));
-  QFile paramsFile(out + "/params.json");
-  QVERIFY(paramsFile.open(QIODevice::ReadOnly));
-  const QJsonObject params = QJsonDocument::fromJson(paramsFile.readAll()).object();
+  QJsonObject params;
+  QVERIFY2(generateAndReplay(out, seed, {"--manoeuvre"}, params, err), qPrintable(err));
   try {
     const std::int64_t startUs = isoToUs(params["start_utc"].toString().toStdString());
     const double t0S = params["t0_s"].toDouble();

@@ -640,6 +640,7 @@ void MainWindow::repaintTick() {
   const LiveFrame& live = history_.latest();
   if (localFrame_) ownPanel_->setFrame(live, *localFrame_);
   sensors_->setStates(live.frame.sensors, live.radarOn);
+  sensors_->setNoisy(live.frame.noisierThanConfigured);
   for (QAction* a : trackerKindActions_)
     if (a->data().toInt() == static_cast<int>(live.trackerKind) && !a->isChecked()) a->setChecked(true);
   if (radarMatchAction_) {

@@ -35,13 +35,16 @@ class NisWindow {
     if (++n_ < size_) return;
     const double k = static_cast<double>(windowDof_);
     ++counts_.windows;
-    if (sum_ > chiSquareQuantile(0.5 + 0.5 * p_, k)) ++counts_.above;
+    lastAbove_ = sum_ > chiSquareQuantile(0.5 + 0.5 * p_, k);
+    if (lastAbove_) ++counts_.above;
     if (sum_ < chiSquareQuantile(0.5 - 0.5 * p_, k)) ++counts_.below;
     n_ = 0;
     sum_ = 0.0;
     windowDof_ = 0;
   }
   [[nodiscard]] const NisWindowCounts& counts() const { return counts_; }
+  /// The most recent completed window lay above the band (false before the first).
+  [[nodiscard]] bool lastAbove() const { return lastAbove_; }
 
  private:
   int size_ = 60;
@@ -49,6 +52,7 @@ class NisWindow {
   int n_ = 0;
   double sum_ = 0.0;
   long windowDof_ = 0;
+  bool lastAbove_ = false;
   NisWindowCounts counts_;
 };
 

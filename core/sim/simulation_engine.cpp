@@ -201,6 +201,12 @@ void SimulationEngine::ownShipEpoch(TimeUs t, SimFrame& frame) {
   }
   const auto& m = frame.measurements;
   frame.updates.push_back(drkf_->update(t, std::span(m).subspan(first, m.size() - first)));
+  const nav::DrkfUpdateReport& rep = frame.updates.back();
+  for (int i = 0; i < rep.blockCount; ++i) {  // online consistency per sensor (est::NisWindow)
+    const est::BlockReport& b = rep.blocks[static_cast<std::size_t>(i)];
+    if (est::isApplied(b.status) || b.status == est::UpdateStatus::RejectedGate)
+      nis_[static_cast<std::size_t>(b.tag)].add(b.nis, b.dim);
+  }
   // One DRKF feeds every TTKF (seed 000 figure 3); without a radar there is nothing to feed.
   if (scenario_.radar.fitted) manager_->feedOwnShip(ownShipInput());
 }
@@ -293,6 +299,7 @@ SimFrame SimulationEngine::step() {
   frame.timeUs = end;
   frame.truth = truth_.state();
   frame.trueState = trueState();
+  for (std::size_t b = 0; b < nis_.size(); ++b) frame.noisierThanConfigured[b] = nis_[b].lastAbove();
   frame.shipMotion = scenario_.filter.shipMotion.enabled;
   frame.estimate = drkf_->belief();
   frame.sensors = sensorStatesAt(scenario_, end);

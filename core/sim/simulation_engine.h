@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "estimation/nis_window.h"
 #include "navigation/drkf.h"
 #include "radar/coastline.h"
 #include "radar/radar_image.h"
@@ -79,6 +80,9 @@ struct SimFrame {
   VesselTruth truth;
   est::drkf::State trueState;  ///< truth in the DRKF's coordinates (incl. sensor error states)
   bool shipMotion = false;     ///< trueState's x4, x8 are the ship model's (along-track, turn rate)
+  /// Per nav::DrkfBlock: its last window of 60 updates had NIS above the 99% band (est::NisWindow): the
+  /// sensor's noise, or the ship's motion, is larger than configured.
+  std::array<bool, nav::kDrkfBlockCount> noisierThanConfigured{};
   est::drkf::Belief estimate;
   std::vector<sensors::OwnShipSample> measurements;  ///< taken during this cycle
   std::vector<nav::DrkfUpdateReport> updates;        ///< one per measurement epoch of this cycle
@@ -182,6 +186,7 @@ class SimulationEngine {
   sensors::GyroSimulator gyro_;
   std::array<Clock, sensors::kOwnShipSensorCount> clocks_{};
   std::optional<nav::Drkf> drkf_;
+  std::array<est::NisWindow, nav::kDrkfBlockCount> nis_{};  ///< 60 updates, 99% band
   std::vector<VesselMotionModel> targets_;
   sensors::RadarSimulator radar_;
   std::optional<track::TrackManager> manager_;

@@ -464,6 +464,39 @@ class TestMainWindow : public QObject {
     saveShot(*w.ownPlots(), QStringLiteral("own-ship-plots"));
   }
 
+  void aSensorNoisierThanConfiguredIsFlaggedAndAlarmed() {
+    // GIVEN the default scenario with own ship given a random acceleration of 0.5 m/s^2 while its filter
+    // is told 0.005 (so the GNSS innovations are far larger than configured) WHEN it runs for three
+    // windows of 60 updates THEN the sensor panel marks GPS "noise > configured" and the alarm list has
+    // a SENSOR NOISE alarm for a GNSS block; the unchanged default scenario, run as long, marks nothing.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("mismatched.json");
+    const auto* def = resources::findScenario(resources::kDefaultScenario);
+    QVERIFY(def);
+    sim::Scenario sc = io::parseScenario(def->text, "default");
+    sc.ownShip.randomAcceleration = est::GaussMarkov{0.5, 1.0};
+    sc.filter.acceleration = {0.005, 1.0};
+    io::saveScenarioFile(sc, path.toStdString());
+    MainWindow w(freshOptions());
+    showAndWait(w);
+    runUntil(w, 200.0);
+    for (const auto id : {sensors::SensorId::Gps, sensors::SensorId::LoranC, sensors::SensorId::Speedlog,
+                          sensors::SensorId::Gyro})
+      QVERIFY(w.sensorPanel()->noiseLabel(id)->isHidden());
+    for (const Alarm& a : w.history().alarms()) QVERIFY(a.kind != Alarm::Kind::SensorNoise);
+    QVERIFY(w.openScenario(path));
+    waitReady(w);
+    QVERIFY(w.sensorPanel()->noiseLabel(sensors::SensorId::Gps)->isHidden());
+    runUntil(w, 200.0);
+    QTRY_VERIFY_WITH_TIMEOUT(!w.sensorPanel()->noiseLabel(sensors::SensorId::Gps)->isHidden(), kTimeoutMs);
+    bool alarmed = false;
+    for (const Alarm& a : w.history().alarms())
+      alarmed = alarmed || (a.kind == Alarm::Kind::SensorNoise &&
+                            (a.trackId == nav::kGpsPosition || a.trackId == nav::kGpsVelocity));
+    QVERIFY(alarmed);
+    saveWindowShot(w, QStringLiteral("sensor-noise"));
+  }
+
   void savingAndReopeningTheScenarioGivesTheSameRun() {
     QTemporaryDir dir;
     const QString path = dir.filePath("edited.json");

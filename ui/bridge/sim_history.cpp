@@ -5,6 +5,9 @@
 namespace reckoner::ui {
 
 QString Alarm::text() const {
+  if (kind == Kind::SensorNoise)
+    return QStringLiteral("SENSOR NOISE  %1 larger than configured")
+        .arg(QString::fromLatin1(nav::blockName(static_cast<nav::DrkfBlock>(trackId))));
   const QString what =
       kind == Kind::Dangerous ? QStringLiteral("DANGEROUS TARGET") : QStringLiteral("LOST TARGET");
   return QStringLiteral("%1  track %2").arg(what).arg(trackId);
@@ -16,6 +19,7 @@ void SimHistory::clear() {
   tracks_.clear();
   radarFixes_.clear();
   alarms_.clear();
+  noisy_ = {};
 }
 
 void SimHistory::append(const LiveFrame& frame) {
@@ -23,6 +27,12 @@ void SimHistory::append(const LiveFrame& frame) {
   own_.insert(own_.end(), frame.ownHistory.begin(), frame.ownHistory.end());
   for (const TrackSample& s : frame.trackHistory) tracks_[s.trackId].push_back(s);
   radarFixes_.insert(radarFixes_.end(), frame.radarFixes.begin(), frame.radarFixes.end());
+  const auto& noisy = frame.frame.noisierThanConfigured;
+  for (std::size_t b = 0; b < noisy.size(); ++b) {
+    if (noisy[b] && !noisy_[b])
+      alarms_.insert({Alarm::Kind::SensorNoise, static_cast<int>(b), toSeconds(frame.frame.timeUs)});
+    noisy_[b] = noisy[b];
+  }
   for (const auto& e : frame.events) {
     using K = track::TrackEvent::Kind;
     const double t = toSeconds(e.timeUs);

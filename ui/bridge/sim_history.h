@@ -12,9 +12,10 @@
 namespace reckoner::ui {
 
 struct Alarm {
-  enum class Kind { Dangerous, Lost };
+  /// SensorNoise: a DRKF block's windowed NIS above its band (SimFrame::noisierThanConfigured).
+  enum class Kind { Dangerous, Lost, SensorNoise };
   Kind kind = Kind::Dangerous;
-  int trackId = 0;
+  int trackId = 0;  ///< SensorNoise: the nav::DrkfBlock
   double tS = 0.0;
   [[nodiscard]] QString text() const;
   friend bool operator<(const Alarm& a, const Alarm& b) {
@@ -47,6 +48,7 @@ class SimHistory {
   std::map<int, std::vector<TrackSample>> tracks_;
   std::vector<RadarFixSample> radarFixes_;
   std::set<Alarm> alarms_;
+  std::array<bool, nav::kDrkfBlockCount> noisy_{};  ///< the flags of the latest frame (rising edges alarm)
 };
 
 }  // namespace reckoner::ui

@@ -1,6 +1,7 @@
 #include "ui/panels/sensor_panel.h"
 
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -14,7 +15,19 @@ SensorPanel::SensorPanel(QWidget* parent) : QWidget(parent) {
     auto* b = new QCheckBox(tr(kNames[i]), this);
     b->setObjectName(QString::fromLatin1(kObjects[i]));
     boxes_[static_cast<std::size_t>(i)] = b;
-    v->addWidget(b);
+    auto* noise = new QLabel(tr("noise > configured"), this);
+    noise->setObjectName(QString::fromLatin1(kObjects[i]) + QStringLiteral("Noise"));
+    noise->setStyleSheet(QStringLiteral("QLabel { color: #b36b00; font-weight: bold; }"));
+    noise->setToolTip(
+        tr("Its innovations over the last 60 updates lie above the 99% chi-square band: "
+           "the sensor is noisier than the filter is told (or the ship moves less predictably)."));
+    noise->hide();
+    noise_[static_cast<std::size_t>(i)] = noise;
+    auto* row = new QHBoxLayout;
+    row->addWidget(b);
+    row->addWidget(noise);
+    row->addStretch(1);
+    v->addLayout(row);
     const auto id = static_cast<sensors::SensorId>(i);
     connect(b, &QCheckBox::toggled, this, [this, id](bool on) { emit sensorToggled(id, on); });
   }
@@ -51,6 +64,14 @@ void SensorPanel::setFitted(const sim::Scenario& s) {
   }
   logMode_->setEnabled(s.speedlog.fitted);
   radar_->setEnabled(s.radar.fitted);
+}
+
+void SensorPanel::setNoisy(const std::array<bool, nav::kDrkfBlockCount>& noisy) {
+  using sensors::SensorId;
+  const std::array<bool, sensors::kOwnShipSensorCount> bySensor{
+      noisy[nav::kGpsPosition] || noisy[nav::kGpsVelocity], noisy[nav::kLoranPosition], noisy[nav::kSpeedlog],
+      noisy[nav::kGyro]};
+  for (std::size_t i = 0; i < noise_.size(); ++i) noise_[i]->setVisible(bySensor[i]);
 }
 
 void SensorPanel::setStates(const sim::SensorStates& states, bool radarOn) {

@@ -5,9 +5,11 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QWidget>
 #include <array>
 
+#include "navigation/drkf.h"
 #include "sim/scenario.h"
 
 namespace reckoner::ui {
@@ -19,6 +21,13 @@ class SensorPanel : public QWidget {
   /// Which sensors the scenario has (others are disabled).
   void setFitted(const sim::Scenario& s);
   void setStates(const sim::SensorStates& states, bool radarOn);
+  /// Marks each sensor whose DRKF innovations are larger than configured (per nav::DrkfBlock, the
+  /// engine's windowed NIS test): an amber "noise > configured" beside its box, with a tooltip.
+  void setNoisy(const std::array<bool, nav::kDrkfBlockCount>& noisy);
+  /// The sensor's noise label (hidden unless flagged).
+  [[nodiscard]] QLabel* noiseLabel(sensors::SensorId id) const {
+    return noise_[static_cast<std::size_t>(id)];
+  }
   [[nodiscard]] QCheckBox* box(sensors::SensorId id) const { return boxes_[static_cast<std::size_t>(id)]; }
   [[nodiscard]] QCheckBox* radarBox() const { return radar_; }
   [[nodiscard]] QComboBox* logMode() const { return logMode_; }
@@ -31,6 +40,7 @@ class SensorPanel : public QWidget {
 
  private:
   std::array<QCheckBox*, sensors::kOwnShipSensorCount> boxes_{};
+  std::array<QLabel*, sensors::kOwnShipSensorCount> noise_{};
   QCheckBox* radar_;
   QComboBox* logMode_;
   QDoubleSpinBox* drLimit_;

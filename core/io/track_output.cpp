@@ -157,6 +157,7 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   n("epochs", s.epochs);
   n("epochs_before_fix", s.epochsBeforeFix);
   n("epochs_awaiting_fix", s.epochsAwaitingFix);
+  n("epochs_time_only", s.epochsTimeOnly);
   w.endObject();
   w.key("own_ship_filter").beginObject();
   w.key("updates").beginObject();

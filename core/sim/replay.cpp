@@ -218,6 +218,7 @@ void Runner::count(const nav::DrkfUpdateReport& rep, const std::vector<sensors::
 void Runner::ownShip(const Epoch& e) {
   ReplayStats& stats = res_.stats;
   ++stats.epochs;
+  if (e.empty()) ++stats.epochsTimeOnly;
   const TimeUs t = rel(e.utc);
   if (drkf_ && lastEpochUs_ && t - *lastEpochUs_ > maxGapUs_) {
     // Nothing recorded for longer than the max gap: the ship may be anywhere, heading and speed anything.
@@ -268,7 +269,7 @@ void Runner::ownShip(const Epoch& e) {
   r.utcUs = e.utc;
   r.estimate = groundEstimateOf(drkf_->belief(), frame_);
   r.calibration = calibrationOf(drkf_->belief(), config_.process);
-  r.sensors = labelOf(samples);
+  r.sensors = samples.empty() ? "none" : labelOf(samples);
   r.rowsApplied = rep.dim;
   res_.own.push_back(r);
   if (failedEpochs_ >= kFailedEpochsBeforeRestart) {

@@ -92,6 +92,7 @@ struct ReplayStats {
   long outsideFrame = 0;  ///< position fixes too far from the replay's origin for its grid frame (not used)
   long epochs = 0, epochsBeforeFix = 0;
   long epochsAwaitingFix = 0;  ///< after a restart, before the next position fix
+  long epochsTimeOnly = 0;     ///< seconds with sentences but no own-ship data: dead-reckoning rows
   long radarLines = 0, radarPlots = 0, radarBad = 0, radarDuplicates = 0, radarTimeJumps = 0,
        radarReordered = 0, radarBeforeFix = 0;
   long restartsAfterGap = 0;      ///< DRKF restarted at a fix after more than maxGapS without data

@@ -37,6 +37,7 @@ struct Epoch {
   std::optional<double> headingRad;  ///< true
   bool headingMagnetic = false;      ///< from a magnetic compass (HDG, HDM, VHW's magnetic field)
   std::optional<std::pair<double, sensors::SpeedlogMode>> log;  ///< m/s
+  /// No own-ship data: a time-only epoch (the recorder runs; the DRKF predicts, dead reckoning).
   [[nodiscard]] bool empty() const { return !gps && !gpsVelocity && !loran && !headingRad && !log; }
   [[nodiscard]] bool hasFix() const { return gps || loran; }
 };

@@ -384,6 +384,9 @@ Use offersOf(const Parsed& p, std::size_t index, Variation& var, std::vector<Can
 
 /// The epochs, each with the value of the active source of each quantity; counts what each sentence
 /// became (used, standby, skipped by reason) into its source's and the file's counts.
+/// A time-only epoch at most this often (Epoch::empty()).
+constexpr UtcUs kHeartbeatUs = 900'000;
+
 std::vector<Epoch> assemble(const std::vector<Parsed>& ps, const std::vector<std::size_t>& order,
                             const std::vector<UtcUs>& groupUtc,
                             const std::vector<std::vector<std::size_t>>& groups, const NmeaOptions& o,
@@ -478,7 +481,10 @@ std::vector<Epoch> assemble(const std::vector<Parsed>& ps, const std::vector<std
     }
     lastT = t;
     any = true;
-    if (!e.empty()) out.push_back(e);
+    // A second with sentences but no own-ship data (ZDA alone while the GNSS is out, say): the recorder
+    // is running, so dead reckoning goes on. Kept as a time-only epoch when no epoch was in the last
+    // 0.9 s (a ZDA stamped just after its second's fixes adds nothing).
+    if (!e.empty() || out.empty() || t - out.back().utc >= kHeartbeatUs) out.push_back(e);
   }
   // Each valid sentence: used (what it offered went in, or it is time or accuracy), or standby.
   for (std::size_t i = 0; i < ps.size(); ++i) {

@@ -1,6 +1,7 @@
 #pragma once
 // Fixed-size Gaussian state and the bounded-dynamic matrix types used for a variable measurement set.
 #include <Eigen/Core>
+#include <cmath>
 
 namespace reckoner::est {
 
@@ -27,6 +28,15 @@ struct Gaussian {
   Vec<N> x = Vec<N>::Zero();
   Mat<N> P = Mat<N>::Identity();
 };
+
+/// Largest eigenvalue of the symmetric 2 x 2 matrix [a b; b c] (the variance along an ellipse's major
+/// axis).
+inline double largestEigenvalue2x2(double a, double b, double c) {
+  return 0.5 * (a + c) + std::hypot(0.5 * (a - c), b);
+}
+inline double largestEigenvalue(const Mat<2>& P) {
+  return largestEigenvalue2x2(P(0, 0), 0.5 * (P(0, 1) + P(1, 0)), P(1, 1));
+}
 
 /// P <- (P + P^T) / 2, in place.
 template <class Derived>

@@ -279,7 +279,7 @@ double Drkf::linearisableSpeed(bool overGround) const {
     c += P(kCurY, kCurY) + 2.0 * P(kCurY, kVelY);
     b += P(kCurX, kCurY) + P(kCurX, kVelY) + P(kVelX, kCurY);
   }
-  const double lambdaMax = 0.5 * (a + c) + std::hypot(0.5 * (a - c), b);
+  const double lambdaMax = est::largestEigenvalue2x2(a, b, c);
   return std::max(config_.minSpeedMps, config_.minSpeedSigmas * std::sqrt(std::max(0.0, lambdaMax)));
 }
 

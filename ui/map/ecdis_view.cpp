@@ -13,12 +13,12 @@
 #include "common/angles.h"
 #include "common/units.h"
 #include "estimation/chi_square.h"
+#include "io/text_format.h"
 
 namespace reckoner::ui {
 namespace {
 constexpr double kHandleRadiusPx = 7.0;
 constexpr double kSymbolMm = 6.0;  // own-ship and target symbols, as S-52 draws them
-constexpr double kKnot = 1852.0 / 3600.0;
 
 double chi2Scale95() {
   static const double k = std::sqrt(est::chiSquareQuantile(0.95, 2.0));
@@ -26,14 +26,7 @@ double chi2Scale95() {
 }
 
 QString latLonText(double latDeg, double lonDeg) {
-  const auto part = [](double v, int width, char pos, char neg) {
-    const char h = v >= 0 ? pos : neg;
-    v = std::abs(v);
-    const int deg = static_cast<int>(v);
-    const double min = (v - deg) * 60.0;
-    return QStringLiteral("%1°%2'%3").arg(deg, width, 10, QChar('0')).arg(min, 6, 'f', 3, QChar('0')).arg(h);
-  };
-  return part(latDeg, 2, 'N', 'S') + QLatin1Char(' ') + part(lonDeg, 3, 'E', 'W');
+  return QString::fromStdString(io::formatLatitude(latDeg) + ' ' + io::formatLongitude(lonDeg));
 }
 
 /// Nice scale-bar length (1, 2 or 5 times a power of ten) not longer than maxM.
@@ -423,7 +416,7 @@ void EcdisView::paintOwnShip(QPainter& p) {
       p.setPen(colour("text"));
       p.drawText(hp + QPointF(10, -10), QStringLiteral("%1° %2 kn")
                                             .arg(radToDeg(course), 5, 'f', 1, QChar('0'))
-                                            .arg(speed / kKnot, 0, 'f', 1));
+                                            .arg(speed / kMpsPerKnot, 0, 'f', 1));
     }
   }
 
@@ -916,10 +909,10 @@ void EcdisView::keyPressEvent(QKeyEvent* e) {
       course = wrapTwoPi(course + degToRad(step));
       break;
     case Qt::Key_Up:
-      speed += 0.5 * kKnot;
+      speed += 0.5 * kMpsPerKnot;
       break;
     case Qt::Key_Down:
-      speed = std::max(0.0, speed - 0.5 * kKnot);
+      speed = std::max(0.0, speed - 0.5 * kMpsPerKnot);
       break;
     default:
       ChartView::keyPressEvent(e);

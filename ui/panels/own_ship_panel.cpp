@@ -6,29 +6,21 @@
 
 #include "common/angles.h"
 #include "common/units.h"
+#include "estimation/chi_square.h"
+#include "estimation/gaussian.h"
+#include "io/text_format.h"
 #include "navigation/drkf.h"
 
 namespace reckoner::ui {
 namespace {
-constexpr double kKnot = 1852.0 / 3600.0;
-
 QString latLon(const geo::GeoPoint& g) {
-  const auto part = [](double v, int width, char pos, char neg) {
-    const char h = v >= 0 ? pos : neg;
-    v = std::abs(v);
-    const int deg = static_cast<int>(v);
-    return QStringLiteral("%1°%2'%3")
-        .arg(deg, width, 10, QChar('0'))
-        .arg((v - deg) * 60.0, 6, 'f', 3, QChar('0'))
-        .arg(h);
-  };
-  return part(g.latDeg, 2, 'N', 'S') + QLatin1Char(' ') + part(g.lonDeg, 3, 'E', 'W');
+  return QString::fromStdString(io::formatLatitude(g.latDeg) + ' ' + io::formatLongitude(g.lonDeg));
 }
 
 QString courseSpeed(double vx, double vy, double gamma) {
   return QStringLiteral("%1° %2 kn")
       .arg(radToDeg(wrapTwoPi(bearingOf(vx, vy) + gamma)), 5, 'f', 1, QChar('0'))
-      .arg(std::hypot(vx, vy) / kKnot, 0, 'f', 2);
+      .arg(std::hypot(vx, vy) / kMpsPerKnot, 0, 'f', 2);
 }
 
 QString duration(double s) {
@@ -95,8 +87,8 @@ void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame)
           .arg(radToDeg(wrapTwoPi(bearingOf(x[dk::kVelX], x[dk::kVelY]) + gamma)), 5, 'f', 1, QChar('0'))
           .arg(radToDeg(wrapTwoPi(f.truth.headingRad + gamma)), 5, 'f', 1, QChar('0')));
   current_->setText(QStringLiteral("%1 / %2 kn @ %3° / %4°")
-                        .arg(std::hypot(x[dk::kCurX], x[dk::kCurY]) / kKnot, 0, 'f', 2)
-                        .arg(std::hypot(t[dk::kCurX], t[dk::kCurY]) / kKnot, 0, 'f', 2)
+                        .arg(std::hypot(x[dk::kCurX], x[dk::kCurY]) / kMpsPerKnot, 0, 'f', 2)
+                        .arg(std::hypot(t[dk::kCurX], t[dk::kCurY]) / kMpsPerKnot, 0, 'f', 2)
                         .arg(radToDeg(wrapTwoPi(bearingOf(x[dk::kCurX], x[dk::kCurY]) + gamma)), 0, 'f', 0)
                         .arg(radToDeg(wrapTwoPi(bearingOf(t[dk::kCurX], t[dk::kCurY]) + gamma)), 0, 'f', 0));
   log_->setText(
@@ -114,11 +106,11 @@ void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame)
     // Error against the truth and the 95% ellipse's semi-major axis (chi-square 2 dof: 2.45 sd).
     const est::Gaussian<4>& g = (*live.seed002)[i];
     const est::Mat<2> P = g.P.topLeftCorner<2, 2>();
-    const double lmax = 0.5 * (P.trace() + std::hypot(P(0, 0) - P(1, 1), 2.0 * P(0, 1)));
+    const double lmax = est::largestEigenvalue(P);
     seed002_[i]->setText(
         QStringLiteral("error %1 m / 95% %2 m")
             .arg(std::hypot(g.x[0] - f.truth.position.xM, g.x[1] - f.truth.position.yM), 0, 'f', 1)
-            .arg(2.4477 * std::sqrt(std::max(lmax, 0.0)), 0, 'f', 1));
+            .arg(std::sqrt(est::chiSquareQuantile(0.95, 2.0) * std::max(lmax, 0.0)), 0, 'f', 1));
   }
   sensors_->setText(QString::fromStdString(sim::sensorLabel(f.sensors)));
   const double now = toSeconds(f.timeUs);

@@ -8,9 +8,6 @@
 #include "common/units.h"
 
 namespace reckoner::ui {
-namespace {
-constexpr double kKnot = 1852.0 / 3600.0;
-}
 
 void TargetTableModel::setTracks(const std::vector<sim::TrackSnapshot>& tracks) {
   const bool sameRows = tracks.size() == tracks_.size() &&
@@ -103,7 +100,7 @@ QVariant TargetTableModel::data(const QModelIndex& index, int role) const {
                                                        : QString::number(radToDeg(k.trueCourseRad), 'f', 1);
     case Speed:
       return t.status == track::TrackStatus::Tentative ? QString()
-                                                       : QString::number(k.speedMps / kKnot, 'f', 1);
+                                                       : QString::number(k.speedMps / kMpsPerKnot, 'f', 1);
     case Cpa:
       return cpaKnown ? QString::number(metresToNm(k.cpa.cpaM), 'f', 2) : QString();
     case Tcpa:

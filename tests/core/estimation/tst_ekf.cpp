@@ -37,6 +37,24 @@ double minEigen(const Mat<3>& P) {
 class TestEkf : public QObject {
   Q_OBJECT
  private slots:
+  void largestEigenvalueOf2x2MatchesEigen() {
+    // GIVEN random symmetric positive semi-definite 2 x 2 matrices (and a diagonal and a degenerate one)
+    // WHEN the closed form is compared with Eigen's solver THEN they agree to 1e-12 relative.
+    Rng rng(7, 7);
+    std::vector<Mat<2>> cases{Mat<2>::Identity(), (Mat<2>() << 4.0, 0.0, 0.0, 1.0).finished(),
+                              (Mat<2>() << 1.0, 1.0, 1.0, 1.0).finished()};
+    for (int k = 0; k < 100; ++k) {
+      Mat<2> A;
+      A << rng.normal(), rng.normal(), rng.normal(), rng.normal();
+      cases.push_back(A * A.transpose());
+    }
+    for (const Mat<2>& P : cases) {
+      const double expected = Eigen::SelfAdjointEigenSolver<Mat<2>>(P).eigenvalues().maxCoeff();
+      QVERIFY2(std::abs(largestEigenvalue(P) - expected) <= 1e-12 * std::max(1.0, expected),
+               qPrintable(
+                   QString("%1 against %2").arg(largestEigenvalue(P), 0, 'g', 17).arg(expected, 0, 'g', 17)));
+    }
+  }
   void scalarUpdateMatchesClosedForm() {
     // Second state uncorrelated and unmeasured: the first behaves as a scalar filter.
     Gaussian<2> g;

@@ -71,6 +71,14 @@ const char* blockName(DrkfBlock b) {
   return "unknown";
 }
 
+void addToNisWindows(const DrkfUpdateReport& r, DrkfNisWindows& windows) {
+  for (int i = 0; i < r.blockCount; ++i) {
+    const est::BlockReport& b = r.blocks[static_cast<std::size_t>(i)];
+    if (est::isApplied(b.status) || b.status == est::UpdateStatus::RejectedGate)
+      windows[static_cast<std::size_t>(b.tag)].add(b.nis, b.dim);
+  }
+}
+
 const est::BlockReport* DrkfUpdateReport::block(DrkfBlock b) const {
   for (int i = 0; i < blockCount; ++i)
     if (blocks[static_cast<std::size_t>(i)].tag == b) return &blocks[static_cast<std::size_t>(i)];
@@ -442,14 +450,14 @@ est::BlockReport Drkf::headingOnlyUpdate(TimeUs t, const sensors::GyroSample& s,
   const double nx = vy / speed, ny = -vx / speed;
   const double acrossVar =
       nx * nx * P(kVelX, kVelX) + 2.0 * nx * ny * P(kVelX, kVelY) + ny * ny * P(kVelY, kVelY);
-  const GyroHeadingModel model(config_.minSpeedMps, config_.process.headingBias.sigma > 0.0);
+  const bool withBias = config_.process.headingBias.sigma > 0.0;
+  const GyroHeadingModel model(config_.minSpeedMps, withBias);
   const double z = wrapTwoPi(s.headingRad - g.convergenceRad);
   if (!(speed >= config_.minSpeedSigmas * std::sqrt(std::max(0.0, acrossVar)))) {
     // The direction is too uncertain for atan2's linearisation (no heading for a minute or more): the
     // heading re-anchors it. The velocity turns to the measured heading (less the estimated bias) at
     // its estimated speed; across it the variance becomes the heading's and the bias's, uncorrelated
     // with the rest (dropping those correlations keeps P positive definite).
-    const bool withBias = config_.process.headingBias.sigma > 0.0;
     const double heading = z - (withBias ? x[kHeadingBias] : 0.0);
     const double ux = std::sin(heading), uy = std::cos(heading);
     // Rotate P's velocity block to (along, across) of the new direction, reset the across row.

@@ -9,6 +9,7 @@
 
 #include "estimation/measurement_stack.h"
 #include "estimation/models/drkf_process.h"
+#include "estimation/nis_window.h"
 #include "estimation/sparse_transition.h"
 #include "geo/local_frame.h"
 #include "sensors/own_ship_samples.h"
@@ -61,6 +62,12 @@ struct DrkfUpdateReport {
   /// The report of a block, or nullptr when this epoch had none.
   [[nodiscard]] const est::BlockReport* block(DrkfBlock b) const;
 };
+
+/// The online consistency windows of every DRKF block (est::NisWindow), indexed by DrkfBlock.
+using DrkfNisWindows = std::array<est::NisWindow, kDrkfBlockCount>;
+/// Adds an epoch's blocks to their windows: the applied and the gated (a sensor refused by its gate is
+/// the clearest case of noise larger than configured).
+void addToNisWindows(const DrkfUpdateReport& r, DrkfNisWindows& windows);
 
 /// Totals per block since construction.
 struct DrkfCounters {

@@ -140,7 +140,7 @@ class Runner {
   std::optional<track::TrackManager> bank_;
   TimeUs sweepUs_, maxGapUs_;
   std::optional<TimeUs> nextSweepEnd_, lastEpochUs_;
-  std::array<est::NisWindow, nav::kDrkfBlockCount> nis_{};
+  nav::DrkfNisWindows nis_{};
   bool restarted_ = false;
   int failedEpochs_ = 0;
 };
@@ -211,8 +211,8 @@ void Runner::count(const nav::DrkfUpdateReport& rep, const std::vector<sensors::
       ++c.gated;
     else if (b.status != est::UpdateStatus::Empty)
       ++c.failed;
-    if (est::isApplied(b.status) || gated) nis_[static_cast<std::size_t>(b.tag)].add(b.nis, b.dim);
   }
+  nav::addToNisWindows(rep, nis_);
 }
 
 void Runner::ownShip(const Epoch& e) {

@@ -201,12 +201,7 @@ void SimulationEngine::ownShipEpoch(TimeUs t, SimFrame& frame) {
   }
   const auto& m = frame.measurements;
   frame.updates.push_back(drkf_->update(t, std::span(m).subspan(first, m.size() - first)));
-  const nav::DrkfUpdateReport& rep = frame.updates.back();
-  for (int i = 0; i < rep.blockCount; ++i) {  // online consistency per sensor (est::NisWindow)
-    const est::BlockReport& b = rep.blocks[static_cast<std::size_t>(i)];
-    if (est::isApplied(b.status) || b.status == est::UpdateStatus::RejectedGate)
-      nis_[static_cast<std::size_t>(b.tag)].add(b.nis, b.dim);
-  }
+  nav::addToNisWindows(frame.updates.back(), nis_);  // online consistency per sensor
   // One DRKF feeds every TTKF (seed 000 figure 3); without a radar there is nothing to feed.
   if (scenario_.radar.fitted) manager_->feedOwnShip(ownShipInput());
 }

@@ -7,7 +7,6 @@
 #include <optional>
 #include <vector>
 
-#include "estimation/nis_window.h"
 #include "navigation/drkf.h"
 #include "radar/coastline.h"
 #include "radar/radar_image.h"
@@ -186,7 +185,7 @@ class SimulationEngine {
   sensors::GyroSimulator gyro_;
   std::array<Clock, sensors::kOwnShipSensorCount> clocks_{};
   std::optional<nav::Drkf> drkf_;
-  std::array<est::NisWindow, nav::kDrkfBlockCount> nis_{};  ///< 60 updates, 99% band
+  nav::DrkfNisWindows nis_{};  ///< 60 updates, 99% band
   std::vector<VesselMotionModel> targets_;
   sensors::RadarSimulator radar_;
   std::optional<track::TrackManager> manager_;

@@ -68,6 +68,27 @@ struct Family {
 /// Generates one run, replays it, and adds its outage rows to the family.
 enum class Kind { DeadReckoning, LoranC, NoLog, PositionOnly };
 
+/// Each family's output folder, label, generator options and seed offset.
+struct KindInfo {
+  const char* dir;
+  const char* label;
+  QStringList generator;
+  int seedOffset;
+};
+KindInfo infoOf(Kind kind) {
+  switch (kind) {
+    case Kind::LoranC:
+      return {"loran", "Loran-C on", {"--loran"}, 100};
+    case Kind::NoLog:
+      return {"nolog", "gyro, no log", {"--no-log"}, 200};
+    case Kind::PositionOnly:
+      return {"posonly", "position only", {"--no-log", "--no-gyro"}, 400};
+    case Kind::DeadReckoning:
+      break;
+  }
+  return {"dr", "dead reckoning", {}, 0};
+}
+
 /// What else a run is given: generator and replay options, and which rows are scored (the outage, or
 /// the rows with GNSS on from 600 s, after the filter has settled).
 struct Extra {
@@ -77,17 +98,11 @@ struct Extra {
 };
 
 void score(const QTemporaryDir& dir, int seed, Kind kind, Family& fam, const Extra& extra = {}) {
-  const char* name = kind == Kind::LoranC         ? "loran"
-                     : kind == Kind::NoLog        ? "nolog"
-                     : kind == Kind::PositionOnly ? "posonly"
-                                                  : "dr";
-  const QString out = dir.filePath(QString("%1%2-%3").arg(name, extra.tag).arg(seed));
+  const KindInfo info = infoOf(kind);
+  const QString out = dir.filePath(QString("%1%2-%3").arg(info.dir, extra.tag).arg(seed));
   QString err;
   QStringList genArgs{"ownship", "--seed", QString::number(seed), "--out", out};
-  if (kind == Kind::LoranC) genArgs << "--loran";
-  if (kind == Kind::NoLog || kind == Kind::PositionOnly) genArgs << "--no-log";
-  if (kind == Kind::PositionOnly) genArgs << "--no-gyro";
-  genArgs << extra.generator;
+  genArgs << info.generator << extra.generator;
   QVERIFY2(test::runTool(test::toolPath(RECKONER_INDEP_SIM, "RECKONER_INDEP_SIM"), genArgs, err),
            qPrintable(err));
   QStringList replayArgs{"replay", "--nmea", out + "/ownship.nmea", "--out", out + "/replay", "--quiet"};
@@ -166,23 +181,16 @@ class TstIndependentCampaign : public QObject {
     QVERIFY(dir.isValid());
     Family fam;
     constexpr int kRuns = 24;
-    const int seedOffset = kind == Kind::LoranC         ? 100
-                           : kind == Kind::NoLog        ? 200
-                           : kind == Kind::PositionOnly ? 400
-                                                        : 0;
+    const KindInfo info = infoOf(kind);
     for (int seed = 1; seed <= kRuns; ++seed) {
-      score(dir, seed + seedOffset, kind, fam);
+      score(dir, seed + info.seedOffset, kind, fam);
       if (QTest::currentTestFailed()) return;
     }
     const double w = fam.within(1.96), r = fam.ratio(), p95 = fam.p95End();
     qInfo(
         "%s: %d runs, %zu axis errors in the outage: %.1f%% within 1.96 sd, RMS error / RMS sd %.2f, "
         "p95 error at the end of the outage %.1f m",
-        kind == Kind::LoranC         ? "Loran-C on"
-        : kind == Kind::NoLog        ? "gyro, no log"
-        : kind == Kind::PositionOnly ? "position only"
-                                     : "dead reckoning",
-        fam.runs, fam.normalised.size(), 100.0 * w, r, p95);
+        info.label, fam.runs, fam.normalised.size(), 100.0 * w, r, p95);
     QVERIFY2(w >= 0.90 && w <= 0.99, qPrintable(QString("within 1.96 sd: %1%").arg(100.0 * w, 0, 'f', 1)));
     if (kind == Kind::PositionOnly) {
       // Nothing but the last fixes: the ship model's turn rate lets it turn anywhere in ten minutes, so

@@ -384,8 +384,7 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
   for (int i = 0; i < stack.blockCount(); ++i) report.blocks[static_cast<std::size_t>(i)] = stack.block(i);
   if (headingOnly != nullptr && report.blockCount < kMaxBlocksPerEpoch) {
     report.blocks[static_cast<std::size_t>(report.blockCount++)] = headingOnlyUpdate(t, *headingOnly, g);
-    if (report.blocks[static_cast<std::size_t>(report.blockCount - 1)].status == est::UpdateStatus::Accepted)
-      ++report.dim;
+    if (est::isApplied(report.blocks[static_cast<std::size_t>(report.blockCount - 1)].status)) ++report.dim;
   }
   if (gnssFix != nullptr) {
     const est::BlockReport* b = report.block(kGpsPosition);

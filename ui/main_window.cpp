@@ -28,7 +28,7 @@
 
 #include "charts/s57/s57_loader.h"
 #include "common/units.h"
-#include "io/scenario_json.h"
+#include "files/scenario_json.h"
 #include "resources/embedded.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/sensor_panel.h"

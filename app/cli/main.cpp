@@ -39,27 +39,28 @@
 #include "common/angles.h"
 #include "estimation/chi_square.h"
 #include "estimation/ekf.h"
+#include "files/own_ship_output.h"
+#include "files/scenario_json.h"
+#include "files/track_output.h"
 #include "io/error_line.h"
 #include "io/input_error.h"
+#include "io/iso8601.h"
 #include "io/json.h"
-#include "io/own_ship_output.h"
-#include "io/scenario_json.h"
 #include "io/text_format.h"
-#include "io/track_output.h"
-#include "metrics/imo_accuracy.h"
 #include "metrics/own_ship_stats.h"
 #include "metrics/track_stats.h"
 #include "resources/embedded.h"
-#include "sim/comparison.h"
-#include "sim/manoeuvre_trial.h"
 #include "sim/nmea_export.h"
-#include "sim/own_ship_filters.h"
-#include "sim/radar_fix_study.h"
 #include "sim/replay.h"
 #include "sim/scenario_run.h"
-#include "sim/seed001.h"
-#include "sim/seed003.h"
 #include "sim/sensor_profile.h"
+#include "studies/comparison.h"
+#include "studies/imo_accuracy.h"
+#include "studies/manoeuvre_trial.h"
+#include "studies/own_ship_filters.h"
+#include "studies/radar_fix_study.h"
+#include "studies/seed001.h"
+#include "studies/seed003.h"
 
 namespace {
 
@@ -909,7 +910,7 @@ int cmdReplay(int argc, char** argv) {
     o.variationDeg = parseReal("variation", a.options.at("variation"), -180.0, 180.0);
   if (a.options.count("date")) {
     const std::string& date = a.options.at("date");
-    const auto day = sim::parseIso8601(date + "T00:00:00Z");
+    const auto day = io::parseIso8601(date + "T00:00:00Z");
     if (!day || date.size() != 10) throw UsageError("--date: expected YYYY-MM-DD, got " + io::quoted(date));
     o.date = std::array<int, 3>{std::stoi(date.substr(0, 4)), std::stoi(date.substr(5, 2)),
                                 std::stoi(date.substr(8, 2))};
@@ -928,7 +929,7 @@ int cmdReplay(int argc, char** argv) {
   if (a.quiet) return 0;
   const auto& st = r.stats;
   std::printf("Reckoner replay of %s%s%s from %s\n", nmeaPath.c_str(), radar ? " and " : "",
-              radar ? a.options.at("radar").c_str() : "", sim::formatIso8601(r.utc0).c_str());
+              radar ? a.options.at("radar").c_str() : "", io::formatIso8601(r.utc0).c_str());
   std::printf(
       "  NMEA: %ld lines, %ld sentences used, %ld skipped (%ld comments, %ld bad checksum, %ld unknown, %ld "
       "proprietary, "
@@ -982,7 +983,7 @@ int cmdExport(int argc, char** argv) {
   const std::uint64_t seed =
       a.options.count("seed") ? parseCount("seed", a.options.at("seed"), 0, UINT64_MAX) : s.seed;
   const std::string date = a.options.count("date") ? a.options.at("date") : "2026-01-01";
-  const auto utc0 = sim::parseIso8601(date + "T00:00:00Z");
+  const auto utc0 = io::parseIso8601(date + "T00:00:00Z");
   if (!utc0) throw UsageError("--date: expected YYYY-MM-DD, got " + io::quoted(date));
   const std::string out = prepareOutDir(a);
   const auto e = sim::exportRun(s, seed, *utc0);

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+#include "common/angles.h"
+
 namespace reckoner::charts {
 
 // ---- prepared cells: geometry in Mercator, features in drawing order
@@ -436,7 +438,7 @@ void drawLight(const Ctx& c, const ChartFeature& f, QPointF at) {
     leg.setDashPattern({4, 4});
     c.p.setPen(leg);
     for (double a : {a1, a2}) {
-      const double rad = a * M_PI / 180.0;
+      const double rad = a * kPi / 180.0;
       c.p.drawLine(at, QPointF(at.x() + r * 1.2 * std::sin(rad), at.y() - r * 1.2 * std::cos(rad)));
     }
     return;
@@ -568,11 +570,11 @@ void drawCentreSymbol(const Ctx& c, const ChartFeature& f, const std::string& na
   } else if (name == "tss_arrow") {
     // Direction of traffic flow (ORIENT, degrees true): an open arrow 10 mm long.
     const double orient = f.number("ORIENT").value_or(0.0);
-    const double screenAngle = orient * M_PI / 180.0 - c.view.rotationRad();
+    const double screenAngle = orient * kPi / 180.0 - c.view.rotationRad();
     const double L = Ctx::mm(5.0), hw = Ctx::mm(1.5);
     c.p.save();
     c.p.translate(at);
-    c.p.rotate(screenAngle * 180.0 / M_PI);  // rotate "up" to the flow direction
+    c.p.rotate(screenAngle * 180.0 / kPi);  // rotate "up" to the flow direction
     QPolygonF arrow;
     arrow << QPointF(-hw * 0.4, L) << QPointF(-hw * 0.4, -L * 0.3) << QPointF(-hw, -L * 0.3) << QPointF(0, -L)
           << QPointF(hw, -L * 0.3) << QPointF(hw * 0.4, -L * 0.3) << QPointF(hw * 0.4, L);

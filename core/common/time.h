@@ -6,6 +6,8 @@
 namespace reckoner {
 
 using TimeUs = std::int64_t;
+/// UTC as microseconds since 1970-01-01T00:00:00Z.
+using UtcUs = std::int64_t;
 
 inline constexpr TimeUs kMicrosPerSecond = 1'000'000;
 

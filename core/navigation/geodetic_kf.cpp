@@ -135,7 +135,7 @@ Belief GeodeticKf::initialBelief(const geo::LocalFrame& frame, const geo::GridPo
   P4(2, 2) = P4(3, 3) = sdVelMps * sdVelMps;
   b.P = spread(P4, courseSpeedJacobian(vEast, vNorth, 0.5));
   // COG and SOG keep a floor of their own (a slow start has no defined course).
-  b.P(kCog, kCog) += s > 0.5 ? 1e-6 : M_PI * M_PI / 3.0;
+  b.P(kCog, kCog) += s > 0.5 ? 1e-6 : kPi * kPi / 3.0;
   b.P(kSog, kSog) += 1e-6;
   return b;
 }

@@ -32,52 +32,25 @@ Coastline::Coastline(std::vector<CoastSegment> segments, double cellM) : cellM_(
   for (auto& s : segments)
     if (s.a.allFinite() && s.b.allFinite() && (s.b - s.a).norm() > 1e-3 && s.sdM > 0.0)
       segments_.push_back(s);
-  if (segments_.empty()) return;
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-  for (const auto& s : segments_) {
-    x0 = std::min({x0, s.a[0], s.b[0]});
-    y0 = std::min({y0, s.a[1], s.b[1]});
-    x1 = std::max({x1, s.a[0], s.b[0]});
-    y1 = std::max({y1, s.a[1], s.b[1]});
-  }
-  minX_ = static_cast<std::int64_t>(std::floor(x0 / cellM_));
-  minY_ = static_cast<std::int64_t>(std::floor(y0 / cellM_));
-  nx_ = static_cast<std::int64_t>(std::floor(x1 / cellM_)) - minX_ + 1;
-  ny_ = static_cast<std::int64_t>(std::floor(y1 / cellM_)) - minY_ + 1;
-  cells_.assign(static_cast<std::size_t>(nx_ * ny_), {});
   // Each segment goes into every cell its bounding box touches (segments are short against cells).
-  for (std::uint32_t i = 0; i < segments_.size(); ++i) {
-    const auto& s = segments_[i];
-    const auto cx0 = static_cast<std::int64_t>(std::floor(std::min(s.a[0], s.b[0]) / cellM_));
-    const auto cx1 = static_cast<std::int64_t>(std::floor(std::max(s.a[0], s.b[0]) / cellM_));
-    const auto cy0 = static_cast<std::int64_t>(std::floor(std::min(s.a[1], s.b[1]) / cellM_));
-    const auto cy1 = static_cast<std::int64_t>(std::floor(std::max(s.a[1], s.b[1]) / cellM_));
-    for (std::int64_t ix = cx0; ix <= cx1; ++ix)
-      for (std::int64_t iy = cy0; iy <= cy1; ++iy) cells_[static_cast<std::size_t>(key(ix, iy))].push_back(i);
-  }
-}
-
-std::int64_t Coastline::key(std::int64_t ix, std::int64_t iy) const {
-  return (iy - minY_) * nx_ + (ix - minX_);
-}
-
-const std::vector<std::uint32_t>* Coastline::cell(std::int64_t ix, std::int64_t iy) const {
-  if (ix < minX_ || iy < minY_ || ix >= minX_ + nx_ || iy >= minY_ + ny_) return nullptr;
-  return &cells_[static_cast<std::size_t>(key(ix, iy))];
+  std::vector<geo::GridBox> boxes;
+  boxes.reserve(segments_.size());
+  for (const auto& s : segments_)
+    boxes.push_back({std::min(s.a[0], s.b[0]), std::min(s.a[1], s.b[1]), std::max(s.a[0], s.b[0]),
+                     std::max(s.a[1], s.b[1])});
+  index_ = geo::GridIndex(cellM_, boxes);
 }
 
 std::optional<Coastline::Nearest> Coastline::nearest(const est::Vec<2>& p, double maxDistanceM) const {
   if (segments_.empty() || !p.allFinite()) return std::nullopt;
-  const auto cx = static_cast<std::int64_t>(std::floor(p[0] / cellM_));
-  const auto cy = static_cast<std::int64_t>(std::floor(p[1] / cellM_));
+  const auto cx = index_.cellOf(p[0]);
+  const auto cy = index_.cellOf(p[1]);
   const auto reach = static_cast<std::int64_t>(std::ceil(maxDistanceM / cellM_));
   std::optional<Nearest> best;
   double bestD = maxDistanceM;
   for (std::int64_t ix = cx - reach; ix <= cx + reach; ++ix) {
     for (std::int64_t iy = cy - reach; iy <= cy + reach; ++iy) {
-      const auto* c = cell(ix, iy);
-      if (!c) continue;
-      for (const std::uint32_t i : *c) {
+      for (const std::uint32_t i : index_.cell(ix, iy)) {
         const auto& s = segments_[i];
         const est::Vec<2> q = closestOn(s.a, s.b, p);
         const double d = (p - q).norm();
@@ -98,8 +71,8 @@ std::optional<double> Coastline::firstHit(const est::Vec<2>& origin, double azim
   const est::Vec<2> u(std::sin(azimuthRad), std::cos(azimuthRad));
   // Walk the grid cells along the ray (Amanatides and Woo); the first cell with a crossing that lies
   // inside it gives the nearest hit.
-  auto ix = static_cast<std::int64_t>(std::floor(origin[0] / cellM_));
-  auto iy = static_cast<std::int64_t>(std::floor(origin[1] / cellM_));
+  auto ix = index_.cellOf(origin[0]);
+  auto iy = index_.cellOf(origin[1]);
   const int stepX = u[0] > 0 ? 1 : -1, stepY = u[1] > 0 ? 1 : -1;
   const double inf = std::numeric_limits<double>::infinity();
   const auto boundary = [&](std::int64_t i, int step, double o) {
@@ -112,13 +85,13 @@ std::optional<double> Coastline::firstHit(const est::Vec<2>& origin, double azim
   double tEnter = 0.0;
   while (tEnter <= maxRangeM) {
     const double tExit = std::min(tMaxX, tMaxY);
-    if (const auto* c = cell(ix, iy)) {
+    if (index_.inside(ix, iy)) {
       double best = inf;
-      for (const std::uint32_t i : *c)
+      for (const std::uint32_t i : index_.cell(ix, iy))
         if (const auto s = rayHit(origin, u, segments_[i].a, segments_[i].b)) best = std::min(best, *s);
       if (best <= std::min(tExit, maxRangeM) + 1e-9) return best;
-    } else if ((ix < minX_ && stepX < 0) || (iy < minY_ && stepY < 0) || (ix >= minX_ + nx_ && stepX > 0) ||
-               (iy >= minY_ + ny_ && stepY > 0)) {
+    } else if ((ix < index_.minX() && stepX < 0) || (iy < index_.minY() && stepY < 0) ||
+               (ix > index_.maxX() && stepX > 0) || (iy > index_.maxY() && stepY > 0)) {
       return std::nullopt;  // left the indexed area for good
     }
     tEnter = tExit;

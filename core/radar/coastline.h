@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "estimation/gaussian.h"
+#include "geo/grid_index.h"
 
 namespace reckoner::radar {
 
@@ -38,12 +39,9 @@ class Coastline {
   [[nodiscard]] bool empty() const { return segments_.empty(); }
 
  private:
-  [[nodiscard]] std::int64_t key(std::int64_t ix, std::int64_t iy) const;
-  [[nodiscard]] const std::vector<std::uint32_t>* cell(std::int64_t ix, std::int64_t iy) const;
   std::vector<CoastSegment> segments_;
   double cellM_;
-  std::int64_t minX_ = 0, minY_ = 0, nx_ = 0, ny_ = 0;
-  std::vector<std::vector<std::uint32_t>> cells_;  ///< nx_ * ny_, row-major
+  geo::GridIndex index_;  ///< the segments by bounding box
 };
 
 }  // namespace reckoner::radar

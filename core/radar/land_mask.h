@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "estimation/gaussian.h"
+#include "geo/grid_index.h"
 
 namespace reckoner::radar {
 
@@ -25,8 +26,7 @@ class LandMask {
   std::vector<Edge> edges_;
   std::vector<std::vector<est::Vec<2>>> rings_;
   double cellM_;
-  std::int64_t minX_ = 0, minY_ = 0, nx_ = 0, ny_ = 0;
-  std::vector<std::vector<std::uint32_t>> cells_;
+  geo::GridIndex index_;  ///< the edges by bounding box
 };
 
 }  // namespace reckoner::radar

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/angles.h"
 #include "common/rng.h"
 #include "common/time.h"
 #include "estimation/gaussian.h"
@@ -37,7 +38,7 @@ struct RadarImageParams {
   int azimuths = 4096;
   int rangeBins = 1024;
   double maxRangeM = 6000.0;
-  double beamWidthRad = 0.0174532925199;   ///< 1 deg (horizontal, between half-power points)
+  double beamWidthRad = degToRad(1.0);     ///< 1 deg (horizontal, between half-power points)
   double pulseLengthM = 15.0;              ///< echo extent in range
   double rangeSdM = 10.0;                  ///< error of an echo's range
   double bearingSdRad = 0.00872664625997;  ///< 0.5 deg: error of an echo's bearing

@@ -3,6 +3,7 @@
 // The DRKF is tuned with the same numbers (as in seed 000's Table I).
 #include <cmath>
 
+#include "common/angles.h"
 #include "common/step_schedule.h"
 #include "estimation/gauss_markov.h"
 #include "sensors/own_ship_samples.h"
@@ -40,7 +41,7 @@ struct SpeedlogSpec {
 struct GyroSpec {
   bool fitted = true;
   double rateHz = 1.0;
-  double sdRad = 0.017453292519943295;  ///< 1 degree (Table I footnote)
+  double sdRad = degToRad(1.0);  ///< 1 degree (Table I footnote)
   /// Calibration error, rad: a slow Gauss-Markov offset of every reading (not in the paper: sigma 0; a
   /// gyrocompass's settle-point error, a heading device's residual deviation).
   est::GaussMarkov bias{0.0, 1.0};

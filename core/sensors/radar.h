@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/angles.h"
 #include "common/rng.h"
 #include "common/step_schedule.h"
 #include "geo/local_frame.h"
@@ -21,19 +22,19 @@ namespace reckoner::sensors {
 
 struct RadarSpec {
   bool fitted = false;
-  double sweepPeriodS = 2.0;                   ///< antenna revolution, s
-  double rangeSdM = 10.0;                      ///< Table III: 10 m
-  double bearingSdRad = 0.017453292519943295;  ///< Table III: 1 degree
-  double bearingBacklashRad = 0.0;             ///< uniform bearing error half-width
-  double rangeQuantumM = 0.0;                  ///< 0: none
-  double bearingQuantumRad = 0.0;              ///< 0: none
-  double gyroCalibrationRad = 0.0;             ///< fixed bearing error from the gyro
-  double gyroScatterSdRad = 0.0;               ///< per-sweep bearing error from the gyro
-  double maxRangeM = 24.0 * 1852.0;            ///< instrumented range
-  double minRangeM = 0.0;                      ///< blind range around the antenna
-  double detectionProbability = 1.0;           ///< per target per sweep
-  double clutterPerKm2 = 0.0;                  ///< expected false plots per km^2 per sweep
-  double clutterMaxRangeM = 0.0;               ///< 0: clutter out to maxRangeM
+  double sweepPeriodS = 2.0;            ///< antenna revolution, s
+  double rangeSdM = 10.0;               ///< Table III: 10 m
+  double bearingSdRad = degToRad(1.0);  ///< Table III: 1 degree
+  double bearingBacklashRad = 0.0;      ///< uniform bearing error half-width
+  double rangeQuantumM = 0.0;           ///< 0: none
+  double bearingQuantumRad = 0.0;       ///< 0: none
+  double gyroCalibrationRad = 0.0;      ///< fixed bearing error from the gyro
+  double gyroScatterSdRad = 0.0;        ///< per-sweep bearing error from the gyro
+  double maxRangeM = 24.0 * 1852.0;     ///< instrumented range
+  double minRangeM = 0.0;               ///< blind range around the antenna
+  double detectionProbability = 1.0;    ///< per target per sweep
+  double clutterPerKm2 = 0.0;           ///< expected false plots per km^2 per sweep
+  double clutterMaxRangeM = 0.0;        ///< 0: clutter out to maxRangeM
   StepSchedule<bool> power{true};
 
   /// The plot variances a tracker should assume: every zero-mean error above (the fixed gyro

@@ -5,6 +5,7 @@
 
 #include "common/angles.h"
 #include "common/units.h"
+#include "io/iso8601.h"
 #include "io/nmea.h"
 
 namespace reckoner::sim {
@@ -23,12 +24,12 @@ std::string angleField(double deg, int degDigits, char pos, char neg) {
 }
 
 std::string hhmmss(UtcUs t) {
-  const std::string iso = formatIso8601(t);  // YYYY-MM-DDThh:mm:ss.ffffffZ
+  const std::string iso = io::formatIso8601(t);  // YYYY-MM-DDThh:mm:ss.ffffffZ
   return iso.substr(11, 2) + iso.substr(14, 2) + iso.substr(17, 2) + "." + iso.substr(20, 3);
 }
 
 std::string ddmmyy(UtcUs t) {
-  const std::string iso = formatIso8601(t);
+  const std::string iso = io::formatIso8601(t);
   return iso.substr(8, 2) + iso.substr(5, 2) + iso.substr(2, 2);
 }
 }  // namespace
@@ -55,7 +56,7 @@ ExportedRun exportRun(const Scenario& s, std::uint64_t seed, UtcUs utc0) {
     for (const auto& u : f.updates) {
       const UtcUs t = utc0 + u.timeUs;
       // The ship's clock: HDT, VBW and VHW carry no time, so every epoch opens with a ZDA.
-      const std::string iso = formatIso8601(t);
+      const std::string iso = io::formatIso8601(t);
       std::snprintf(buf, sizeof buf, "IIZDA,%s,%s,%s,%s,00,00", hhmmss(t).c_str(), iso.substr(8, 2).c_str(),
                     iso.substr(5, 2).c_str(), iso.substr(0, 4).c_str());
       out.nmea += io::nmea::withChecksum(buf) + "\r\n";
@@ -97,7 +98,7 @@ ExportedRun exportRun(const Scenario& s, std::uint64_t seed, UtcUs utc0) {
     }
     for (std::size_t i = 0; i < f.plots.size(); ++i) {
       const auto& p = f.plots[i];
-      std::snprintf(buf, sizeof buf, "%s,%.2f,%.4f,", formatIso8601(utc0 + p.timeUs).c_str(), p.rangeM,
+      std::snprintf(buf, sizeof buf, "%s,%.2f,%.4f,", io::formatIso8601(utc0 + p.timeUs).c_str(), p.rangeM,
                     radToDeg(p.bearingRad));
       out.radarCsv += buf;
       if (f.plotSources[i] >= 0) out.radarCsv += std::to_string(f.plotSources[i]);

@@ -20,13 +20,6 @@
 
 namespace reckoner::sim {
 
-/// "2024-05-01T12:00:01.250Z" -> UTC; nullopt when malformed (Z required).
-std::optional<UtcUs> parseIso8601(std::string_view s);
-/// UTC -> "2024-05-01T12:00:01.250000Z".
-std::string formatIso8601(UtcUs t);
-/// Days since 1970-01-01 of a civil date.
-std::int64_t daysFromCivil(int year, int month, int day);
-
 /// Speeds beyond this (over ground, through the water) are not a surface vessel's: the fastest craft
 /// in service make 60-70 kn, so a field above it is a unit or transmission error, not data.
 inline constexpr double kMaxPlausibleSpeedKn = 100.0;

@@ -9,12 +9,13 @@
 #include <vector>
 
 #include "geo/local_frame.h"
+#include "io/iso8601.h"
 #include "sensors/own_ship_samples.h"
 #include "sim/replay.h"
 
 namespace reckoner::sim::replay_input {
 
-inline constexpr std::int64_t kUsPerDay = 86400LL * 1000000LL;
+using io::kUsPerDay;
 
 /// A line of a text file (CR LF or LF; a UTF-8 byte-order mark at the start dropped).
 struct Line {

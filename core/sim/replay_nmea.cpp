@@ -12,6 +12,7 @@
 #include "common/units.h"
 #include "io/error_line.h"
 #include "io/input_error.h"
+#include "io/iso8601.h"
 #include "io/nmea.h"
 #include "sim/replay_input.h"
 #include "sim/replay_sources.h"
@@ -139,7 +140,7 @@ UtcUs medianOf(std::vector<UtcUs> v) {
 }
 
 UtcUs utcOf(const nm::Date& d, double tod) {
-  return daysFromCivil(d.year, d.month, d.day) * kUsPerDay + static_cast<UtcUs>(std::llround(tod * 1e6));
+  return io::daysFromCivil(d.year, d.month, d.day) * kUsPerDay + static_cast<UtcUs>(std::llround(tod * 1e6));
 }
 
 /// The day of the first dated sentence, or of --date, or (with a warning) 1970-01-01: the reference
@@ -151,7 +152,7 @@ UtcUs firstDay(const std::vector<Parsed>& ps, const std::string& name, const Nme
       const UtcUs t = utcOf(*d, *timeOfDayOf(p.sentence));
       if (!o.date) return t;
       // --date against the file's dates: a whole number of 1024-week roll-overs is the receiver's bug.
-      const UtcUs given = daysFromCivil((*o.date)[0], (*o.date)[1], (*o.date)[2]) * kUsPerDay;
+      const UtcUs given = io::daysFromCivil((*o.date)[0], (*o.date)[1], (*o.date)[2]) * kUsPerDay;
       const double k = std::round(static_cast<double>(given - t) / static_cast<double>(kRolloverUs));
       if (k >= 1.0 &&
           std::abs(static_cast<double>(given - t) - k * static_cast<double>(kRolloverUs)) < 2.0 * 86400e6)
@@ -166,7 +167,7 @@ UtcUs firstDay(const std::vector<Parsed>& ps, const std::string& name, const Nme
     return std::nullopt;
   }();
   if (o.date)
-    return daysFromCivil((*o.date)[0], (*o.date)[1], (*o.date)[2]) * kUsPerDay +
+    return io::daysFromCivil((*o.date)[0], (*o.date)[1], (*o.date)[2]) * kUsPerDay +
            std::llround(tod.value_or(0) * 1e6);
   warnings.push_back(
       io::oneLine(name + ": no RMC or ZDA sentence with a date: times of day on an unknown date, shown "

@@ -17,10 +17,9 @@
 #include <span>
 #include <vector>
 
-namespace reckoner::sim {
+#include "common/time.h"
 
-/// UTC as microseconds since 1970-01-01T00:00:00Z.
-using UtcUs = std::int64_t;
+namespace reckoner::sim {
 
 struct StreamTimePolicy {
   std::int64_t isolatedJumpUs = 60'000'000;  ///< this much beyond both neighbourhoods: a jump

@@ -199,7 +199,7 @@ est::UpdateReport<2> ImmTracker::updatePlot(TimeUs t, double bearingRad, double 
     }
     nis[j] = rep.nis;
     const double det = rep.S(0, 0) * rep.S(1, 1) - rep.S(0, 1) * rep.S(1, 0);
-    likelihood[j] = std::exp(-0.5 * rep.nis) / (2.0 * M_PI * std::sqrt(std::max(det, 1e-300)));
+    likelihood[j] = std::exp(-0.5 * rep.nis) / (kTwoPi * std::sqrt(std::max(det, 1e-300)));
   }
   // 5. Mode probabilities (guarded against underflow of both likelihoods).
   std::array<double, kModes> mu{};

@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "common/angles.h"
 #include "common/time.h"
 #include "estimation/models/relative_polar.h"
 #include "estimation/update_report.h"
@@ -25,7 +26,7 @@ namespace reckoner::track {
 namespace rp = est::relpolar;
 
 struct InputEstimationConfig {
-  double bearingSdRad = 0.017453292519943295;  ///< 1 degree
+  double bearingSdRad = degToRad(1.0);  ///< 1 degree
   double rangeSdM = 20.0;
   double processNoiseQ = 1e-6;  ///< white-acceleration spectral density of the target, m^2/s^3
   int window = 2;               ///< s, sliding window length (>= 1)

@@ -4,10 +4,10 @@
 #include <bit>
 #include <cmath>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "common/angles.h"
 #include "estimation/chi_square.h"
+#include "geo/grid_index.h"
 #include "tracking/assignment.h"
 
 namespace reckoner::track {
@@ -408,14 +408,11 @@ void TrackManager::associateRound(TrackStatus status, std::vector<char>& taken) 
     std::nth_element(radii.begin(), radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2),
                      radii.end());
     const double cell = std::clamp(radii[radii.size() / 2], 50.0, 20000.0);
-    const auto key = [cell](double x, double y) {
-      const auto ix = static_cast<std::int64_t>(std::floor(x / cell));
-      const auto iy = static_cast<std::int64_t>(std::floor(y / cell));
-      return (static_cast<std::uint64_t>(ix) * 0x9E3779B97F4A7C15ull) ^ static_cast<std::uint64_t>(iy);
-    };
-    std::unordered_multimap<std::uint64_t, std::size_t> grid;
-    grid.reserve(nPlots);
-    for (std::size_t j = 0; j < nPlots; ++j) grid.emplace(key(fixed[j][0], fixed[j][1]), j);
+    std::vector<geo::GridBox> points;
+    points.reserve(nPlots);
+    for (std::size_t j = 0; j < nPlots; ++j)
+      points.push_back({fixed[j][0], fixed[j][1], fixed[j][0], fixed[j][1]});
+    const geo::GridIndex grid(cell, points);
     std::vector<std::size_t> near;
     for (std::size_t ci = 0; ci < cands.size(); ++ci) {
       const Candidate& c = cands[ci];
@@ -426,16 +423,11 @@ void TrackManager::associateRound(TrackStatus status, std::vector<char>& taken) 
         for (std::size_t j = 0; j < nPlots; ++j) near.push_back(j);
       } else {
         const auto n = static_cast<std::int64_t>(cells);
-        const auto cx = static_cast<std::int64_t>(std::floor(c.rel[0] / cell));
-        const auto cy = static_cast<std::int64_t>(std::floor(c.rel[1] / cell));
-        for (std::int64_t ix = cx - n; ix <= cx + n; ++ix) {
-          for (std::int64_t iy = cy - n; iy <= cy + n; ++iy) {
-            const auto k =
-                (static_cast<std::uint64_t>(ix) * 0x9E3779B97F4A7C15ull) ^ static_cast<std::uint64_t>(iy);
-            const auto [b, e] = grid.equal_range(k);
-            for (auto it = b; it != e; ++it) near.push_back(it->second);
-          }
-        }
+        const auto cx = grid.cellOf(c.rel[0]);
+        const auto cy = grid.cellOf(c.rel[1]);
+        for (std::int64_t ix = cx - n; ix <= cx + n; ++ix)
+          for (std::int64_t iy = cy - n; iy <= cy + n; ++iy)
+            for (const std::uint32_t j : grid.cell(ix, iy)) near.push_back(j);
       }
       for (std::size_t j : near) {
         if (taken[j] || pending_[j].plot.timeUs - t.lastPlotUs <= minGap) continue;

@@ -18,6 +18,7 @@
 
 #include <sys/stat.h>
 
+#include "io/iso8601.h"
 #include "io/nmea.h"
 #include "sim/nmea_export.h"
 #include "sim/replay.h"
@@ -150,7 +151,7 @@ class TestHostileInputs : public QObject {
     qInfo("program under test: %s", qPrintable(cliPath()));
     sim::Scenario s = test::builtinScenario("ttkf-matched");
     s.durationUs = 600 * kMicrosPerSecond;
-    const auto e = sim::exportRun(s, 2, *sim::parseIso8601("2026-11-23T10:00:00Z"));
+    const auto e = sim::exportRun(s, 2, *io::parseIso8601("2026-11-23T10:00:00Z"));
     nmea_ = write(dir_, "run.nmea", QByteArray::fromStdString(e.nmea));
     radar_ = write(dir_, "run.csv", QByteArray::fromStdString(e.radarCsv));
     nmeaLines_ = QByteArray::fromStdString(e.nmea).split('\n');

@@ -18,7 +18,7 @@
 #include "charts/s57/s57_loader.h"
 #include "common/angles.h"
 #include "common/rng.h"
-#include "io/scenario_json.h"
+#include "files/scenario_json.h"
 #include "navigation/drkf.h"
 #include "radar/chart_matching.h"
 #include "resources/embedded.h"

@@ -10,13 +10,13 @@
 #include "charts/s57/s57_loader.h"
 #include "common/angles.h"
 #include "common/rng.h"
-#include "io/scenario_json.h"
+#include "files/scenario_json.h"
 #include "radar/chart_matching.h"
 #include "radar/land_mask.h"
 #include "radar/radar_image.h"
 #include "resources/embedded.h"
-#include "sim/radar_fix_study.h"
 #include "sim/simulation_engine.h"
+#include "studies/radar_fix_study.h"
 
 using namespace reckoner;
 

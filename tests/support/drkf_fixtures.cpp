@@ -5,7 +5,7 @@
 #include <map>
 #include <memory>
 
-#include "io/scenario_json.h"
+#include "files/scenario_json.h"
 #include "resources/embedded.h"
 
 namespace reckoner::test {

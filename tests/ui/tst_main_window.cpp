@@ -17,7 +17,7 @@
 #include <map>
 
 #include "common/angles.h"
-#include "io/scenario_json.h"
+#include "files/scenario_json.h"
 #include "resources/embedded.h"
 #include "sim/simulation_engine.h"
 #include "ui/main_window.h"

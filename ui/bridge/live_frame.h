@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "radar/land_mask.h"
-#include "sim/own_ship_filters.h"
 #include "sim/scenario.h"
 #include "sim/simulation_engine.h"
+#include "studies/own_ship_filters.h"
 #include "ui/map/radar_raster.h"
 
 namespace reckoner::ui {

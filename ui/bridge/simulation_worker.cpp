@@ -8,7 +8,7 @@
 #include "charts/radar/radar_contours.h"
 #include "common/angles.h"
 #include "navigation/dr_horizon.h"
-#include "sim/radar_fix_study.h"
+#include "studies/radar_fix_study.h"
 
 namespace reckoner::ui {
 namespace {

@@ -8,7 +8,7 @@
 #include "estimation/models/drkf_process.h"
 #include "estimation/models/drkf_radar_fix.h"
 #include "estimation/models/drkf_speedlog.h"
-#include "estimation/numeric_jacobian.h"
+#include "support/numeric_jacobian.h"
 
 using namespace reckoner;
 using namespace reckoner::est;

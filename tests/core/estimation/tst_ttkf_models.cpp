@@ -4,8 +4,8 @@
 #include "estimation/discretize.h"
 #include "estimation/models/ttkf_process.h"
 #include "estimation/models/ttkf_radar.h"
-#include "estimation/numeric_jacobian.h"
 #include "estimation/singer.h"
+#include "support/numeric_jacobian.h"
 
 using namespace reckoner;
 using namespace reckoner::est;

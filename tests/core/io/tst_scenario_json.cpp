@@ -3,7 +3,7 @@
 #include "support/drkf_fixtures.h"
 
 #include "common/angles.h"
-#include "io/scenario_json.h"
+#include "files/scenario_json.h"
 #include "resources/embedded.h"
 #include "support/drkf_fixtures.h"
 

@@ -8,7 +8,7 @@
 #include "estimation/chi_square.h"
 #include "navigation/geodetic_kf.h"
 #include "navigation/lsq_fusion.h"
-#include "sim/own_ship_filters.h"
+#include "studies/own_ship_filters.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;

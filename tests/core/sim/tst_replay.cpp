@@ -5,6 +5,7 @@
 #include <set>
 
 #include "io/input_error.h"
+#include "io/iso8601.h"
 #include "io/nmea.h"
 #include "metrics/track_stats.h"
 #include "sim/nmea_export.h"
@@ -71,16 +72,16 @@ class TestReplay : public QObject {
     QCOMPARE(nm::parse("garbage").error, nm::Error::Malformed);
   }
   void utcArithmetic() {
-    QCOMPARE(sim::daysFromCivil(1970, 1, 1), std::int64_t(0));
-    QCOMPARE(sim::daysFromCivil(2000, 3, 1), std::int64_t(11017));
-    QCOMPARE(sim::daysFromCivil(2024, 2, 29) + 1, sim::daysFromCivil(2024, 3, 1));
-    const auto t = sim::parseIso8601("2024-02-29T23:59:59.250Z");
+    QCOMPARE(io::daysFromCivil(1970, 1, 1), std::int64_t(0));
+    QCOMPARE(io::daysFromCivil(2000, 3, 1), std::int64_t(11017));
+    QCOMPARE(io::daysFromCivil(2024, 2, 29) + 1, io::daysFromCivil(2024, 3, 1));
+    const auto t = io::parseIso8601("2024-02-29T23:59:59.250Z");
     QVERIFY(t.has_value());
-    QCOMPARE(sim::formatIso8601(*t), std::string("2024-02-29T23:59:59.250000Z"));
-    QCOMPARE(sim::formatIso8601(*t + 750000), std::string("2024-03-01T00:00:00.000000Z"));
-    QVERIFY(!sim::parseIso8601("2024-02-29 23:59:59Z"));
-    QVERIFY(!sim::parseIso8601("2024-02-29T23:59:59"));  // no Z: not UTC
-    QVERIFY(!sim::parseIso8601("2024-13-01T00:00:00Z"));
+    QCOMPARE(io::formatIso8601(*t), std::string("2024-02-29T23:59:59.250000Z"));
+    QCOMPARE(io::formatIso8601(*t + 750000), std::string("2024-03-01T00:00:00.000000Z"));
+    QVERIFY(!io::parseIso8601("2024-02-29 23:59:59Z"));
+    QVERIFY(!io::parseIso8601("2024-02-29T23:59:59"));  // no Z: not UTC
+    QVERIFY(!io::parseIso8601("2024-13-01T00:00:00Z"));
   }
   void replayReproducesTheSimulatedRun() {
     // GIVEN a simulated run written as NMEA and radar CSV WHEN replayed with the same settings and
@@ -88,7 +89,7 @@ class TestReplay : public QObject {
     // the files round the values) and stays within 3 sd of the truth; every target gets a track.
     sim::Scenario s = test::builtinScenario("ttkf-matched");
     s.durationUs = 300 * kMicrosPerSecond;
-    const auto utc0 = *sim::parseIso8601("2026-11-23T10:00:00Z");
+    const auto utc0 = *io::parseIso8601("2026-11-23T10:00:00Z");
     const sim::ExportedRun e = sim::exportRun(s, 3, utc0);
     sim::ReplayOptions o;
     o.settings = s;
@@ -126,7 +127,7 @@ class TestReplay : public QObject {
       sim::Scenario s = test::builtinScenario("ttkf-matched");
       s.durationUs = fromSeconds(period > 10 ? 2400.0 : 600.0);
       s.radar.sweepPeriodS = period;
-      const auto utc0 = *sim::parseIso8601("2026-11-23T10:00:00Z");
+      const auto utc0 = *io::parseIso8601("2026-11-23T10:00:00Z");
       const sim::ExportedRun e = sim::exportRun(s, 4, utc0);
       const TimeUs lastSweep = e.truth.targetRows.back().timeUs;
       for (int k = 0; k < track::kTrackerKindCount; ++k) {
@@ -166,7 +167,7 @@ class TestReplay : public QObject {
   void corruptLinesAreCountedAndSkipped() {
     sim::Scenario s = test::builtinScenario("imo-2");
     s.durationUs = 60 * kMicrosPerSecond;
-    const auto e = sim::exportRun(s, 1, *sim::parseIso8601("2026-01-01T00:00:00Z"));
+    const auto e = sim::exportRun(s, 1, *io::parseIso8601("2026-01-01T00:00:00Z"));
     std::string nmea;
     int k = 0, flipped = 0;
     for (std::size_t start = 0; start < e.nmea.size();) {

@@ -11,10 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "files/track_output.h"
 #include "io/input_error.h"
+#include "io/iso8601.h"
 #include "io/json.h"
 #include "io/nmea.h"
-#include "io/track_output.h"
 #include "sim/nmea_export.h"
 #include "sim/replay.h"
 #include "support/drkf_fixtures.h"
@@ -91,7 +92,7 @@ class TestReplayHostile : public QObject {
   Q_OBJECT
   sim::Scenario scenario_;
   sim::ExportedRun run_;
-  sim::UtcUs utc0_ = 0;
+  UtcUs utc0_ = 0;
 
   [[nodiscard]] sim::ReplayOptions options() const {
     sim::ReplayOptions o;
@@ -119,7 +120,7 @@ class TestReplayHostile : public QObject {
     test::limitThisProcess(300, std::size_t{4} << 30);
     scenario_ = test::builtinScenario("ttkf-matched");
     scenario_.durationUs = 600 * kMicrosPerSecond;
-    utc0_ = *sim::parseIso8601("2026-11-23T10:00:00Z");
+    utc0_ = *io::parseIso8601("2026-11-23T10:00:00Z");
     run_ = sim::exportRun(scenario_, 5, utc0_);
   }
 

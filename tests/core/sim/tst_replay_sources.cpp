@@ -10,10 +10,11 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "files/track_output.h"
 #include "io/input_error.h"
+#include "io/iso8601.h"
 #include "io/json.h"
 #include "io/nmea.h"
-#include "io/track_output.h"
 #include "sim/nmea_export.h"
 #include "sim/replay.h"
 #include "sim/replay_input.h"
@@ -83,7 +84,7 @@ class TestReplaySources : public QObject {
   Q_OBJECT
   sim::Scenario scenario_;
   sim::ExportedRun run_;
-  sim::UtcUs utc0_ = 0;
+  UtcUs utc0_ = 0;
 
   [[nodiscard]] sim::ReplayOptions options() const {
     sim::ReplayOptions o;
@@ -110,7 +111,7 @@ class TestReplaySources : public QObject {
     scenario_ = test::builtinScenario("ttkf-matched");
     scenario_.durationUs = 300 * kMicrosPerSecond;
     scenario_.loran.fitted = false;  // GPS, log and gyro: the sources under test
-    utc0_ = *sim::parseIso8601("2026-11-23T10:00:00Z");
+    utc0_ = *io::parseIso8601("2026-11-23T10:00:00Z");
     run_ = sim::exportRun(scenario_, 7, utc0_);
   }
 
@@ -267,7 +268,7 @@ class TestReplaySources : public QObject {
     sim::ReplayOptions o = options();
     o.date = std::array<int, 3>{2026, 11, 23};
     const auto dated = sim::replay(joined(out), "undated.nmea", nullptr, "", o);
-    QCOMPARE(sim::formatIso8601(dated.utc0).substr(0, 10), std::string("2026-11-23"));
+    QCOMPARE(io::formatIso8601(dated.utc0).substr(0, 10), std::string("2026-11-23"));
     QVERIFY(worstError(dated) < 30.0);
   }
 
@@ -279,8 +280,8 @@ class TestReplaySources : public QObject {
     const auto back = [](std::string ddmmyy) {  // 1024 weeks = 7168 days earlier
       const int d = std::stoi(ddmmyy.substr(0, 2)), m = std::stoi(ddmmyy.substr(2, 2)),
                 y = 2000 + std::stoi(ddmmyy.substr(4));
-      const std::int64_t day = sim::daysFromCivil(y, m, d) - 7168;
-      const std::string iso = sim::formatIso8601(day * 86400LL * 1000000LL);
+      const std::int64_t day = io::daysFromCivil(y, m, d) - 7168;
+      const std::string iso = io::formatIso8601(day * 86400LL * 1000000LL);
       return iso.substr(8, 2) + iso.substr(5, 2) + iso.substr(2, 2);
     };
     for (const auto& l : linesOf(run_.nmea)) {
@@ -292,7 +293,7 @@ class TestReplaySources : public QObject {
     sim::ReplayOptions o = options();
     o.date = std::array<int, 3>{2026, 11, 23};
     const auto r = sim::replay(joined(rolled), "rolled.nmea", nullptr, "", o);
-    QCOMPARE(sim::formatIso8601(r.utc0).substr(0, 10), std::string("2026-11-23"));
+    QCOMPARE(io::formatIso8601(r.utc0).substr(0, 10), std::string("2026-11-23"));
     QVERIFY(std::any_of(r.warnings.begin(), r.warnings.end(),
                         [](const std::string& w) { return w.find("roll-over") != std::string::npos; }));
     // Mixed: the ZDA of a good clock beside the rolled-over RMC.
@@ -403,11 +404,11 @@ class TestReplaySources : public QObject {
     const double bearings[] = {0.3, 2.0, 4.4};
     for (int turn = 0; turn < 40; ++turn) {
       for (int k = 0; k < 3; ++k) {
-        const sim::UtcUs t = static_cast<sim::UtcUs>((turn * 2.5 + 2.5 * bearings[k] / (2 * kPi)) * 1e6);
+        const UtcUs t = static_cast<UtcUs>((turn * 2.5 + 2.5 * bearings[k] / (2 * kPi)) * 1e6);
         plots.push_back({t, 3000.0 + 800.0 * k + turn * 4.0 + rng.normal(0.0, 20.0),
                          bearings[k] + rng.normal(0.0, degToRad(0.1)), -1});
       }
-      plots.push_back({static_cast<sim::UtcUs>((turn * 2.5 + 2.5 * rng.uniform()) * 1e6),
+      plots.push_back({static_cast<UtcUs>((turn * 2.5 + 2.5 * rng.uniform()) * 1e6),
                        500.0 + 8500.0 * rng.uniform(), 2 * kPi * rng.uniform(), -1});
     }
     std::sort(plots.begin(), plots.end(), [](const Plot& a, const Plot& b) { return a.utc < b.utc; });

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "files/scenario_json.h"
 #include "io/input_error.h"
 #include "io/json.h"
-#include "io/scenario_json.h"
 #include "resources/embedded.h"
 #include "sim/simulation_engine.h"
 #include "support/resource_limits.h"

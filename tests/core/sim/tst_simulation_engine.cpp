@@ -4,7 +4,7 @@
 #include <map>
 
 #include "common/angles.h"
-#include "io/scenario_json.h"
+#include "files/scenario_json.h"
 #include "navigation/dr_horizon.h"
 #include "resources/embedded.h"
 #include "sim/scenario_run.h"

@@ -7,7 +7,6 @@
 #include "sim/stream_time.h"
 
 using namespace reckoner;
-using sim::UtcUs;
 
 namespace {
 constexpr UtcUs kS = 1'000'000;

@@ -8,7 +8,7 @@
 
 #include "common/rng.h"
 #include "estimation/gaussian.h"
-#include "sim/seed003.h"
+#include "studies/seed003.h"
 #include "tracking/alpha_beta_gamma.h"
 
 using namespace reckoner;

@@ -7,8 +7,8 @@
 #include "common/angles.h"
 #include "common/rng.h"
 #include "estimation/ekf.h"
-#include "estimation/numeric_jacobian.h"
-#include "sim/manoeuvre_trial.h"
+#include "studies/manoeuvre_trial.h"
+#include "support/numeric_jacobian.h"
 #include "tracking/imm.h"
 
 using namespace reckoner;

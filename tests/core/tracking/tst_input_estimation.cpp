@@ -8,8 +8,8 @@
 #include "common/rng.h"
 #include "estimation/chi_square.h"
 #include "estimation/ekf.h"
-#include "estimation/numeric_jacobian.h"
-#include "sim/seed001.h"
+#include "studies/seed001.h"
+#include "support/numeric_jacobian.h"
 #include "tracking/input_estimation.h"
 
 using namespace reckoner;

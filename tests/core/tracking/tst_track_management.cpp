@@ -8,7 +8,7 @@
 
 #include "common/angles.h"
 #include "common/rng.h"
-#include "estimation/numeric_jacobian.h"
+#include "support/numeric_jacobian.h"
 #include "tracking/assignment.h"
 #include "tracking/coupled_drttkf.h"
 #include "tracking/cpa.h"

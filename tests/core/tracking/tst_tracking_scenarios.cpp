@@ -5,10 +5,10 @@
 #include <optional>
 
 #include "estimation/chi_square.h"
-#include "metrics/imo_accuracy.h"
 #include "metrics/track_stats.h"
-#include "sim/comparison.h"
 #include "sim/simulation_engine.h"
+#include "studies/comparison.h"
+#include "studies/imo_accuracy.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;

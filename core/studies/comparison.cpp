@@ -1,4 +1,4 @@
-#include "sim/comparison.h"
+#include "studies/comparison.h"
 
 #include <algorithm>
 #include <chrono>

@@ -9,15 +9,16 @@
 #include <optional>
 #include <vector>
 
+#include "common/units.h"
 #include "tracking/input_estimation.h"
 
 namespace reckoner::sim {
 
 struct Seed001Scenario {
   double observerCourseRad = 1.1344640137963142;  ///< 065 deg
-  double observerSpeedMps = 30.0 * 1852.0 / 3600.0;
+  double observerSpeedMps = knotsToMps(30.0);
   double targetCourseRad = 1.7453292519943295;  ///< 100 deg
-  double targetSpeedMps = 10.0 * 1852.0 / 3600.0;
+  double targetSpeedMps = knotsToMps(10.0);
   double initialBearingRad = 0.0;
   double initialRangeM = 30000.0;
   double durationS = 1800.0;

@@ -1,10 +1,11 @@
-#include "io/track_output.h"
+#include "files/track_output.h"
+#include "io/iso8601.h"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "io/own_ship_output.h"
+#include "files/own_ship_output.h"
 
 namespace reckoner::io {
 namespace {
@@ -79,7 +80,7 @@ void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) 
         buf, sizeof buf,
         "%.6f,%s,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f,%.9f,%.9f,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,"
         "%.3f,%.3f,%.4f,%.4f\n",
-        toSeconds(o.timeUs), sim::formatIso8601(o.utcUs).c_str(), o.estimate.xM, o.estimate.yM,
+        toSeconds(o.timeUs), io::formatIso8601(o.utcUs).c_str(), o.estimate.xM, o.estimate.yM,
         o.estimate.vxMps, o.estimate.vyMps, o.estimate.sdXM, o.estimate.sdYM, o.estimate.sdVxMps,
         o.estimate.sdVyMps, o.estimate.latDeg, o.estimate.lonDeg, o.sensors.c_str(), o.rowsApplied,
         c.currentXMps, c.currentYMps, c.sdCurrentXMps, c.sdCurrentYMps, c.headingBiasRad * kDeg,
@@ -98,7 +99,7 @@ void writeReplayTargetsCsv(const std::string& path, const sim::ReplayResult& r) 
     const sim::TrackRow& t = r.tracks[i];
     char head[128];
     std::snprintf(head, sizeof head, "%.6f,%s,%d,", toSeconds(t.timeUs),
-                  sim::formatIso8601(r.trackRowUtc[i]).c_str(), t.trackId);
+                  io::formatIso8601(r.trackRowUtc[i]).c_str(), t.trackId);
     std::string s = head;
     if (t.targetId >= 0 && static_cast<std::size_t>(t.targetId) < r.targetLabels.size())
       s.append(r.targetLabels[static_cast<std::size_t>(t.targetId)]);
@@ -132,7 +133,7 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   const auto n = [&w](const char* k, long v) { w.key(k).value(static_cast<std::int64_t>(v)); };
   w.beginObject();
   w.key("nmea_file").value(nmeaName);
-  w.key("utc_start").value(sim::formatIso8601(r.utc0));
+  w.key("utc_start").value(io::formatIso8601(r.utc0));
   w.key("origin").beginArray().value(r.origin.latDeg).value(r.origin.lonDeg).endArray();
   w.key("nmea").beginObject();
   n("lines", s.nmeaLines);

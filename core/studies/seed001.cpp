@@ -1,4 +1,4 @@
-#include "sim/seed001.h"
+#include "studies/seed001.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,6 +5,8 @@
 // The paper gives no numbers for the target, the sweep or the noise; ours are in docs/manoeuvres.md.
 #include <cstdint>
 
+#include "common/angles.h"
+#include "common/units.h"
 #include "tracking/alpha_beta_gamma.h"
 
 namespace reckoner::sim {
@@ -16,9 +18,9 @@ struct Seed003Setup {
   int positions = 1000;
   double sweepS = 3.0;
   double plotSdM = 20.0;  ///< plot noise per Cartesian axis (the noisy cases)
-  double speedMps = 12.0 * 1852.0 / 3600.0;
-  double legS = 150.0;                            ///< a course (and speed) change every legS seconds
-  double turnRateRadPerS = 0.017453292519943295;  ///< 1 deg/s
+  double speedMps = knotsToMps(12.0);
+  double legS = 150.0;                     ///< a course (and speed) change every legS seconds
+  double turnRateRadPerS = degToRad(1.0);  ///< 1 deg/s
   double accelerationMps2 = 0.05;
 };
 

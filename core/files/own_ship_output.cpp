@@ -1,4 +1,4 @@
-#include "io/own_ship_output.h"
+#include "files/own_ship_output.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -6,9 +6,9 @@
 #include <fstream>
 
 #include "estimation/update_report.h"
+#include "files/track_output.h"
 #include "io/input_error.h"
 #include "io/json.h"
-#include "io/track_output.h"
 #include "sim/simulation_engine.h"
 
 namespace reckoner::io {

@@ -11,7 +11,9 @@
 #include <optional>
 #include <vector>
 
-#include "sim/seed001.h"
+#include "common/angles.h"
+#include "common/units.h"
+#include "studies/seed001.h"
 #include "tracking/alpha_beta_gamma.h"
 #include "tracking/imm.h"
 #include "tracking/input_estimation.h"
@@ -23,13 +25,13 @@ struct ManoeuvreTrial {
   double durationS = 600.0;
   double rangeSdM = 20.0;
   double bearingSdRad = 0.005235987755982988;  ///< 0.3 deg
-  double ownCourseRad = 0.0, ownSpeedMps = 12.0 * 1852.0 / 3600.0;
+  double ownCourseRad = 0.0, ownSpeedMps = knotsToMps(12.0);
   double targetBearingRad = 0.7853981633974483, targetRangeM = 3.0 * 1852.0;  ///< at t = 0
-  double targetCourseRad = 4.71238898038469, targetSpeedMps = 12.0 * 1852.0 / 3600.0;
+  double targetCourseRad = 1.5 * kPi, targetSpeedMps = knotsToMps(12.0);
   double manoeuvreStartS = 300.0;
-  double turnRad = 0.0;                           ///< course change (clockwise positive); 0: none
-  double turnRateRadPerS = 0.017453292519943295;  ///< 1 deg/s
-  double speedChangeMps = 0.0;                    ///< speed change; 0: none
+  double turnRad = 0.0;                    ///< course change (clockwise positive); 0: none
+  double turnRateRadPerS = degToRad(1.0);  ///< 1 deg/s
+  double speedChangeMps = 0.0;             ///< speed change; 0: none
   double accelerationMps2 = 0.1;
   /// White acceleration (m^2/s^3) of the model the PCRB assumes: the EKF's by default (a bound for
   /// targets that manoeuvre as the model says); 0 for the bound of a truly straight target.

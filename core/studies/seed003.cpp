@@ -1,4 +1,5 @@
-#include "sim/seed003.h"
+#include "studies/seed003.h"
+#include "common/units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,8 +37,7 @@ Seed003Result runSeed003(Seed003Case c, const Seed003Setup& s, const track::AbgC
   for (double t = s.legS; c != Seed003Case::NoNoise && t <= durationS; t += s.legS) {
     const double change = degToRad(20.0 + 40.0 * rng.uniform()) * (rng.uniform() < 0.5 ? -1.0 : 1.0);
     orderedCourse = wrapTwoPi(orderedCourse + change);
-    if (c == Seed003Case::VaryingCourseAndSpeed)
-      orderedSpeed = (6.0 + 12.0 * rng.uniform()) * 1852.0 / 3600.0;
+    if (c == Seed003Case::VaryingCourseAndSpeed) orderedSpeed = knotsToMps(6.0 + 12.0 * rng.uniform());
     KinematicEvent e;
     e.timeUs = fromSeconds(t);
     e.order = HelmOrder{orderedCourse, orderedSpeed, s.turnRateRadPerS, s.accelerationMps2};

@@ -1,4 +1,4 @@
-#include "metrics/imo_accuracy.h"
+#include "studies/imo_accuracy.h"
 
 #include <algorithm>
 #include <array>
@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/angles.h"
+#include "common/percentile.h"
 #include "common/units.h"
 #include "sim/scenario_run.h"
 #include "sim/simulation_engine.h"
@@ -50,11 +51,9 @@ Errors errorsOf(const sim::TrackSnapshot& tr, const Truth& t) {
   return e;
 }
 
+/// No sample: no bound (infinite error).
 double percentile95(std::vector<double> v) {
-  if (v.empty()) return kInf;
-  std::sort(v.begin(), v.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(v.size())));
-  return v[std::max<std::size_t>(rank, 1) - 1];  // nearest rank
+  return reckoner::percentile95(std::move(v), kInf);
 }
 
 struct RunSample {

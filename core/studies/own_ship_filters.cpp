@@ -1,10 +1,12 @@
-#include "sim/own_ship_filters.h"
+#include "studies/own_ship_filters.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <utility>
 
+#include "common/percentile.h"
 #include "estimation/ekf.h"
 
 namespace reckoner::sim {
@@ -160,8 +162,7 @@ OwnShipFilterStats summariseOwnShipFilters(const std::vector<OwnShipFilterRun>& 
       p.velocityRmseMps = std::sqrt(ve[ph] / n);
       p.meanNees /= static_cast<double>(times[ph]);
       p.shareInBand /= static_cast<double>(times[ph]);
-      std::sort(errors[ph].begin(), errors[ph].end());
-      p.p95PositionErrorM = errors[ph][static_cast<std::size_t>(0.95 * (n - 1.0))];
+      p.p95PositionErrorM = percentile95(std::move(errors[ph]));
     }
   }
   return out;

@@ -1,4 +1,4 @@
-#include "io/scenario_json.h"
+#include "files/scenario_json.h"
 
 #include <algorithm>
 #include <cerrno>

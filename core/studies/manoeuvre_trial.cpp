@@ -1,4 +1,4 @@
-#include "sim/manoeuvre_trial.h"
+#include "studies/manoeuvre_trial.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "common/angles.h"
 #include "common/rng.h"
-#include "metrics/pcrb.h"
+#include "estimation/pcrb.h"
 #include "sim/vessel_motion.h"
 
 namespace reckoner::sim {

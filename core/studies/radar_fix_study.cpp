@@ -1,10 +1,11 @@
-#include "sim/radar_fix_study.h"
+#include "studies/radar_fix_study.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "common/angles.h"
+#include "common/percentile.h"
 #include "estimation/chi_square.h"
 #include "estimation/models/drkf_radar_fix.h"
 #include "sim/scenario_run.h"
@@ -35,9 +36,7 @@ struct RunOut {
 };
 
 double p95(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  return v[static_cast<std::size_t>(0.95 * static_cast<double>(v.size() - 1))];
+  return percentile95(std::move(v));
 }
 
 void scoreFix(const RadarFixReport& r, const SimFrame& f, RunOut& o) {

@@ -17,6 +17,8 @@ struct DeadReckoningAids {
   bool gyro = false;
   double gyroVarRad2 = 3e-4;  ///< white-noise variance of the gyro, rad^2
   double periodS = 1.0;       ///< interval of the aids' updates, s (> 0)
+
+  friend bool operator==(const DeadReckoningAids&, const DeadReckoningAids&) = default;
 };
 
 /// The semi-major axis of the 95% position error ellipse of a belief, metres (chi-square 2 dof).

@@ -17,6 +17,15 @@ using namespace est::drkf;
 using sensors::SensorId;
 constexpr TimeUs kNever = std::numeric_limits<TimeUs>::max();
 
+radar::RadarImageParams imageParamsOf(const RadarMatchingSpec& m) {
+  radar::RadarImageParams ip;
+  ip.azimuths = m.azimuths;
+  ip.rangeBins = m.rangeBins;
+  ip.maxRangeM = m.maxRangeM;
+  ip.beamWidthRad = degToRad(m.beamWidthDeg);
+  return ip;
+}
+
 TimeUs periodOf(double rateHz) {
   return std::max<TimeUs>(1, fromSeconds(1.0 / rateHz));
 }
@@ -43,6 +52,17 @@ nav::DrkfConfig drkfConfigFor(const Scenario& s) {
   c.gateReopenS = s.filter.gateReopenS;
   c.minSpeedMps = s.filter.minSpeedMps;
   return c;
+}
+
+nav::DeadReckoningAids deadReckoningAidsFor(const Scenario& s, const SensorStates& on) {
+  nav::DeadReckoningAids aids;
+  aids.speedlog = on.isOn(SensorId::Speedlog);
+  aids.speedlogMode = on.speedlogMode;
+  aids.speedlogVarM2PerS2 = s.speedlog.whiteVarM2PerS2;
+  aids.gyro = on.isOn(SensorId::Gyro);
+  aids.gyroVarRad2 = s.gyro.sdRad * s.gyro.sdRad;
+  aids.periodS = 1.0 / std::max(1e-3, std::min(s.speedlog.rateHz, s.gyro.rateHz));
+  return aids;
 }
 
 est::ttkf::State trueTrackState(const VesselTruth& own, const VesselTruth& target) {
@@ -74,7 +94,9 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
       gyro_(scenario.gyro, Rng(seed, kStreamGyro), 0, Rng(seed, kStreamGyroBias)),
       radar_(scenario.radar, Rng(seed, kStreamRadar), Rng(seed, kStreamClutter)),
       radarImageRng_(seed, kStreamRadarImage),
-      radarDisplayRng_(seed, kStreamRadarDisplay) {
+      radarDisplayRng_(seed, kStreamRadarDisplay),
+      deadReckoning_(
+          nav::deadReckoningRule(scenario.radar.sweepPeriodS, scenario.radarMatching.everySweeps)) {
   const std::array<std::pair<bool, double>, sensors::kOwnShipSensorCount> rates{
       {{scenario.gps.fitted, scenario.gps.rateHz},
        {scenario.loran.fitted, scenario.loran.rateHz},
@@ -309,6 +331,10 @@ SimFrame SimulationEngine::step() {
   }
   frame.trackEvents = manager_->takeEvents();
   frame.capacityWarning = manager_->capacityWarning();
+  for (const auto& u : frame.updates) deadReckoning_.addEpoch(u);
+  for (const auto& r : frame.radarFixes)
+    if (r.valid && r.update.applied()) deadReckoning_.addRadarFix(r.timeUs);
+  frame.deadReckoning = deadReckoning_.evaluate(end);
   return frame;
 }
 
@@ -366,24 +392,18 @@ void SimulationEngine::setSpeedlogMode(sensors::SpeedlogMode mode) {
   if (scenario_.speedlog.fitted) scenario_.speedlog.mode.overrideFrom(commandTimeUs(), mode);
 }
 
-void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
-  // Seed 004 (docs/radar_matching.md): the picture of the sweep that ends at t, simulated from the
-  // true motion, matched to the chart from the DRKF's estimate and applied to it as a fix at t.
+RadarPicture SimulationEngine::sweepPicture(TimeUs t, std::optional<double> lastHeadingRad, bool matchNow) {
+  // The picture of the sweep that ends at t, simulated from the true motion.
   const RadarMatchingSpec& m = scenario_.radarMatching;
   const double T = scenario_.radar.sweepPeriodS;
   const VesselTruth& tr = truth_.state();
-  const std::optional<double> lastHeading = lastSweepHeadingRad_;
-  lastSweepHeadingRad_ = tr.headingRad;
-  if (!scenario_.radar.power.at(t)) return;
-  const bool matchNow = m.active.at(t) && coast_ && !coast_->empty() && ++sweepIndex_ % m.everySweeps == 0;
-  if (!matchNow && !picturesWanted_) return;
   static const radar::Coastline kNoCoast{std::vector<radar::CoastSegment>{}};
   const radar::Coastline& coast = coast_ ? *coast_ : kNoCoast;
   radar::SweepPose truePose;
   truePose.startUs = t - fromSeconds(T);
   truePose.periodS = T;
   truePose.velocity = {tr.groundVxMps(), tr.groundVyMps()};
-  truePose.turnRateRadPerS = lastHeading ? angleDiff(tr.headingRad, *lastHeading) / T : 0.0;
+  truePose.turnRateRadPerS = lastHeadingRad ? angleDiff(tr.headingRad, *lastHeadingRad) / T : 0.0;
   truePose.position = est::Vec<2>(tr.position.xM, tr.position.yM) - truePose.velocity * T;
   truePose.headingRad = tr.headingRad - truePose.turnRateRadPerS * T;
   std::vector<radar::RadarTarget> targets;
@@ -392,11 +412,7 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
     const auto& p = targets_[i].state().position;
     targets.push_back({est::Vec<2>(p.xM, p.yM), 25.0});
   }
-  radar::RadarImageParams ip;
-  ip.azimuths = m.azimuths;
-  ip.rangeBins = m.rangeBins;
-  ip.maxRangeM = m.maxRangeM;
-  ip.beamWidthRad = degToRad(m.beamWidthDeg);
+  const radar::RadarImageParams ip = imageParamsOf(m);
   const auto image = std::make_shared<const radar::PolarImage>(
       radar::simulateRadarImage(coast, targets, truePose, ip, matchNow ? radarImageRng_ : radarDisplayRng_));
   // The estimated pose over the same sweep: the DRKF's position, velocity over ground and heading
@@ -415,9 +431,26 @@ void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
   const double vx = x[est::drkf::kVelX], vy = x[est::drkf::kVelY];
   estPose.turnRateRadPerS = std::hypot(vx, vy) > 0.5 ? motion[2] : 0.0;
   estPose.headingRad = bearingOf(vx, vy) - estPose.turnRateRadPerS * T;
-  frame.radarPicture = RadarPicture{t, image, estPose, ip.maxRangeM};
+  return RadarPicture{t, image, estPose, ip.maxRangeM};
+}
+
+void SimulationEngine::matchRadar(TimeUs t, SimFrame& frame) {
+  // Seed 004 (docs/radar_matching.md): the picture of the sweep that ends at t, matched to the chart
+  // from the DRKF's estimate and applied to it as a fix at t.
+  const RadarMatchingSpec& m = scenario_.radarMatching;
+  const std::optional<double> lastHeading = lastSweepHeadingRad_;
+  lastSweepHeadingRad_ = truth_.state().headingRad;
+  if (!scenario_.radar.power.at(t)) return;
+  const bool matchNow = m.active.at(t) && coast_ && !coast_->empty() && ++sweepIndex_ % m.everySweeps == 0;
+  if (!matchNow && !picturesWanted_) return;
+  frame.radarPicture = sweepPicture(t, lastHeading, matchNow);
   if (!matchNow) return;
-  const std::vector<radar::EchoPoint> echoes = radar::extractEchoes(*image, ip.azStepRad(), {});
+  const radar::PolarImage& image = *frame.radarPicture->image;
+  const radar::SweepPose& estPose = frame.radarPicture->estimatedPose;
+  const est::Vec<2> estPos(drkf_->belief().x[est::drkf::kPosX], drkf_->belief().x[est::drkf::kPosY]);
+  const double T = scenario_.radar.sweepPeriodS;
+  const radar::RadarImageParams ip = imageParamsOf(m);
+  const std::vector<radar::EchoPoint> echoes = radar::extractEchoes(image, ip.azStepRad(), {});
   radar::MatchParams mp;
   mp.rejectDistanceM = m.rejectDistanceM;
   // An echo point's error: the sensor's, plus the picture's own resolution (a range bin; half the

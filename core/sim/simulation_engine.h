@@ -7,6 +7,8 @@
 #include <optional>
 #include <vector>
 
+#include "navigation/dead_reckoning_monitor.h"
+#include "navigation/dr_horizon.h"
 #include "navigation/drkf.h"
 #include "radar/coastline.h"
 #include "radar/radar_image.h"
@@ -97,6 +99,8 @@ struct SimFrame {
   std::vector<SweepSnapshot> sweeps;         ///< sweeps that ended during this cycle
   std::vector<track::TrackEvent> trackEvents;
   bool capacityWarning = false;
+  /// Dead reckoning at timeUs: no recent position fix (nav::DeadReckoningMonitor's rule).
+  nav::DeadReckoningStatus deadReckoning;
 };
 
 /// Truth of own ship and a target in the TTKF's coordinates (own acceleration: through the water,
@@ -116,6 +120,8 @@ class SimulationEngine {
   [[nodiscard]] const geo::LocalFrame& frame() const { return frame_; }
   [[nodiscard]] const nav::Drkf& drkf() const { return *drkf_; }
   [[nodiscard]] const track::TrackManager& trackers() const { return *manager_; }
+  /// When own ship has been dead reckoning so far (evaluated at the end of every step).
+  [[nodiscard]] const nav::DeadReckoningMonitor& deadReckoning() const { return deadReckoning_; }
 
   /// Operator commands, applied between steps. Manual acquisition of the plot nearest to a point.
   std::optional<int> acquireAt(const geo::GridPoint& p) { return manager_->acquire(p.xM, p.yM); }
@@ -173,6 +179,7 @@ class SimulationEngine {
   void radarPlot(const PendingPlot& p, SimFrame& frame);
   void advanceTargetsTo(TimeUs t);
   void matchRadar(TimeUs t, SimFrame& frame);
+  RadarPicture sweepPicture(TimeUs t, std::optional<double> lastHeadingRad, bool matchNow);
   [[nodiscard]] track::OwnShipInput ownShipInput() const;
 
   Scenario scenario_;
@@ -199,9 +206,14 @@ class SimulationEngine {
   bool picturesWanted_ = false;
   long sweepIndex_ = 0;
   std::optional<double> lastSweepHeadingRad_;
+  nav::DeadReckoningMonitor deadReckoning_;
 };
 
 /// The DRKF configuration a scenario implies (the filter is tuned with the sensors' specifications).
 nav::DrkfConfig drkfConfigFor(const Scenario& s);
+
+/// The aids dead reckoning goes on with under the given sensor states (for nav::timeToPositionLimitS):
+/// the speedlog and gyro when on, with the scenario's noise, at the slower of their rates.
+nav::DeadReckoningAids deadReckoningAidsFor(const Scenario& s, const SensorStates& on);
 
 }  // namespace reckoner::sim

@@ -110,6 +110,7 @@ OwnShipFilterRun runOwnShipFilters(const Scenario& scenario, std::uint64_t seed)
   }
   run.counters = engine.drkf().counters();
   run.trackCounters = engine.trackers().counters();
+  run.deadReckoning = engine.deadReckoning().intervals();
   run.wallTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

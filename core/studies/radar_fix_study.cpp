@@ -50,12 +50,6 @@ void scoreFix(const RadarFixReport& r, const SimFrame& f, RunOut& o) {
 }
 }  // namespace
 
-est::Vec<3> radarFixError(const RadarFixReport& r, const SimFrame& f) {
-  const est::Vec<3> err(r.fixPosition[0] - f.truth.position.xM, r.fixPosition[1] - f.truth.position.yM,
-                        angleDiff(r.fixHeadingRad, f.truth.headingRad));
-  return err - r.motionSensitivity * (est::drkf::sweepMotionOf(f.trueState, f.shipMotion) - r.assumedMotion);
-}
-
 RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const radar::Coastline> coast,
                                std::shared_ptr<const radar::LandMask> land, bool matching, int runs,
                                int threads, std::uint64_t seed) {

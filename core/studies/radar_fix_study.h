@@ -35,11 +35,6 @@ struct RadarFixStudy {
   double fixNees = 0.0, fixPositionNees = 0.0, fixHeadingNees = 0.0;  ///< 3, 2 and 1 dof
 };
 
-/// A radar fix's error against the frame's truth (position grid m, heading rad), less what the error of
-/// the motion it was placed with explains (S times the true minus the assumed velocity and turn rate):
-/// the part its covariance claims. For fixes taken at the frame's time.
-est::Vec<3> radarFixError(const RadarFixReport& fix, const SimFrame& frame);
-
 /// `runs` runs (seeds seed, seed + 1, ...) on `threads` threads, with radar matching on or off.
 RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const radar::Coastline> coast,
                                std::shared_ptr<const radar::LandMask> land, bool matching, int runs,

@@ -17,7 +17,8 @@
 
 namespace reckoner::ui {
 
-/// Own ship at one output step: truth and DRKF estimate in the grid frame, with standard deviations.
+/// Own ship at one output step: truth and DRKF estimate in the grid frame, with standard deviations
+/// (sim::OwnShipRow and sim::OwnShipDetailRow as the plots take them).
 struct OwnSample {
   double tS = 0.0;
   std::array<double, 2> truePos{}, estPos{};  ///< grid m
@@ -28,11 +29,12 @@ struct OwnSample {
   std::array<double, 2> sdCurrent{}, sdLoran{};
   double trueLogBias = 0.0, estLogBias = 0.0;  ///< speedlog error, m/s
   double sdLogBias = 0.0;
-  double nees = 0.0;      ///< 11-state NEES against the truth
+  double nees = 0.0;      ///< the DRKF's NEES against the truth (ownship.csv's nees)
   double error95M = 0.0;  ///< semi-major axis of the 95% position ellipse
 };
 
-/// A track at the end of a sweep, with the truth of the target it follows (when it follows one).
+/// A track at the end of a sweep, with the truth of the target it follows (when it follows one), from its
+/// sim::TrackRow.
 struct TrackSample {
   double tS = 0.0;
   int trackId = 0;
@@ -40,7 +42,9 @@ struct TrackSample {
   bool hasTruth = false;
   std::array<double, 2> estPos{}, estVel{}, sdPos{}, sdVel{};  ///< grid, target absolute
   std::array<double, 2> truePos{}, trueVel{};
-  double nees = 0.0;         ///< 4 dof: target position and velocity
+  /// NEES of the target's position and velocity (4 dof), not targets.csv's 12-state nees
+  /// (docs/outputs.md, "Two track NEES").
+  double positionVelocityNees4 = 0.0;
   bool manoeuvring = false;  ///< input estimation's flag at this sweep end
 };
 
@@ -58,7 +62,8 @@ struct LastFix {
   bool accepted = false;
 };
 
-/// A radar picture matched to the chart (seed 004): the fix it gave against the truth at its time.
+/// A radar picture matched to the chart (seed 004): the fix it gave against the truth at its time
+/// (sim::RadarFixRow in degrees).
 struct RadarFixSample {
   double tS = 0.0;
   bool informative = false, applied = false;
@@ -100,7 +105,7 @@ struct LiveFrame {
   std::vector<track::TrackEvent> events;  ///< track events since the previous emitted frame
   std::array<LastFix, 2> lastFix{};       ///< GPS, Loran-C
   std::array<BlockStatus, 5> blocks{};    ///< per nav::DrkfBlock
-  bool positionFixUsed = true;            ///< a GPS or Loran-C position was applied recently
+  bool positionFixUsed = true;            ///< not frame.deadReckoning.active (a recent position fix)
   std::optional<double> drHorizonS;       ///< time until the 95% error exceeds the limit (DR only)
   double drLimitM = 0.0;
   double error95M = 0.0;

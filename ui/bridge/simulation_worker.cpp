@@ -1,14 +1,12 @@
 #include "ui/bridge/simulation_worker.h"
 
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <exception>
 
 #include "charts/radar/radar_contours.h"
 #include "common/angles.h"
-#include "navigation/dr_horizon.h"
-#include "studies/radar_fix_study.h"
+#include "sim/run_rows.h"
 
 namespace reckoner::ui {
 namespace {
@@ -16,98 +14,72 @@ constexpr qint64 kTickMs = 10;
 constexpr qint64 kStepBudgetNs = 8'000'000;        // per tick: the worker stays responsive to commands
 constexpr qint64 kMinEmitIntervalNs = 33'000'000;  // <= 30 frames per second
 constexpr double kMaxBacklogS = 2.0;               // wall seconds of simulated time the clock may run ahead
-constexpr double kFixRecentS = 3.0;                // a position fix this recent means "not dead reckoning"
 constexpr int kSweepsShown = 6;
-constexpr double kDrHorizonMaxS = 4.0 * 3600.0;
 constexpr qint64 kRasterIntervalNs = 100'000'000;  // radar pictures rasterised at most 10 times a second
 constexpr double kChartRadiusM = 100000.0;         // contours and land taken within this of the origin
 
-/// NEES of a Gaussian error e with covariance P (LDLT solve; NaN when P is not positive definite).
-template <int N>
-double neesOf(const est::Vec<N>& e, const est::Mat<N>& P) {
-  const Eigen::LDLT<est::Mat<N>> ldlt(P);
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return std::nan("");
-  return e.dot(ldlt.solve(e));
-}
-
-RadarFixSample radarFixSampleOf(const sim::RadarFixReport& r, const sim::SimFrame& f) {
+// Rows (sim/run_rows.h) as the window's samples: conversions only, every figure is the row's.
+RadarFixSample radarFixSampleOf(const sim::RadarFixRow& r) {
   RadarFixSample s;
   s.tS = toSeconds(r.timeUs);
   s.informative = r.informative;
-  s.applied = r.update.applied();
+  s.applied = r.applied;
   s.echoes = r.echoes;
   s.used = r.used;
-  s.x = r.fixPosition[0];
-  s.y = r.fixPosition[1];
-  s.headingDeg = radToDeg(r.fixHeadingRad);
-  s.sdX = std::sqrt(r.covariance(0, 0));
-  s.sdY = std::sqrt(r.covariance(1, 1));
-  s.sdHeadingDeg = radToDeg(std::sqrt(r.covariance(2, 2)));
-  s.trueX = f.truth.position.xM;
-  s.trueY = f.truth.position.yM;
-  s.trueHeadingDeg = s.headingDeg - radToDeg(angleDiff(r.fixHeadingRad, f.truth.headingRad));
-  s.nees = neesOf<3>(sim::radarFixError(r, f), r.covariance);
-  s.rmsResidual = r.rmsNormalizedResidual;
-  s.nis = r.update.nis;
-  s.dim = r.update.dim;
+  s.x = r.xM;
+  s.y = r.yM;
+  s.headingDeg = radToDeg(r.headingRad);
+  s.sdX = r.sdXM;
+  s.sdY = r.sdYM;
+  s.sdHeadingDeg = radToDeg(r.sdHeadingRad);
+  s.trueX = r.trueXM;
+  s.trueY = r.trueYM;
+  s.trueHeadingDeg = radToDeg(r.trueHeadingRad);
+  s.nees = r.nees;
+  s.rmsResidual = r.rmsResidual;
+  s.nis = r.nis;
+  s.dim = r.dim;
   return s;
 }
 
-OwnSample ownSampleOf(const sim::SimFrame& f, const est::drkf::ProcessParams& process) {
-  using namespace est::drkf;
-  const State& x = f.estimate.x;
-  const Covariance& P = f.estimate.P;
-  const State& t = f.trueState;
+OwnSample ownSampleOf(const sim::OwnShipRow& r, const sim::OwnShipDetailRow& d) {
   OwnSample s;
-  s.tS = toSeconds(f.timeUs);
-  s.truePos = {t[kPosX], t[kPosY]};
-  s.estPos = {x[kPosX], x[kPosY]};
-  s.trueVel = {t[kVelX] + t[kCurX], t[kVelY] + t[kCurY]};
-  s.estVel = {x[kVelX] + x[kCurX], x[kVelY] + x[kCurY]};
-  s.sdPos = {std::sqrt(P(kPosX, kPosX)), std::sqrt(P(kPosY, kPosY))};
-  const est::Mat<4> g = nav::groundCovarianceOf(f.estimate);
-  s.sdVel = {std::sqrt(g(2, 2)), std::sqrt(g(3, 3))};
-  s.trueCurrent = {t[kCurX], t[kCurY]};
-  s.estCurrent = {x[kCurX], x[kCurY]};
-  s.trueLoran = {t[kLoranX], t[kLoranY]};
-  s.estLoran = {x[kLoranX], x[kLoranY]};
-  s.sdCurrent = {std::sqrt(P(kCurX, kCurX)), std::sqrt(P(kCurY, kCurY))};
-  s.sdLoran = {std::sqrt(P(kLoranX, kLoranX)), std::sqrt(P(kLoranY, kLoranY))};
-  s.sdLogBias = std::sqrt(P(kLogBias, kLogBias));
-  s.trueLogBias = t[kLogBias];
-  s.estLogBias = x[kLogBias];
-  s.nees = nav::drkfNees(t - x, P, process);
-  s.error95M = nav::positionError95M(f.estimate);
+  s.tS = toSeconds(r.timeUs);
+  s.truePos = {r.trueXM, r.trueYM};
+  s.estPos = {r.estXM, r.estYM};
+  s.trueVel = {r.trueVxMps, r.trueVyMps};
+  s.estVel = {r.estVxMps, r.estVyMps};
+  s.sdPos = {r.sdXM, r.sdYM};
+  s.sdVel = {r.sdVxMps, r.sdVyMps};
+  s.trueCurrent = {d.trueCurrentXMps, d.trueCurrentYMps};
+  s.estCurrent = {d.estCurrentXMps, d.estCurrentYMps};
+  s.sdCurrent = {d.sdCurrentXMps, d.sdCurrentYMps};
+  s.trueLoran = {d.trueLoranXM, d.trueLoranYM};
+  s.estLoran = {d.estLoranXM, d.estLoranYM};
+  s.sdLoran = {d.sdLoranXM, d.sdLoranYM};
+  s.trueLogBias = d.trueLogBiasMps;
+  s.estLogBias = d.estLogBiasMps;
+  s.sdLogBias = d.sdLogBiasMps;
+  s.nees = r.nees;
+  s.error95M = d.error95M;
   return s;
 }
 
-TrackSample trackSampleOf(const sim::TrackSnapshot& t, const sim::SweepSnapshot& sweep,
-                          const std::vector<sim::TargetSpec>& targets) {
-  namespace tk = est::ttkf;
+TrackSample trackSampleOf(const sim::TrackRow& r) {
   TrackSample s;
-  s.tS = toSeconds(sweep.timeUs);
-  s.trackId = t.trackId;
-  s.targetId = t.targetId;
-  s.manoeuvring = t.manoeuvring;
-  const auto& x = t.estimate.x;
-  const auto& P = t.estimate.P;
-  s.estPos = {x[tk::kTgtX], x[tk::kTgtY]};
-  s.estVel = {x[tk::kTgtVx], x[tk::kTgtVy]};
-  s.sdPos = {std::sqrt(P(tk::kTgtX, tk::kTgtX)), std::sqrt(P(tk::kTgtY, tk::kTgtY))};
-  s.sdVel = {std::sqrt(P(tk::kTgtVx, tk::kTgtVx)), std::sqrt(P(tk::kTgtVy, tk::kTgtVy))};
-  for (std::size_t i = 0; i < targets.size() && i < sweep.targets.size(); ++i) {
-    if (targets[i].id != t.targetId) continue;
-    const sim::VesselTruth& v = sweep.targets[i];
-    s.hasTruth = true;
-    s.truePos = {v.position.xM, v.position.yM};
-    s.trueVel = {v.groundVxMps(), v.groundVyMps()};
-    const std::array<int, 4> idx{tk::kTgtX, tk::kTgtY, tk::kTgtVx, tk::kTgtVy};
-    est::Vec<4> e(s.estPos[0] - s.truePos[0], s.estPos[1] - s.truePos[1], s.estVel[0] - s.trueVel[0],
-                  s.estVel[1] - s.trueVel[1]);
-    est::Mat<4> Ps;
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) Ps(r, c) = P(idx[r], idx[c]);
-    s.nees = neesOf<4>(e, Ps);
+  s.tS = toSeconds(r.timeUs);
+  s.trackId = r.trackId;
+  s.targetId = r.targetId;
+  s.manoeuvring = r.manoeuvring;
+  s.estPos = {r.estXM, r.estYM};
+  s.estVel = {r.estVxMps, r.estVyMps};
+  s.sdPos = {r.sdXM, r.sdYM};
+  s.sdVel = {r.sdVxMps, r.sdVyMps};
+  s.hasTruth = r.hasTruth;
+  if (r.hasTruth) {
+    s.truePos = {r.trueXM, r.trueYM};
+    s.trueVel = {r.trueVxMps, r.trueVyMps};
+    s.positionVelocityNees4 = r.positionVelocityNees4;
   }
   return s;
 }
@@ -135,7 +107,6 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
   }
   picture_.reset();
   match_.reset();
-  lastRadarFixS_ = -1e9;
   applyCharts();
   engine_->setRadarPicturesWanted(picturesWanted_);
   rate_ = 0.0;
@@ -146,7 +117,7 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
   plots_.clear();
   rateWindow_.clear();
   sweepCounter_ = 0;
-  drComputedAtS_ = -1e9;
+  drHorizon_ = nav::DeadReckoningHorizon{};
   emit loaded(engine_->scenario());
   // The first frame shows the state at t = 0 + one step, so the picture is never empty.
   stepEngine();
@@ -231,7 +202,10 @@ void SimulationWorker::stepEngine() {
 
 void SimulationWorker::absorb(sim::SimFrame&& f) {
   const auto& scenario = engine_->scenario();
-  pending_.ownHistory.push_back(ownSampleOf(f, engine_->drkf().config().process));
+  const geo::LocalFrame& geo = engine_->frame();
+  pending_.ownHistory.push_back(
+      ownSampleOf(sim::makeRow(f, geo, engine_->drkf().config().process), sim::ownShipDetailRow(f)));
+  pending_.error95M = pending_.ownHistory.back().error95M;
   if (seed002_) {
     seed002_->feed(f);
     pending_.seed002 = std::array<est::Gaussian<4>, 2>{seed002_->ground(sim::OwnShipFilter::Geodetic),
@@ -240,16 +214,11 @@ void SimulationWorker::absorb(sim::SimFrame&& f) {
   for (const auto& sweep : f.sweeps) {
     ++sweepCounter_;
     for (const auto& t : sweep.tracks)
-      pending_.trackHistory.push_back(trackSampleOf(t, sweep, scenario.targets));
+      pending_.trackHistory.push_back(trackSampleOf(sim::trackRow(sweep, t, scenario.targets, geo)));
   }
-  // Radar plots drawn where the radar puts them: relative to the estimated own-ship position.
-  const double cx = f.estimate.x[est::drkf::kPosX], cy = f.estimate.x[est::drkf::kPosY];
-  const double gamma = engine_->frame().gridInfo({cx, cy}).convergenceRad;
-  for (const auto& p : f.plots) {
-    const double gridBearing = p.bearingRad - gamma;
-    plots_.push_back({toSeconds(p.timeUs), cx + p.rangeM * std::sin(gridBearing),
-                      cy + p.rangeM * std::cos(gridBearing), sweepCounter_});
-  }
+  const std::vector<geo::GridPoint> placed = sim::plotPositionsFromEstimate(f, geo);
+  for (std::size_t i = 0; i < placed.size(); ++i)
+    plots_.push_back({toSeconds(f.plots[i].timeUs), placed[i].xM, placed[i].yM, sweepCounter_});
   while (!plots_.empty() && plots_.front().sweep < sweepCounter_ - kSweepsShown) plots_.pop_front();
   // Last fixes and the last report per measurement block.
   for (const auto& m : f.measurements) {
@@ -276,8 +245,7 @@ void SimulationWorker::absorb(sim::SimFrame&& f) {
   // indicative.
   for (const auto& r : f.radarFixes) {
     if (!r.valid) continue;
-    pending_.radarFixes.push_back(radarFixSampleOf(r, f));
-    if (pending_.radarFixes.back().applied) lastRadarFixS_ = toSeconds(r.timeUs);
+    pending_.radarFixes.push_back(radarFixSampleOf(sim::radarFixRow(r, f)));
     pending_.lastRadarFix = pending_.radarFixes.back();
     if (r.echoPoints.empty()) continue;
     auto shown = std::make_shared<RadarMatchShown>();
@@ -295,41 +263,11 @@ void SimulationWorker::absorb(sim::SimFrame&& f) {
 
 void SimulationWorker::updateDeadReckoning() {
   const sim::SimFrame& f = pending_.frame;
-  const double t = toSeconds(f.timeUs);
-  const auto recentAccepted = [&](nav::DrkfBlock b) {
-    const BlockStatus& s = pending_.blocks[static_cast<std::size_t>(b)];
-    return s.seen && s.accepted && t - s.tS <= kFixRecentS;
-  };
-  // A radar fix (seed 004) is a position fix too; they come every few sweeps.
-  const double radarFixRecentS = 4.0 * engine_->scenario().radar.sweepPeriodS *
-                                 std::max(1, engine_->scenario().radarMatching.everySweeps);
-  pending_.positionFixUsed = recentAccepted(nav::kGpsPosition) || recentAccepted(nav::kLoranPosition) ||
-                             t - lastRadarFixS_ <= radarFixRecentS;
-  pending_.error95M = nav::positionError95M(f.estimate);
+  pending_.positionFixUsed = !f.deadReckoning.active;
   pending_.drLimitM = drLimitM_;
-  if (pending_.positionFixUsed) {
-    pending_.drHorizonS.reset();
-    drComputedAtS_ = -1e9;
-    return;
-  }
-  // The horizon is recomputed every 5 simulated seconds or when the aids change.
-  if (t - drComputedAtS_ < 5.0 && f.sensors == drSensors_ && pending_.drHorizonS) {
-    pending_.drHorizonS = std::max(0.0, *pending_.drHorizonS - (t - drComputedAtS_));
-    drComputedAtS_ = t;
-    return;
-  }
-  const auto& sc = engine_->scenario();
-  nav::DeadReckoningAids aids;
-  aids.speedlog = f.sensors.isOn(sensors::SensorId::Speedlog);
-  aids.speedlogMode = f.sensors.speedlogMode;
-  aids.speedlogVarM2PerS2 = sc.speedlog.whiteVarM2PerS2;
-  aids.gyro = f.sensors.isOn(sensors::SensorId::Gyro);
-  aids.gyroVarRad2 = sc.gyro.sdRad * sc.gyro.sdRad;
-  aids.periodS = 1.0 / std::max(1e-3, std::min(sc.speedlog.rateHz, sc.gyro.rateHz));
-  pending_.drHorizonS = nav::timeToPositionLimitS(engine_->drkf(), aids, drLimitM_, kDrHorizonMaxS);
-  if (!pending_.drHorizonS) pending_.drHorizonS = kDrHorizonMaxS;  // shown as "> 4 h"
-  drComputedAtS_ = t;
-  drSensors_ = f.sensors;
+  pending_.drHorizonS =
+      drHorizon_.update(f.deadReckoning.active, f.timeUs, engine_->drkf(),
+                        sim::deadReckoningAidsFor(engine_->scenario(), f.sensors), drLimitM_);
 }
 
 void SimulationWorker::maybeEmit(bool force) {
@@ -489,8 +427,6 @@ void SimulationWorker::cancelTrack(int trackId) {
 void SimulationWorker::setDrLimit(double metres) {
   if (!(metres > 0.0) || !std::isfinite(metres)) return;
   drLimitM_ = metres;
-  drComputedAtS_ = -1e9;
-  pending_.drHorizonS.reset();
   dirty_ = true;
   maybeEmit(true);
 }

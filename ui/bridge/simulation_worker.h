@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "charts/model/chart_model.h"
+#include "navigation/dead_reckoning_monitor.h"
 #include "radar/land_mask.h"
 #include "ui/bridge/live_frame.h"
 
@@ -98,10 +99,8 @@ class SimulationWorker : public QObject {
   std::optional<sim::RadarPicture> picture_;  // latest, not yet rasterised
   qint64 rasterisedNs_ = 0;
   std::shared_ptr<const RadarMatchShown> match_;
-  double lastRadarFixS_ = -1e9;  // simulated time of the last radar fix the DRKF applied
-  double drLimitM_ = 185.2;      // 0.1 NM
-  double drComputedAtS_ = -1e9;
-  sim::SensorStates drSensors_{};
+  double drLimitM_ = 185.2;  // 0.1 NM
+  nav::DeadReckoningHorizon drHorizon_;
 };
 
 }  // namespace reckoner::ui

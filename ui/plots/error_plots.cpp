@@ -59,6 +59,61 @@ void forWindow(const std::vector<Sample>& samples, double t0, bool decimate, F&&
   if (n > 0 && (n - 1) % stride != 0) f(samples.back());
 }
 
+/// One sample's value of a plotted quantity: estimate, truth (NaN: none) and standard deviation.
+struct Estimate {
+  double est, truth, sd;
+};
+
+Estimate radarFixQuantity(const RadarFixSample& s, int q) {
+  switch (q) {
+    case 0:
+      return {s.x, s.trueX, s.sdX};
+    case 1:
+      return {s.y, s.trueY, s.sdY};
+    case 2:
+      return {s.headingDeg, s.trueHeadingDeg, s.sdHeadingDeg};
+    default:
+      return {s.rmsResidual, std::nan(""), std::nan("")};
+  }
+}
+
+Estimate ownQuantity(const OwnSample& s, int q) {
+  switch (q) {
+    case 0:
+      return {s.estPos[0], s.truePos[0], s.sdPos[0]};
+    case 1:
+      return {s.estPos[1], s.truePos[1], s.sdPos[1]};
+    case 2:
+      return {s.estVel[0], s.trueVel[0], s.sdVel[0]};
+    case 3:
+      return {s.estVel[1], s.trueVel[1], s.sdVel[1]};
+    case 4:
+      return {s.estCurrent[0], s.trueCurrent[0], s.sdCurrent[0]};
+    case 5:
+      return {s.estCurrent[1], s.trueCurrent[1], s.sdCurrent[1]};
+    case 6:
+      return {s.estLoran[0], s.trueLoran[0], s.sdLoran[0]};
+    case 7:
+      return {s.estLoran[1], s.trueLoran[1], s.sdLoran[1]};
+    default:
+      return {s.estLogBias, s.trueLogBias, s.sdLogBias};
+  }
+}
+
+Estimate trackQuantity(const TrackSample& s, int q) {
+  const double nan = std::nan("");
+  switch (q) {
+    case 0:
+      return {s.estPos[0], s.hasTruth ? s.truePos[0] : nan, s.sdPos[0]};
+    case 1:
+      return {s.estPos[1], s.hasTruth ? s.truePos[1] : nan, s.sdPos[1]};
+    case 2:
+      return {s.estVel[0], s.hasTruth ? s.trueVel[0] : nan, s.sdVel[0]};
+    default:
+      return {s.estVel[1], s.hasTruth ? s.trueVel[1] : nan, s.sdVel[1]};
+  }
+}
+
 void fitAxes(QChart* chart, const std::vector<QLineSeries*>& series) {
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
   for (const QLineSeries* s : series)
@@ -178,91 +233,28 @@ std::vector<ErrorPlots::Row> ErrorPlots::rows(std::vector<double>* nees, bool de
   if (!history_ || history_->empty()) return out;
   const double window = window_->currentData().toDouble();
   const int q = quantity_->currentIndex();
-  if (subject_ == Subject::OwnShip && q >= kFirstRadarQuantity) {
-    const auto& fixes = history_->radarFixes();
-    const double t0 = window > 0.0 && !fixes.empty() ? fixes.back().tS - window : -1e300;
-    const double nan = std::nan("");
-    forWindow(fixes, t0, decimate, [&](const RadarFixSample& s) {
-      switch (q - kFirstRadarQuantity) {
-        case 0:
-          out.push_back({s.tS, s.x, s.trueX, s.sdX});
-          break;
-        case 1:
-          out.push_back({s.tS, s.y, s.trueY, s.sdY});
-          break;
-        case 2:
-          out.push_back({s.tS, s.headingDeg, s.trueHeadingDeg, s.sdHeadingDeg});
-          break;
-        default:
-          out.push_back({s.tS, s.rmsResidual, nan, nan});
-          break;
-      }
-      if (nees) nees->push_back(s.nees);
+  // Calls forWindow over the window's samples, adding each one's row and NEES.
+  const auto walk = [&](const auto& samples, auto&& quantityOf, auto&& neesOf) {
+    const double t0 = window > 0.0 && !samples.empty() ? samples.back().tS - window : -1e300;
+    forWindow(samples, t0, decimate, [&](const auto& s) {
+      const Estimate v = quantityOf(s);
+      out.push_back({s.tS, v.est, v.truth, v.sd});
+      if (nees) nees->push_back(neesOf(s));
     });
-    return out;
-  }
-  if (subject_ == Subject::OwnShip) {
-    const auto& own = history_->own();
-    const double t0 = window > 0.0 && !own.empty() ? own.back().tS - window : -1e300;
-    forWindow(own, t0, decimate, [&](const OwnSample& s) {
-      Row r{s.tS, 0, 0, 0};
-      switch (q) {
-        case 0:
-          r = {s.tS, s.estPos[0], s.truePos[0], s.sdPos[0]};
-          break;
-        case 1:
-          r = {s.tS, s.estPos[1], s.truePos[1], s.sdPos[1]};
-          break;
-        case 2:
-          r = {s.tS, s.estVel[0], s.trueVel[0], s.sdVel[0]};
-          break;
-        case 3:
-          r = {s.tS, s.estVel[1], s.trueVel[1], s.sdVel[1]};
-          break;
-        case 4:
-          r = {s.tS, s.estCurrent[0], s.trueCurrent[0], s.sdCurrent[0]};
-          break;
-        case 5:
-          r = {s.tS, s.estCurrent[1], s.trueCurrent[1], s.sdCurrent[1]};
-          break;
-        case 6:
-          r = {s.tS, s.estLoran[0], s.trueLoran[0], s.sdLoran[0]};
-          break;
-        case 7:
-          r = {s.tS, s.estLoran[1], s.trueLoran[1], s.sdLoran[1]};
-          break;
-        default:
-          r = {s.tS, s.estLogBias, s.trueLogBias, s.sdLogBias};
-          break;
-      }
-      out.push_back(r);
-      if (nees) nees->push_back(s.nees);
-    });
-    return out;
-  }
-  if (!track_) return out;
-  const auto& hist = history_->track(*track_);
-  const double t0 = window > 0.0 && !hist.empty() ? hist.back().tS - window : -1e300;
-  forWindow(hist, t0, decimate, [&](const TrackSample& s) {
-    const double nan = std::nan("");
-    Row r{s.tS, 0, 0, 0};
-    switch (q) {
-      case 0:
-        r = {s.tS, s.estPos[0], s.hasTruth ? s.truePos[0] : nan, s.sdPos[0]};
-        break;
-      case 1:
-        r = {s.tS, s.estPos[1], s.hasTruth ? s.truePos[1] : nan, s.sdPos[1]};
-        break;
-      case 2:
-        r = {s.tS, s.estVel[0], s.hasTruth ? s.trueVel[0] : nan, s.sdVel[0]};
-        break;
-      default:
-        r = {s.tS, s.estVel[1], s.hasTruth ? s.trueVel[1] : nan, s.sdVel[1]};
-        break;
-    }
-    out.push_back(r);
-    if (nees) nees->push_back(s.hasTruth ? s.nees : nan);
-  });
+  };
+  if (subject_ == Subject::OwnShip && q >= kFirstRadarQuantity)
+    walk(
+        history_->radarFixes(),
+        [&](const RadarFixSample& s) { return radarFixQuantity(s, q - kFirstRadarQuantity); },
+        [](const RadarFixSample& s) { return s.nees; });
+  else if (subject_ == Subject::OwnShip)
+    walk(
+        history_->own(), [&](const OwnSample& s) { return ownQuantity(s, q); },
+        [](const OwnSample& s) { return s.nees; });
+  else if (track_)
+    walk(
+        history_->track(*track_), [&](const TrackSample& s) { return trackQuantity(s, q); },
+        [](const TrackSample& s) { return s.hasTruth ? s.positionVelocityNees4 : std::nan(""); });
   return out;
 }
 

@@ -19,7 +19,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config git
   libeigen3-dev libgeographiclib-dev
   qt6-base-dev qt6-charts-dev libqt6opengl6-dev libxkbcommon-dev qt6-qpa-plugins
-  libgdal-dev gdal-bin zlib1g-dev libbenchmark-dev
+  libgdal-dev gdal-bin zlib1g-dev libbenchmark-dev libcli11-dev
 )
 
 install_deps() {

@@ -17,6 +17,8 @@ endif()
 # libxkbcommon-dev, a known trap).
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets Charts Test)
 find_package(GDAL 3.6 REQUIRED)
+# reckoner-cli's command line (header-only; Debian's libcli11-dev).
+find_package(CLI11 CONFIG REQUIRED)
 
 if(RECKONER_BUILD_BENCH)
   find_package(benchmark REQUIRED)

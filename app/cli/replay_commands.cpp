@@ -1,0 +1,212 @@
+// replay --nmea FILE and export SCENARIO: recorded NMEA (and radar plots) through the DRKF and the
+// trackers, and a simulated run written as such a recording.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "cli/cli_options.h"
+#include "cli/commands.h"
+#include "common/angles.h"
+#include "common/time.h"
+#include "files/track_output.h"
+#include "io/error_line.h"
+#include "io/iso8601.h"
+#include "io/text_file.h"
+#include "io/text_format.h"
+#include "sim/nmea_export.h"
+#include "sim/replay.h"
+
+namespace reckoner::cli {
+namespace {
+
+// ---- replay --------------------------------------------------------------------------------------
+struct ReplayArgs {
+  std::optional<std::string> nmea, radar, config;
+  bool assumeAssociation = false;
+  double maxGapS = sim::ReplayOptions{}.maxGapS;
+  std::optional<double> variationDeg;
+  std::optional<std::string> date;
+  std::string profile;
+  std::string adaptiveGnss;
+  OutputArgs output;
+};
+
+/// --date YYYY-MM-DD as {year, month, day}.
+std::array<int, 3> parseDate(const std::string& date) {
+  const auto day = io::parseIso8601(date + "T00:00:00Z");
+  if (!day || date.size() != 10) throw UsageError("--date: expected YYYY-MM-DD, got " + io::quoted(date));
+  return {std::stoi(date.substr(0, 4)), std::stoi(date.substr(5, 2)), std::stoi(date.substr(8, 2))};
+}
+
+sim::ReplayOptions replayOptions(const ReplayArgs& a) {
+  sim::ReplayOptions o;
+  const auto profile = profileOf(a.profile);
+  if (a.config) {
+    o.settings = loadScenario(*a.config);
+    o.settingsName = *a.config;
+    o.originFromSettings = true;
+    if (profile) sim::applySensorProfile(o.settings, *profile);
+  } else {
+    o.settings = loadScenario("builtin:default");
+    // Recorded data come from real sensors: the realistic profile unless asked otherwise (paper: the
+    // default scenario's figures, seed 000's Table I).
+    sim::applySensorProfile(o.settings, profile.value_or(sim::SensorProfile::Realistic));
+    o.sweepFromPlots = true;  // no radar configured: the antenna's rotation as the plots show it
+  }
+  if (!o.settings.radar.fitted) {  // the radar noise a replay assumes without a configured radar
+    o.settings.radar.fitted = true;
+    o.settings.radar.rangeSdM = 20.0;
+    o.settings.radar.bearingSdRad = degToRad(0.5);
+  }
+  o.assumeAssociation = a.assumeAssociation;
+  if (!a.adaptiveGnss.empty()) o.settings.filter.adaptiveGnssNoise = a.adaptiveGnss == "on";
+  o.maxGapS = a.maxGapS;
+  if (a.variationDeg) o.variationDeg = *a.variationDeg;
+  if (a.date) o.date = parseDate(*a.date);
+  return o;
+}
+
+void printReplayInput(const sim::ReplayResult& r) {
+  const auto& st = r.stats;
+  std::printf(
+      "  NMEA: %ld lines, %ld sentences used, %ld skipped (%ld comments, %ld bad checksum, %ld unknown, %ld "
+      "proprietary, "
+      "%ld malformed, %ld untimed, %ld time jumps, %ld unusable, %ld not GNSS fixes, %ld implausible, %ld "
+      "without variation); %ld standby, %ld repeated, %ld not used; %ld replayed out of file order\n",
+      st.nmeaLines, st.sentencesUsed, st.nmeaSkipped(), st.comments, st.badChecksum, st.unknownSentences,
+      st.proprietary, st.malformed, st.untimed, st.timeJumps, st.unusable, st.notGnss, st.implausible,
+      st.noVariation, st.standby, st.repeated, st.notUsed, st.reordered);
+  const double span = r.own.empty() ? 0.0 : toSeconds(r.own.back().timeUs - r.own.front().timeUs);
+  for (const auto& src : r.sources) {
+    if (src.used + src.standby + src.repeated == 0) continue;
+    std::printf("    %-14s %-9s %6ld used %6ld standby, active %3.0f%%, clock %+.2f s%s\n",
+                src.source.c_str(), src.quantity.c_str(), src.used, src.standby,
+                span > 0 ? 100.0 * std::min(1.0, src.activeS / span) : 0.0, src.clockOffsetS,
+                src.clockCorrected ? " (corrected)" : "");
+  }
+}
+
+void printReplay(const sim::ReplayResult& r, const ReplayArgs& a, const std::string& out) {
+  const auto& st = r.stats;
+  const bool radar = a.radar.has_value();
+  std::printf("Reckoner replay of %s%s%s from %s\n", a.nmea->c_str(), radar ? " and " : "",
+              radar ? a.radar->c_str() : "", io::formatIso8601(r.utc0).c_str());
+  printReplayInput(r);
+  std::printf("  %ld own-ship epochs (%ld before the first fix), origin %s %s\n", st.epochs,
+              st.epochsBeforeFix, io::formatLatitude(r.origin.latDeg).c_str(),
+              io::formatLongitude(r.origin.lonDeg).c_str());
+  std::printf("  DRKF updates accepted/gated/failed:");
+  for (int b = 0; b < nav::kDrkfBlockCount; ++b) {
+    const auto& c = r.updates[static_cast<std::size_t>(b)];
+    std::printf(" %s %ld/%ld/%ld", nav::blockName(static_cast<nav::DrkfBlock>(b)), c.accepted, c.gated,
+                c.failed);
+  }
+  std::printf("; restarts: %ld after a gap, %ld after failures\n", st.restartsAfterGap,
+              st.restartsAfterFailure);
+  if (radar)
+    std::printf(
+        "  radar: %ld lines, %ld plots, %ld bad, %ld duplicates, %ld time jumps; %ld tracks started, %ld "
+        "confirmed (%s)\n",
+        st.radarLines, st.radarPlots, st.radarBad, st.radarDuplicates, st.radarTimeJumps,
+        r.tracking.tracksStarted, r.tracking.tracksConfirmed,
+        a.assumeAssociation ? "association by target_id" : "nearest neighbour");
+  if (!r.own.empty()) {
+    const auto& last = r.own.back();
+    std::printf("  final estimate %s %s, position sd %.1f m\n",
+                io::formatLatitude(last.estimate.latDeg).c_str(),
+                io::formatLongitude(last.estimate.lonDeg).c_str(),
+                std::hypot(last.estimate.sdXM, last.estimate.sdYM));
+  }
+  std::printf("  wrote %s/ownship.csv%s and %s/summary.json\n", out.c_str(),
+              radar ? (", " + out + "/targets.csv").c_str() : "", out.c_str());
+}
+
+int replayCommand(const ReplayArgs& a) {
+  if (!a.nmea) throw UsageError("--nmea FILE is required");
+  const sim::ReplayOptions o = replayOptions(a);
+  const std::string out = prepareOutDir(a.output);
+  const std::string nmea = io::readTextFile(*a.nmea);
+  std::optional<std::string> radar;
+  if (a.radar) radar = io::readTextFile(*a.radar);
+  const sim::ReplayResult r = sim::replay(nmea, *a.nmea, radar ? &*radar : nullptr, a.radar.value_or(""), o);
+  for (const auto& w : r.warnings) std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
+  io::writeReplayOwnShipCsv(out + "/ownship.csv", r);
+  if (radar) io::writeReplayTargetsCsv(out + "/targets.csv", r);
+  const std::string summary = io::replaySummaryJson(r, *a.nmea);
+  io::writeTextFile(out + "/summary.json", summary);
+  printSummary(a.output, summary);
+  if (wantsTable(a.output)) printReplay(r, a, out);
+  return 0;
+}
+
+void addReplay(CLI::App& root, Commands& out) {
+  auto a = std::make_shared<ReplayArgs>();
+  CLI::App* app =
+      root.add_subcommand("replay", "recorded NMEA 0183 (and radar plots) through the DRKF and the trackers");
+  addText(*app, "nmea", a->nmea, "FILE", "the NMEA 0183 log, required");
+  addText(*app, "radar", a->radar, "FILE.csv", "radar plots (docs/outputs.md, radar.csv)");
+  addText(*app, "config", a->config, "SCENARIO",
+          "settings (sensors, filter, radar, origin) from this scenario; default builtin:default with the "
+          "realistic profile");
+  addFlag(*app, "assume-association", a->assumeAssociation,
+          "associate plots to tracks by the file's target_id (else nearest neighbour)");
+  addReal(*app, "max-gap", a->maxGapS, 1.0, 1e7, "S",
+          "no data for longer than this restarts the DRKF, seconds");
+  addText(*app, "date", a->date, "YYYY-MM-DD", "the day, for a log without dates");
+  addReal(*app, "variation", a->variationDeg, -180.0, 180.0, "DEG",
+          "magnetic variation, degrees east positive, when the file gives none");
+  addProfile(*app, a->profile, "sensor profile (default realistic, or the --config scenario's own figures)");
+  addChoice(*app, "adaptive-gnss", {"on", "off"}, a->adaptiveGnss,
+            "scale the receiver's position noise by a variational-Bayes estimate (default: the settings')");
+  addOutputOptions(*app, a->output, Summary::Json, "ownship.csv, summary.json, targets.csv with --radar");
+  out.push_back(
+      {app, [a] { return replayCommand(*a); }, "replay takes no positional arguments (use --nmea FILE)"});
+}
+
+// ---- export --------------------------------------------------------------------------------------
+struct ExportArgs {
+  std::string scenario;
+  std::optional<std::uint64_t> seed;
+  std::string date = "2026-01-01";
+  OutputArgs output;
+};
+
+int exportCommand(const ExportArgs& a) {
+  if (a.scenario.empty()) throw UsageError("export needs exactly one SCENARIO");
+  const sim::Scenario s = loadScenario(a.scenario);
+  const std::uint64_t seed = a.seed.value_or(s.seed);
+  const auto utc0 = io::parseIso8601(a.date + "T00:00:00Z");
+  if (!utc0) throw UsageError("--date: expected YYYY-MM-DD, got " + io::quoted(a.date));
+  const std::string out = prepareOutDir(a.output);
+  const auto e = sim::exportRun(s, seed, *utc0);
+  io::writeTextFile(out + "/ownship.nmea", e.nmea);
+  io::writeTextFile(out + "/radar.csv", e.radarCsv);
+  if (wantsTable(a.output))
+    std::printf("wrote %s/ownship.nmea and %s/radar.csv (%s, seed %llu, from %sT00:00:00Z)\n", out.c_str(),
+                out.c_str(), s.name.c_str(), static_cast<unsigned long long>(seed), a.date.c_str());
+  return 0;
+}
+
+void addExport(CLI::App& root, Commands& out) {
+  auto a = std::make_shared<ExportArgs>();
+  CLI::App* app =
+      root.add_subcommand("export", "a simulated run as a recording: NMEA 0183 and radar plots (CSV)");
+  addScenarioArgument(*app, a->scenario);
+  addSeed(*app, a->seed, "the scenario's");
+  addValue(*app, "date", "YYYY-MM-DD", "the UTC day the run starts at midnight of (default 2026-01-01)",
+           [p = a.get()](const std::string& t) { p->date = t; });
+  addOutputOptions(*app, a->output, Summary::None, "ownship.nmea, radar.csv");
+  out.push_back({app, [a] { return exportCommand(*a); }, "export needs exactly one SCENARIO"});
+}
+
+}  // namespace
+
+void addReplayCommands(CLI::App& root, Commands& out) {
+  addReplay(root, out);
+  addExport(root, out);
+}
+
+}  // namespace reckoner::cli

@@ -2,23 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
+
+#include "core/common/angles.h"
 
 namespace reckoner::charts {
 namespace {
 constexpr double kEarthRadiusM = 6378137.0;  // WGS-84 equatorial radius: the sphere of web/ECDIS Mercator
 constexpr double kMaxLatDeg = 85.0;
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 double mercatorY(double latDeg) {
-  const double lat = std::clamp(latDeg, -kMaxLatDeg, kMaxLatDeg) * kDeg;
-  return std::log(std::tan(std::numbers::pi / 4.0 + lat / 2.0));
+  const double lat = degToRad(std::clamp(latDeg, -kMaxLatDeg, kMaxLatDeg));
+  return std::log(std::tan(kPi / 4.0 + lat / 2.0));
 }
 }  // namespace
 
 MercatorPoint toMercator(const LatLon& p) {
-  return {p.lonDeg * kDeg, mercatorY(p.latDeg)};
+  return {degToRad(p.lonDeg), mercatorY(p.latDeg)};
 }
 
 Viewport::Viewport(LatLon centre, double scaleDenominator, int widthPx, int heightPx, double pixelSizeMm,
@@ -32,17 +32,17 @@ Viewport::Viewport(LatLon centre, double scaleDenominator, int widthPx, int heig
   if (!(scaleDenominator > 0.0) || widthPx <= 0 || heightPx <= 0 || !(pixelSizeMm > 0.0) ||
       std::abs(centre.latDeg) > kMaxLatDeg || !std::isfinite(centre.lonDeg) || !std::isfinite(rotationRad))
     throw std::invalid_argument("viewport: scale, size and pixel size must be positive, |latitude| <= 85");
-  cx_ = centre.lonDeg * kDeg;
+  cx_ = degToRad(centre.lonDeg);
   cy_ = mercatorY(centre.latDeg);
   // A ground distance d at the centre latitude is d / (R cos(lat)) Mercator units and d / (N p) pixels.
-  pxPerUnit_ = kEarthRadiusM * std::cos(centre.latDeg * kDeg) / (scale_ * pixelSizeM_);
+  pxPerUnit_ = kEarthRadiusM * std::cos(degToRad(centre.latDeg)) / (scale_ * pixelSizeM_);
   cosR_ = std::cos(rotation_);
   sinR_ = std::sin(rotation_);
 }
 
 ScreenPoint Viewport::toScreen(const LatLon& p) const {
   // East and north offsets in pixels, then rotated so that the bearing `rotation` points up.
-  const double e = (p.lonDeg * kDeg - cx_) * pxPerUnit_;
+  const double e = (degToRad(p.lonDeg) - cx_) * pxPerUnit_;
   const double n = (mercatorY(p.latDeg) - cy_) * pxPerUnit_;
   const double right = e * cosR_ - n * sinR_;
   const double up = e * sinR_ + n * cosR_;
@@ -82,7 +82,10 @@ LatLon Viewport::toLatLon(const ScreenPoint& s) const {
   const double n = -right * sinR_ + up * cosR_;
   const double lon = cx_ + e / pxPerUnit_;
   const double y = cy_ + n / pxPerUnit_;
-  return {(2.0 * std::atan(std::exp(y)) - std::numbers::pi / 2.0) / kDeg, lon / kDeg};
+  // Divided by the radians in a degree (not radToDeg's multiplication by 180 / pi): the same
+  // arithmetic as ever, so picks and visible bounds keep their last bits.
+  constexpr double kRadPerDeg = degToRad(1.0);
+  return {(2.0 * std::atan(std::exp(y)) - kPi / 2.0) / kRadPerDeg, lon / kRadPerDeg};
 }
 
 double Viewport::metresPerPixel() const {

@@ -141,11 +141,20 @@ struct Descriptions {
   mutable std::size_t hints[kHints] = {};
 };
 
-/// Reads the record at `offset` into `fields` (data views into `bytes`). `descriptions` is null for
-/// the DDR. Returns the problem, if any.
-std::optional<Problem> readRecord(std::string_view bytes, std::size_t offset, std::size_t number_, bool isDdr,
-                                  const Descriptions* descriptions, std::vector<Field>& fields,
-                                  Layout& layout) {
+/// A record's leader, read and checked, and where the record lies in the file.
+struct Leader {
+  std::size_t offset = 0;  ///< of the record in the file
+  std::size_t number = 0;  ///< 1-based record number (the DDR is 1)
+  std::size_t length = 0;  ///< declared record length; 0: given by the directory alone
+  std::size_t base = 0;    ///< base address of the field area
+  std::size_t sizeLength = 0, sizePosition = 0, sizeTag = 0;  ///< the directory's entry map
+};
+
+/// Reads and checks the 24-byte leader of the record at `offset`: its length, identifier, base
+/// address and entry map, and that the file holds the directory and the declared length. The
+/// problem, if any.
+std::optional<Problem> readLeader(std::string_view bytes, std::size_t offset, std::size_t number_, bool isDdr,
+                                  Leader& out) {
   const std::size_t remaining = bytes.size() - offset;
   if (remaining < kLeaderSize)
     return Problem{bytes.size(), number_, true, "in its 24-byte leader, which starts at " + at(offset)};
@@ -188,10 +197,89 @@ std::optional<Problem> readRecord(std::string_view bytes, std::size_t offset, st
   if (length > remaining)
     return Problem{bytes.size(), number_, true,
                    "which starts at " + at(offset) + " and declares " + withSeparators(length) + " bytes"};
-  const std::string_view record(bytes.data() + offset, length == 0 ? remaining : length);
+  out = Leader{offset, number_, length, base, sizeLength, sizePosition, sizeTag};
+  return std::nullopt;
+}
+
+/// Reads directory entry `e` (0-based) of `record` and the field it points to into `f`: the entry's
+/// tag and digits, the field's place (at `next`, the end of the fields before it, within the `area`
+/// bytes of the field area), its terminator and, in data records, its description and format; its
+/// length (data and terminator) into `len`. `fileSize` is the whole file's. The problem, if any.
+std::optional<Problem> readEntry(std::size_t fileSize, std::string_view record, const Leader& l,
+                                 std::size_t e, std::size_t next, std::size_t area,
+                                 const Descriptions* descriptions, Field& f, std::size_t& len) {
+  const auto bad = [&](std::size_t where, std::string what) {
+    return std::optional<Problem>(problemAt(where, l.number, std::move(what)));
+  };
+  const std::size_t offset = l.offset, base = l.base;
+  const std::size_t entrySize = l.sizeTag + l.sizeLength + l.sizePosition;
+  const std::size_t entryOffset = kLeaderSize + e * entrySize;
+  const char* const entry = record.data() + entryOffset;
+  const std::string_view tag(entry, l.sizeTag);
+  len = number(std::string_view(entry + l.sizeTag, l.sizeLength));
+  const std::size_t pos = number(std::string_view(entry + l.sizeTag + l.sizeLength, l.sizePosition));
+  if (!descriptions)  // in data records, a tag the DDR describes is a good one
+    for (const char c : tag)
+      if (c <= ' ' || c >= '\x7f')
+        return bad(offset + entryOffset,
+                   "directory entry " + std::to_string(e + 1) + " has the tag " + io::quoted(tag));
+  if (len == kNotANumber || pos == kNotANumber)
+    return bad(offset + entryOffset, "directory entry " + std::to_string(e + 1) + " " +
+                                         io::quoted(std::string_view(entry, entrySize)) +
+                                         " does not give the field's length and position as digits");
+  if (pos != next)
+    return bad(offset + entryOffset, "field " + io::quoted(tag) + " is at position " + std::to_string(pos) +
+                                         " of the field area, the fields before it end at " +
+                                         std::to_string(next));
+  if (len == 0) return bad(offset + entryOffset, "field " + io::quoted(tag) + " has length 0");
+  if (len > area - next) {
+    if (l.length == 0)  // the length comes from the directory alone: the file ends inside the field
+      return Problem{fileSize, l.number, true,
+                     "in field " + io::quoted(tag) + "; the record starts at " + at(offset)};
+    return bad(offset + entryOffset, "field " + io::quoted(tag) + " (" + std::to_string(len) +
+                                         " bytes at position " + std::to_string(pos) +
+                                         ") runs past the end of its record");
+  }
+  const char* const raw = record.data() + base + next;
+  f.tag = tag;
+  if (raw[len - 1] == kFieldTerminator) {
+    f.data = std::string_view(raw, len - 1);
+  } else if (len >= 2 && raw[len - 1] == '\0' && raw[len - 2] == kFieldTerminator) {
+    f.data = std::string_view(raw, len - 2);
+    f.wide = true;
+  } else {
+    return bad(offset + base + next + len - 1,
+               "field " + io::quoted(tag) + " does not end with a field terminator");
+  }
+  if (descriptions) {
+    f.description = descriptions->find(tag, e);
+    if (!f.description)
+      return bad(offset + entryOffset, "field " + io::quoted(tag) + " is not described by the file's DDR");
+    const FieldDescription& d = *f.description;
+    const std::size_t size = f.data.size();
+    const bool fits =
+        d.fixedWidth > 0 && !f.wide && (d.repeating ? size % d.fixedWidth == 0 : size == d.fixedWidth);
+    if (!fits && !d.formats.empty())  // the common case above is decided without a call
+      if (std::string why = checkFieldData(f); !why.empty()) return bad(offset + base + next, std::move(why));
+  }
+  return std::nullopt;
+}
+
+/// Reads the record at `offset` into `fields` (data views into `bytes`). `descriptions` is null for
+/// the DDR. Returns the problem, if any.
+std::optional<Problem> readRecord(std::string_view bytes, std::size_t offset, std::size_t number_, bool isDdr,
+                                  const Descriptions* descriptions, std::vector<Field>& fields,
+                                  Layout& layout) {
+  Leader l;
+  if (auto p = readLeader(bytes, offset, number_, isDdr, l)) return p;
+  const auto bad = [&](std::size_t where, std::string what) {
+    return std::optional<Problem>(problemAt(where, number_, std::move(what)));
+  };
+  const std::size_t base = l.base, length = l.length;
+  const std::string_view record(bytes.data() + offset, length == 0 ? bytes.size() - offset : length);
   if (record[base - 1] != kFieldTerminator)
     return bad(offset + base - 1, "the directory does not end with a field terminator");
-  const std::size_t entrySize = sizeTag + sizeLength + sizePosition;
+  const std::size_t entrySize = l.sizeTag + l.sizeLength + l.sizePosition;
   const std::size_t directorySize = base - 1 - kLeaderSize;
   if (directorySize == 0 || directorySize % entrySize != 0)
     return bad(offset + kLeaderSize, "the directory's " + std::to_string(directorySize) +
@@ -201,57 +289,9 @@ std::optional<Problem> readRecord(std::string_view bytes, std::size_t offset, st
   const std::size_t area = record.size() - base;  // bytes the field area may use
   std::size_t next = 0;                           // where the next field must start in the field area
   for (std::size_t e = 0; e < directorySize / entrySize; ++e) {
-    const std::size_t entryOffset = kLeaderSize + e * entrySize;
-    const char* const entry = record.data() + entryOffset;
-    const std::string_view tag(entry, sizeTag);
-    const std::size_t len = number(std::string_view(entry + sizeTag, sizeLength));
-    const std::size_t pos = number(std::string_view(entry + sizeTag + sizeLength, sizePosition));
-    if (!descriptions)  // in data records, a tag the DDR describes is a good one
-      for (const char c : tag)
-        if (c <= ' ' || c >= '\x7f')
-          return bad(offset + entryOffset,
-                     "directory entry " + std::to_string(e + 1) + " has the tag " + io::quoted(tag));
-    if (len == kNotANumber || pos == kNotANumber)
-      return bad(offset + entryOffset, "directory entry " + std::to_string(e + 1) + " " +
-                                           io::quoted(std::string_view(entry, entrySize)) +
-                                           " does not give the field's length and position as digits");
-    if (pos != next)
-      return bad(offset + entryOffset, "field " + io::quoted(tag) + " is at position " + std::to_string(pos) +
-                                           " of the field area, the fields before it end at " +
-                                           std::to_string(next));
-    if (len == 0) return bad(offset + entryOffset, "field " + io::quoted(tag) + " has length 0");
-    if (len > area - next) {
-      if (length == 0)  // the length comes from the directory alone: the file ends inside the field
-        return Problem{bytes.size(), number_, true,
-                       "in field " + io::quoted(tag) + "; the record starts at " + at(offset)};
-      return bad(offset + entryOffset, "field " + io::quoted(tag) + " (" + std::to_string(len) +
-                                           " bytes at position " + std::to_string(pos) +
-                                           ") runs past the end of its record");
-    }
-    const char* const raw = record.data() + base + next;
     Field f;
-    f.tag = tag;
-    if (raw[len - 1] == kFieldTerminator) {
-      f.data = std::string_view(raw, len - 1);
-    } else if (len >= 2 && raw[len - 1] == '\0' && raw[len - 2] == kFieldTerminator) {
-      f.data = std::string_view(raw, len - 2);
-      f.wide = true;
-    } else {
-      return bad(offset + base + next + len - 1,
-                 "field " + io::quoted(tag) + " does not end with a field terminator");
-    }
-    if (descriptions) {
-      f.description = descriptions->find(tag, e);
-      if (!f.description)
-        return bad(offset + entryOffset, "field " + io::quoted(tag) + " is not described by the file's DDR");
-      const FieldDescription& d = *f.description;
-      const std::size_t size = f.data.size();
-      const bool fits =
-          d.fixedWidth > 0 && !f.wide && (d.repeating ? size % d.fixedWidth == 0 : size == d.fixedWidth);
-      if (!fits && !d.formats.empty())  // the common case above is decided without a call
-        if (std::string why = checkFieldData(f); !why.empty())
-          return bad(offset + base + next, std::move(why));
-    }
+    std::size_t len = 0;
+    if (auto p = readEntry(bytes.size(), record, l, e, next, area, descriptions, f, len)) return p;
     fields.push_back(f);
     next += len;
   }

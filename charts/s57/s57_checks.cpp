@@ -144,107 +144,137 @@ FeatureKind ObjectClassKinds::kind(std::int64_t objl) const {
   return FeatureKind::Geo;
 }
 
+namespace {
+
+/// Where RCNM, RCID, RVER, RUIN and OBJL are in the FRID or VRID fields of one file.
+constexpr const char* kSubfields[5] = {"RCNM", "RCID", "RVER", "RUIN", "OBJL"};
+struct Indices {
+  const iso8211::FieldDescription* description = nullptr;
+  std::size_t at[5] = {};
+};
+
+/// Reads the DSID record (the first data record): name, edition, update, and the DSSI's counts into
+/// `out.declared`. "" or the problem.
+std::string readDataSetIdentification(const iso8211::Record& r, DataSetSummary& out) {
+  const iso8211::Field* key = r.key();
+  if (!key || key->tag != "DSID")
+    return "the first data record is not a data set identification (DSID): not an S-57 data set";
+  out.name = std::string(iso8211::textSubfield(*key, "DSNM").value_or(""));
+  out.edition = std::string(iso8211::textSubfield(*key, "EDTN").value_or(""));
+  out.update = std::string(iso8211::textSubfield(*key, "UPDN").value_or(""));
+  const iso8211::Field* dssi = r.find("DSSI");
+  if (!dssi) return "the DSID record has no data set structure information (DSSI)";
+  std::uint64_t* const targets[] = {&out.declared.meta,          &out.declared.cartographic,
+                                    &out.declared.geo,           &out.declared.collection,
+                                    &out.declared.isolatedNodes, &out.declared.connectedNodes,
+                                    &out.declared.edges,         &out.declared.faces};
+  const char* const names[] = {"NOMR", "NOCR", "NOGR", "NOLR", "NOIN", "NOCN", "NOED", "NOFA"};
+  for (std::size_t i = 0; i < 8; ++i) {
+    const auto v = iso8211::intSubfield(*dssi, names[i]);
+    if (!v || *v < 0) return std::string("the DSSI field's ") + names[i] + " does not decode";
+    *targets[i] = static_cast<std::uint64_t>(*v);
+  }
+  return {};
+}
+
+/// Counts a feature record by the kind of its object class into `held`.
+void countFeature(FeatureKind kind, RecordCounts& held) {
+  switch (kind) {
+    case FeatureKind::Meta:
+      ++held.meta;
+      break;
+    case FeatureKind::Cartographic:
+      ++held.cartographic;
+      break;
+    case FeatureKind::Collection:
+      ++held.collection;
+      break;
+    case FeatureKind::Geo:
+      ++held.geo;
+      break;
+  }
+}
+
+/// Counts a vector record by its RCNM into `held`; false for an RCNM that is no vector record's.
+bool countVector(std::int64_t rcnm, RecordCounts& held) {
+  switch (rcnm) {
+    case 110:
+      ++held.isolatedNodes;
+      return true;
+    case 120:
+      ++held.connectedNodes;
+      return true;
+    case 130:
+      ++held.edges;
+      return true;
+    case 140:
+      ++held.faces;
+      return true;
+    default:
+      return false;
+  }
+}
+
+/// Counts one feature (FRID) or vector (VRID) record whose key field is `key` into `out.held`, and
+/// with `keepRecords` keeps its identity and version. "" or the problem.
+std::string countRecord(const iso8211::Record& r, const iso8211::Field& key, bool feature, Indices& ix,
+                        const ObjectClassKinds& kinds, bool keepRecords, DataSetSummary& out) {
+  if (ix.description != key.description) {  // once per file and kind, not per record
+    ix.description = key.description;
+    for (std::size_t i = 0; i < 5; ++i) ix.at[i] = iso8211::subfieldIndex(*key.description, kSubfields[i]);
+  }
+  const auto rcnm = iso8211::intSubfield(key, ix.at[0]);
+  if (!rcnm) return "its " + std::string(key.tag) + " field does not decode";
+  RecordVersion v;
+  if (keepRecords) {  // the identity and version only matter to updates
+    const auto rcid = iso8211::intSubfield(key, ix.at[1]);
+    const auto rver = iso8211::intSubfield(key, ix.at[2]);
+    const auto ruin = iso8211::intSubfield(key, ix.at[3]);
+    if (!rcid || !rver || !ruin || *rcid < 0 || *rcid > 0xFFFFFFFF || *rver < 0 || *rver > 0xFFFF)
+      return "its " + std::string(key.tag) + " field does not decode";
+    v.rcnm = static_cast<std::uint8_t>(*rcnm & 0xFF);
+    v.rcid = static_cast<std::uint32_t>(*rcid);
+    v.rver = static_cast<std::uint32_t>(*rver);
+    v.ruin = static_cast<std::uint8_t>(*ruin & 0xFF);
+    v.record = r.number;
+    v.offset = r.offset;
+  }
+  if (feature) {
+    const auto objl = iso8211::intSubfield(key, ix.at[4]);
+    if (!objl) return "its FRID field has no object class (OBJL)";
+    if (*rcnm != 100) return "a feature record with RCNM " + std::to_string(*rcnm) + ", not 100";
+    countFeature(kinds.kind(*objl), out.held);
+  } else if (!countVector(*rcnm, out.held)) {
+    return "a vector record with RCNM " + std::to_string(*rcnm) + " (110, 120, 130 or 140 expected)";
+  }
+  if (keepRecords) out.records.push_back(v);
+  return {};
+}
+
+}  // namespace
+
 std::string summarise(std::string_view bytes, const ObjectClassKinds& kinds, DataSetSummary& out,
                       bool keepRecords) {
   out = DataSetSummary{};
   std::string problem;
   bool first = true;
-  // Where RCNM, RCID, RVER, RUIN and OBJL are in the FRID and VRID fields of this file.
-  static constexpr const char* kSubfields[5] = {"RCNM", "RCID", "RVER", "RUIN", "OBJL"};
-  struct Indices {
-    const iso8211::FieldDescription* description = nullptr;
-    std::size_t at[5] = {};
-  } frid, vrid;
+  Indices frid, vrid;
   const auto fail = [&](const iso8211::Record& r, std::string what) {
     problem = "record " + withSeparators(r.number) + " at byte " + withSeparators(r.offset) + ": " + what;
     return false;
   };
   const iso8211::WalkResult walked = iso8211::walk(bytes, [&](const iso8211::Record& r) {
-    const iso8211::Field* key = r.key();
     if (first) {
       first = false;
-      if (!key || key->tag != "DSID")
-        return fail(r, "the first data record is not a data set identification (DSID): not an S-57 data set");
-      out.name = std::string(iso8211::textSubfield(*key, "DSNM").value_or(""));
-      out.edition = std::string(iso8211::textSubfield(*key, "EDTN").value_or(""));
-      out.update = std::string(iso8211::textSubfield(*key, "UPDN").value_or(""));
-      const iso8211::Field* dssi = r.find("DSSI");
-      if (!dssi) return fail(r, "the DSID record has no data set structure information (DSSI)");
-      std::uint64_t* const targets[] = {&out.declared.meta,          &out.declared.cartographic,
-                                        &out.declared.geo,           &out.declared.collection,
-                                        &out.declared.isolatedNodes, &out.declared.connectedNodes,
-                                        &out.declared.edges,         &out.declared.faces};
-      const char* const names[] = {"NOMR", "NOCR", "NOGR", "NOLR", "NOIN", "NOCN", "NOED", "NOFA"};
-      for (std::size_t i = 0; i < 8; ++i) {
-        const auto v = iso8211::intSubfield(*dssi, names[i]);
-        if (!v || *v < 0) return fail(r, std::string("the DSSI field's ") + names[i] + " does not decode");
-        *targets[i] = static_cast<std::uint64_t>(*v);
-      }
-      return true;
+      std::string why = readDataSetIdentification(r, out);
+      return why.empty() || fail(r, std::move(why));
     }
+    const iso8211::Field* key = r.key();
     if (!key) return true;
     const bool feature = key->tag == "FRID";
     if (!feature && key->tag != "VRID") return true;  // DSPM and other data set records
-    Indices& ix = feature ? frid : vrid;
-    if (ix.description != key->description) {  // once per file and kind, not per record
-      ix.description = key->description;
-      for (std::size_t i = 0; i < 5; ++i) ix.at[i] = iso8211::subfieldIndex(*key->description, kSubfields[i]);
-    }
-    const auto rcnm = iso8211::intSubfield(*key, ix.at[0]);
-    if (!rcnm) return fail(r, "its " + std::string(key->tag) + " field does not decode");
-    RecordVersion v;
-    if (keepRecords) {  // the identity and version only matter to updates
-      const auto rcid = iso8211::intSubfield(*key, ix.at[1]);
-      const auto rver = iso8211::intSubfield(*key, ix.at[2]);
-      const auto ruin = iso8211::intSubfield(*key, ix.at[3]);
-      if (!rcid || !rver || !ruin || *rcid < 0 || *rcid > 0xFFFFFFFF || *rver < 0 || *rver > 0xFFFF)
-        return fail(r, "its " + std::string(key->tag) + " field does not decode");
-      v.rcnm = static_cast<std::uint8_t>(*rcnm & 0xFF);
-      v.rcid = static_cast<std::uint32_t>(*rcid);
-      v.rver = static_cast<std::uint32_t>(*rver);
-      v.ruin = static_cast<std::uint8_t>(*ruin & 0xFF);
-      v.record = r.number;
-      v.offset = r.offset;
-    }
-    if (feature) {
-      const auto objl = iso8211::intSubfield(*key, ix.at[4]);
-      if (!objl) return fail(r, "its FRID field has no object class (OBJL)");
-      if (*rcnm != 100) return fail(r, "a feature record with RCNM " + std::to_string(*rcnm) + ", not 100");
-      switch (kinds.kind(*objl)) {
-        case FeatureKind::Meta:
-          ++out.held.meta;
-          break;
-        case FeatureKind::Cartographic:
-          ++out.held.cartographic;
-          break;
-        case FeatureKind::Collection:
-          ++out.held.collection;
-          break;
-        case FeatureKind::Geo:
-          ++out.held.geo;
-          break;
-      }
-    } else {
-      switch (*rcnm) {
-        case 110:
-          ++out.held.isolatedNodes;
-          break;
-        case 120:
-          ++out.held.connectedNodes;
-          break;
-        case 130:
-          ++out.held.edges;
-          break;
-        case 140:
-          ++out.held.faces;
-          break;
-        default:
-          return fail(
-              r, "a vector record with RCNM " + std::to_string(*rcnm) + " (110, 120, 130 or 140 expected)");
-      }
-    }
-    if (keepRecords) out.records.push_back(v);
-    return true;
+    std::string why = countRecord(r, *key, feature, feature ? frid : vrid, kinds, keepRecords, out);
+    return why.empty() || fail(r, std::move(why));
   });
   if (walked.problem) return iso8211::describe(*walked.problem);
   if (!problem.empty()) return problem;

@@ -1,11 +1,6 @@
+// Loading cells: which files, read how (no blocking, bounded), checked how (structure, DSID counts, the
+// update sequence, catalogue CRCs) before GDAL reads them (gdal_reader.h); failures named per file.
 #include "charts/s57/s57_loader.h"
-
-#include <cpl_conv.h>
-#include <cpl_error.h>
-#include <cpl_vsi.h>
-#include <gdal.h>
-#include <ogr_api.h>
-#include <ogr_core.h>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -15,13 +10,13 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <mutex>
-#include <sstream>
+#include <optional>
 #include <system_error>
 
+#include "charts/s57/gdal_reader.h"
 #include "charts/s57/s57_checks.h"
 #include "io/error_line.h"
 #include "resources/embedded.h"
@@ -29,62 +24,6 @@
 namespace reckoner::charts {
 namespace fs = std::filesystem;
 namespace {
-
-/// Collects GDAL errors of the calling thread while alive (CPLPushErrorHandlerEx: per thread, so
-/// nothing reaches stderr behind the caller's back).
-class ErrorCapture {
- public:
-  ErrorCapture() { CPLPushErrorHandlerEx(&ErrorCapture::handler, this); }
-  ~ErrorCapture() { CPLPopErrorHandler(); }
-  ErrorCapture(const ErrorCapture&) = delete;
-  ErrorCapture& operator=(const ErrorCapture&) = delete;
-  /// The first error as GDAL wrote it: possibly several lines, possibly with raw input bytes.
-  [[nodiscard]] const std::string& firstError() const { return first_; }
-  /// The first error on one line (io::oneLine), with the /vsimem/ folder GDAL read from replaced by
-  /// the folder the files came from.
-  [[nodiscard]] std::string firstErrorLine(const std::string& memDir, const std::string& realDir) const {
-    std::string m = first_;
-    if (!memDir.empty())
-      for (std::size_t at = m.find(memDir); at != std::string::npos; at = m.find(memDir, at + realDir.size()))
-        m.replace(at, memDir.size(), realDir);
-    return io::oneLine(m);
-  }
-
- private:
-  static void CPL_STDCALL handler(CPLErr level, CPLErrorNum, const char* msg) {
-    auto* self = static_cast<ErrorCapture*>(CPLGetErrorHandlerUserData());
-    if (self && level >= CE_Failure && self->first_.empty()) self->first_ = msg ? msg : "unknown GDAL error";
-  }
-  std::string first_;
-};
-
-std::once_flag gdalInit;
-std::string catalogueDir;
-s57::ObjectClassKinds classKinds;  // from s57objectclasses.csv once the catalogue is found
-
-void initialiseGdal() {
-  std::call_once(gdalInit, [] {
-    GDALAllRegister();
-    // The S-57 catalogue: GDAL's own search first, then the usual data directories.
-    if (const char* found = CPLFindFile("gdal", "s57objectclasses.csv")) {
-      catalogueDir = fs::path(found).parent_path().string();
-    } else {
-      for (const char* dir : {"/usr/share/gdal", "/usr/local/share/gdal", "/usr/share/gdal/3.6"}) {
-        if (fs::exists(fs::path(dir) / "s57objectclasses.csv")) {
-          catalogueDir = dir;
-          CPLSetConfigOption("S57_CSV", dir);
-          break;
-        }
-      }
-    }
-    if (!catalogueDir.empty()) {
-      std::ifstream in(fs::path(catalogueDir) / "s57objectclasses.csv", std::ios::binary);
-      std::ostringstream text;
-      text << in.rdbuf();
-      classKinds = s57::ObjectClassKinds::fromCatalogue(text.str());
-    }
-  });
-}
 
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -111,119 +50,6 @@ std::vector<std::string> updateFiles(const fs::path& cell) {
   std::sort(out.begin(), out.end());
   return out;
 }
-
-const std::vector<std::string>& recordFields() {
-  static const std::vector<std::string> fields{"RCID", "PRIM", "GRUP", "OBJL",      "RVER",     "AGEN",
-                                               "FIDN", "FIDS", "LNAM", "LNAM_REFS", "FFPT_RIND"};
-  return fields;
-}
-
-void readRings(OGRGeometryH g, Geometry& out) {
-  const OGRwkbGeometryType t = wkbFlatten(OGR_G_GetGeometryType(g));
-  const auto addRing = [&](OGRGeometryH ring) {
-    std::vector<LatLon> pts;
-    const int n = OGR_G_GetPointCount(ring);
-    pts.reserve(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-      const LatLon p{OGR_G_GetY(ring, i), OGR_G_GetX(ring, i)};
-      pts.push_back(p);
-      out.bounds.add(p);
-    }
-    out.parts.push_back(std::move(pts));
-  };
-  if (t == wkbPolygon) {
-    out.polygonStarts.push_back(out.parts.size());
-    for (int r = 0; r < OGR_G_GetGeometryCount(g); ++r) addRing(OGR_G_GetGeometryRef(g, r));
-  } else if (t == wkbLineString) {
-    addRing(g);
-  } else if (t == wkbMultiPolygon || t == wkbMultiLineString || t == wkbGeometryCollection) {
-    for (int k = 0; k < OGR_G_GetGeometryCount(g); ++k) readRings(OGR_G_GetGeometryRef(g, k), out);
-  }
-}
-
-Geometry readGeometry(OGRGeometryH g, bool sounding) {
-  Geometry out;
-  if (!g) return out;
-  const OGRwkbGeometryType t = wkbFlatten(OGR_G_GetGeometryType(g));
-  if (t == wkbPoint || t == wkbMultiPoint) {
-    out.primitive = Primitive::Point;
-    std::vector<LatLon> pts;
-    const auto addPoint = [&](OGRGeometryH p) {
-      const LatLon ll{OGR_G_GetY(p, 0), OGR_G_GetX(p, 0)};
-      pts.push_back(ll);
-      out.bounds.add(ll);
-      if (sounding) out.depthsM.push_back(OGR_G_GetZ(p, 0));
-    };
-    if (t == wkbPoint) {
-      addPoint(g);
-    } else {
-      for (int k = 0; k < OGR_G_GetGeometryCount(g); ++k) addPoint(OGR_G_GetGeometryRef(g, k));
-    }
-    out.parts.push_back(std::move(pts));
-  } else if (t == wkbLineString || t == wkbMultiLineString) {
-    out.primitive = Primitive::Line;
-    readRings(g, out);
-  } else if (t == wkbPolygon || t == wkbMultiPolygon) {
-    out.primitive = Primitive::Area;
-    readRings(g, out);
-  }
-  return out;
-}
-
-std::optional<AttributeValue> readField(OGRFeatureH f, int i, OGRFieldDefnH def) {
-  if (!OGR_F_IsFieldSetAndNotNull(f, i)) return std::nullopt;
-  switch (OGR_Fld_GetType(def)) {
-    case OFTInteger:
-    case OFTInteger64:
-      return AttributeValue{static_cast<std::int64_t>(OGR_F_GetFieldAsInteger64(f, i))};
-    case OFTReal:
-      return AttributeValue{OGR_F_GetFieldAsDouble(f, i)};
-    case OFTIntegerList: {
-      int n = 0;
-      const int* v = OGR_F_GetFieldAsIntegerList(f, i, &n);
-      return AttributeValue{std::vector<std::int64_t>(v, v + n)};
-    }
-    case OFTStringList: {
-      // S-57 list attributes (COLOUR, STATUS, ...): enumerated values.
-      char** v = OGR_F_GetFieldAsStringList(f, i);
-      std::vector<std::int64_t> out;
-      for (int k = 0; v && v[k]; ++k) {
-        char* end = nullptr;
-        const long long x = std::strtoll(v[k], &end, 10);
-        if (end == v[k] || *end != '\0') return AttributeValue{std::string(OGR_F_GetFieldAsString(f, i))};
-        out.push_back(x);
-      }
-      return AttributeValue{out};
-    }
-    default:
-      return AttributeValue{std::string(OGR_F_GetFieldAsString(f, i))};
-  }
-}
-
-std::string fieldString(OGRFeatureH f, const char* name) {
-  const int i = OGR_F_GetFieldIndex(f, name);
-  return i >= 0 && OGR_F_IsFieldSetAndNotNull(f, i) ? std::string(OGR_F_GetFieldAsString(f, i))
-                                                    : std::string();
-}
-
-int fieldInt(OGRFeatureH f, const char* name) {
-  const int i = OGR_F_GetFieldIndex(f, name);
-  return i >= 0 && OGR_F_IsFieldSetAndNotNull(f, i) ? OGR_F_GetFieldAsInteger(f, i) : 0;
-}
-
-struct DatasetCloser {
-  void operator()(void* ds) const {
-    if (ds) GDALClose(ds);
-  }
-};
-}  // namespace
-
-std::string s57CatalogueDirectory() {
-  initialiseGdal();
-  return catalogueDir;
-}
-
-namespace {
 
 /// The reason of a ChartLoadError without its "file: " prefix.
 std::string reasonOf(const ChartLoadError& e) {
@@ -291,41 +117,6 @@ std::string readChartFile(const std::string& path) {
   bytes.resize(got);
   return bytes;
 }
-
-/// Files GDAL reads from memory: the bytes we checked, under /vsimem/, removed again at the end.
-class MemoryFiles {
- public:
-  MemoryFiles() {
-    static std::atomic<unsigned long> counter{0};
-    dir_ = "/vsimem/reckoner/load-" + std::to_string(++counter) + "/";
-  }
-  ~MemoryFiles() {
-    for (const auto& n : names_) VSIUnlink(n.c_str());
-  }
-  MemoryFiles(const MemoryFiles&) = delete;
-  MemoryFiles& operator=(const MemoryFiles&) = delete;
-  /// The /vsimem/ path of `name` over `bytes`, which must outlive this object; throws naming `file`.
-  std::string add(const std::string& name, const std::string& bytes, const std::string& file) {
-    const std::string path = dir_ + name;
-    VSILFILE* fp =
-        VSIFileFromMemBuffer(path.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
-                             static_cast<vsi_l_offset>(bytes.size()), FALSE);
-    if (!fp) throw ChartLoadError(file, "cannot be handed to GDAL in memory");
-    VSIFCloseL(fp);
-    names_.push_back(path);
-    return path;
-  }
-  void remove(const std::string& name) {
-    const std::string path = dir_ + name;
-    VSIUnlink(path.c_str());
-    names_.erase(std::remove(names_.begin(), names_.end(), path), names_.end());
-  }
-  [[nodiscard]] const std::string& dir() const { return dir_; }
-
- private:
-  std::string dir_;
-  std::vector<std::string> names_;
-};
 
 /// The catalogues (CATALOG.031) read during one loadCharts() call, each read once.
 struct CatalogueCache {
@@ -401,14 +192,9 @@ std::optional<s57::CatalogueEntry> catalogueEntry(const fs::path& file, const Lo
   return std::nullopt;
 }
 
-/// Reads a cell with GDAL at `gdalPath` (a /vsimem/ file), reporting it as `path`; `memDir` and
-/// `realDir` translate the names in GDAL's messages.
-CellPtr readCell(const std::string& path, const std::string& gdalPath, const std::string& memDir,
-                 const std::string& realDir, std::vector<std::string> updatesApplied);
-
 /// Checks a cell's bytes (structure, DSID counts); throws naming `path`.
 void checkCellBytes(const std::string& path, std::string_view bytes, s57::DataSetSummary& summary) {
-  if (std::string why = s57::summarise(bytes, classKinds, summary, false); !why.empty())
+  if (std::string why = s57::summarise(bytes, gdalio::classKinds(), summary, false); !why.empty())
     throw ChartLoadError(path, why);
   if (std::string why = s57::checkCounts(summary); !why.empty()) throw ChartLoadError(path, why);
 }
@@ -419,87 +205,129 @@ std::string threeDigits(int n) {
   return buf;
 }
 
-CellPtr loadFromDisk(const std::string& path, const LoadContext& ctx) {
-  const fs::path cellPath(path);
-  const std::vector<std::string> files = updateFiles(cellPath);
-  const std::string base = readChartFile(path);
-  s57::DataSetSummary baseSummary;
-  if (std::string why = s57::summarise(base, classKinds, baseSummary, !files.empty()); !why.empty())
-    throw ChartLoadError(path, why);
-  if (std::string why = s57::checkCounts(baseSummary); !why.empty()) throw ChartLoadError(path, why);
-  if (const auto entry = catalogueEntry(cellPath, ctx))
-    if (std::string why = s57::checkCrc(base, *entry); !why.empty()) throw ChartLoadError(path, why);
-  const std::string cellName =
-      s57::cellNameOf(baseSummary).empty() ? cellPath.stem().string() : s57::cellNameOf(baseSummary);
+/// A base cell read and checked: its bytes, what the walk found, its name and update number.
+struct BaseCell {
+  std::string bytes;
+  s57::DataSetSummary summary;
+  std::string name;  // DSID's DSNM stem, else the file's
+  int update = 0;    // the UPDN of the cell itself (above 0 for a re-issue)
+};
 
-  // The updates, in sequence, up to the first bad one: each file by itself first, then their records
-  // against the cell's.
-  const int baseUpdate = std::max(0, static_cast<int>(std::strtol(baseSummary.update.c_str(), nullptr, 10)));
-  struct Pending {
-    std::size_t file;  // index in `files`
-    std::string bytes;
-    s57::DataSetSummary summary;
-  };
+/// An update file that passed its checks, waiting for GDAL.
+struct Pending {
+  std::size_t file;  // index in the cell's update files
+  std::string bytes;
+  s57::DataSetSummary summary;
+};
+
+/// The first update left out, and why.
+struct Bad {
+  fs::path at;
+  std::string problem;
+  std::size_t after = 0;  // update files after it, also left out
+  bool cancels = false;
+};
+
+/// What the checks keep of a cell's updates: the good ones in sequence, up to the first bad one.
+struct UpdateSequence {
   std::vector<Pending> good;
-  struct Bad {
-    fs::path at;
-    std::string problem;
-    std::size_t after = 0;  // update files after it, also left out
-    bool cancels = false;
-  };
   std::optional<Bad> bad;
-  int expected = baseUpdate + 1;
-  for (std::size_t i = 0; i < files.size() && !bad; ++i) {
+};
+
+/// Reads and checks the base cell at `path`: structure, DSID counts, the CRC where a catalogue lists
+/// it. Throws naming the cell (or the catalogue, in strict mode).
+BaseCell checkBase(const std::string& path, bool hasUpdates, const LoadContext& ctx) {
+  const fs::path cellPath(path);
+  BaseCell base;
+  base.bytes = readChartFile(path);
+  if (std::string why = s57::summarise(base.bytes, gdalio::classKinds(), base.summary, hasUpdates);
+      !why.empty())
+    throw ChartLoadError(path, why);
+  if (std::string why = s57::checkCounts(base.summary); !why.empty()) throw ChartLoadError(path, why);
+  if (const auto entry = catalogueEntry(cellPath, ctx))
+    if (std::string why = s57::checkCrc(base.bytes, *entry); !why.empty()) throw ChartLoadError(path, why);
+  base.name =
+      s57::cellNameOf(base.summary).empty() ? cellPath.stem().string() : s57::cellNameOf(base.summary);
+  base.update = std::max(0, static_cast<int>(std::strtol(base.summary.update.c_str(), nullptr, 10)));
+  return base;
+}
+
+/// Reads and checks update `number` of the cell by itself (structure, the cell's name, edition and
+/// number, CRC) into `p`: "" or the problem. Throws only the catalogue's error, in strict mode.
+std::string checkUpdateFile(const fs::path& file, int number, const BaseCell& base, const LoadContext& ctx,
+                            Pending& p, bool& cancels) {
+  std::string problem;
+  try {
+    p.bytes = readChartFile(file.string());
+    problem = s57::summarise(p.bytes, gdalio::classKinds(), p.summary);
+    if (problem.empty()) problem = s57::checkUpdate(base.summary, p.summary, number, &cancels);
+    if (problem.empty())
+      if (const auto entry = catalogueEntry(file, ctx)) problem = s57::checkCrc(p.bytes, *entry);
+  } catch (const ChartLoadError& e) {
+    if (e.file() != file.string()) throw;  // the catalogue's, in strict mode
+    problem = reasonOf(e);
+  }
+  return problem;
+}
+
+/// The updates, in sequence, up to the first bad one: each file by itself first, then their records
+/// against the cell's.
+UpdateSequence checkUpdates(const fs::path& cellPath, const std::vector<std::string>& files,
+                            const BaseCell& base, const LoadContext& ctx) {
+  UpdateSequence seq;
+  int expected = base.update + 1;
+  for (std::size_t i = 0; i < files.size() && !seq.bad; ++i) {
     const int number = std::stoi(files[i].substr(files[i].size() - 3));
-    if (number <= baseUpdate) continue;  // a re-issued cell already holds it
+    if (number <= base.update) continue;  // a re-issued cell already holds it
     const fs::path file = cellPath.parent_path() / files[i];
     if (number != expected) {
-      bad = Bad{cellPath.parent_path() / (cellPath.stem().string() + "." + threeDigits(expected)),
-                "is missing, and " + files[i] + " is present (updates apply in sequence)", files.size() - i};
+      seq.bad =
+          Bad{cellPath.parent_path() / (cellPath.stem().string() + "." + threeDigits(expected)),
+              "is missing, and " + files[i] + " is present (updates apply in sequence)", files.size() - i};
       break;
     }
     Pending p{i, {}, {}};
-    std::string problem;
     bool cancels = false;
-    try {
-      p.bytes = readChartFile(file.string());
-      problem = s57::summarise(p.bytes, classKinds, p.summary);
-      if (problem.empty()) problem = s57::checkUpdate(baseSummary, p.summary, number, &cancels);
-      if (problem.empty())
-        if (const auto entry = catalogueEntry(file, ctx)) problem = s57::checkCrc(p.bytes, *entry);
-    } catch (const ChartLoadError& e) {
-      if (e.file() != file.string()) throw;  // the catalogue's, in strict mode
-      problem = reasonOf(e);
-    }
-    if (!problem.empty()) {
-      bad = Bad{file, problem, files.size() - i - 1, cancels};
+    if (std::string problem = checkUpdateFile(file, number, base, ctx, p, cancels); !problem.empty()) {
+      seq.bad = Bad{file, problem, files.size() - i - 1, cancels};
       break;
     }
-    good.push_back(std::move(p));
+    seq.good.push_back(std::move(p));
     ++expected;
   }
-  if (!good.empty()) {
+  if (!seq.good.empty()) {
     std::vector<const s57::DataSetSummary*> summaries;
-    for (const Pending& p : good) summaries.push_back(&p.summary);
-    s57::RecordIndex index(baseSummary, summaries);
-    for (std::size_t k = 0; k < good.size(); ++k)
-      if (std::string why = index.apply(good[k].summary); !why.empty()) {
-        bad = Bad{cellPath.parent_path() / files[good[k].file], why, files.size() - good[k].file - 1};
-        good.resize(k);
+    for (const Pending& p : seq.good) summaries.push_back(&p.summary);
+    s57::RecordIndex index(base.summary, summaries);
+    for (std::size_t k = 0; k < seq.good.size(); ++k)
+      if (std::string why = index.apply(seq.good[k].summary); !why.empty()) {
+        seq.bad =
+            Bad{cellPath.parent_path() / files[seq.good[k].file], why, files.size() - seq.good[k].file - 1};
+        seq.good.resize(k);
         break;
       }
   }
-  if (bad) {
-    if (bad->cancels || !ctx.notes) throw ChartLoadError(bad->at.string(), bad->problem);
-    std::string note = bad->problem + "; " + cellName + " is loaded at update " +
-                       std::to_string(baseUpdate + static_cast<int>(good.size())) + " without it";
-    if (bad->after > 0) note += " and the " + std::to_string(bad->after) + " update file(s) after it";
-    ctx.notes->push_back({bad->at.string(), io::oneLine(note)});
-  }
+  return seq;
+}
 
-  // GDAL reads the bytes we checked, from memory.
-  MemoryFiles mem;
-  const std::string gdalPath = mem.add(cellPath.filename().string(), base, path);
+/// A bad update: thrown when it cancels the cell or nothing is noted, else a note saying where the
+/// cell stands without it.
+void reportBadUpdate(const Bad& bad, const BaseCell& base, std::size_t goodCount, const LoadContext& ctx) {
+  if (bad.cancels || !ctx.notes) throw ChartLoadError(bad.at.string(), bad.problem);
+  std::string note = bad.problem + "; " + base.name + " is loaded at update " +
+                     std::to_string(base.update + static_cast<int>(goodCount)) + " without it";
+  if (bad.after > 0) note += " and the " + std::to_string(bad.after) + " update file(s) after it";
+  ctx.notes->push_back({bad.at.string(), io::oneLine(note)});
+}
+
+/// GDAL reads the bytes we checked, from memory: the base and the good updates. Where GDAL stops
+/// before the last update, the one after the update it reached failed; the cell is read again
+/// without it and the ones after it.
+CellPtr readWithUpdates(const std::string& path, const BaseCell& base, const std::vector<std::string>& files,
+                        const std::vector<Pending>& good, const LoadContext& ctx) {
+  const fs::path cellPath(path);
+  gdalio::MemoryFiles mem;
+  const std::string gdalPath = mem.add(cellPath.filename().string(), base.bytes, path);
   std::vector<std::string> applied;
   for (const Pending& p : good) {
     mem.add(files[p.file], p.bytes, (cellPath.parent_path() / files[p.file]).string());
@@ -508,23 +336,30 @@ CellPtr loadFromDisk(const std::string& path, const LoadContext& ctx) {
   const std::string realDir =
       cellPath.parent_path().empty() ? std::string() : cellPath.parent_path().string() + "/";
   for (;;) {
-    CellPtr cell = readCell(path, gdalPath, mem.dir(), realDir, applied);
+    CellPtr cell = gdalio::readCell(path, gdalPath, mem.dir(), realDir, applied);
     const int reached = cell->info().updateNumber;
-    if (applied.empty() || reached >= baseUpdate + static_cast<int>(applied.size())) return cell;
-    // GDAL stopped before the last update: the one after `reached` failed. Read again without it.
-    const auto failed = static_cast<std::size_t>(std::max(0, reached - baseUpdate));
+    if (applied.empty() || reached >= base.update + static_cast<int>(applied.size())) return cell;
+    const auto failed = static_cast<std::size_t>(std::max(0, reached - base.update));
     const std::string file = (cellPath.parent_path() / applied[failed]).string();
     const std::string problem =
         "GDAL's S-57 reader could not apply it (the cell stayed at update " + std::to_string(reached) + ")";
     if (!ctx.notes) throw ChartLoadError(file, problem);
     std::string note =
-        problem + "; " + cellName + " is loaded at update " + std::to_string(reached) + " without it";
+        problem + "; " + base.name + " is loaded at update " + std::to_string(reached) + " without it";
     if (applied.size() - failed > 1)
       note += " and the " + std::to_string(applied.size() - failed - 1) + " update file(s) after it";
     ctx.notes->push_back({file, io::oneLine(note)});
     for (std::size_t k = failed; k < applied.size(); ++k) mem.remove(applied[k]);
     applied.resize(failed);
   }
+}
+
+CellPtr loadFromDisk(const std::string& path, const LoadContext& ctx) {
+  const std::vector<std::string> files = updateFiles(fs::path(path));
+  const BaseCell base = checkBase(path, !files.empty(), ctx);
+  const UpdateSequence seq = checkUpdates(fs::path(path), files, base, ctx);
+  if (seq.bad) reportBadUpdate(*seq.bad, base, seq.good.size(), ctx);
+  return readWithUpdates(path, base, files, seq.good, ctx);
 }
 
 CellPtr loadBuiltin(const std::string& path) {
@@ -534,27 +369,17 @@ CellPtr loadBuiltin(const std::string& path) {
   if (!chart) throw ChartLoadError(path, "no such built-in chart (there is builtin:default)");
   // GDAL reads it from memory: a /vsimem/ file over the embedded bytes, made once.
   const std::string mem = "/vsimem/reckoner/" + name + "/" + name + ".000";
-  static std::mutex memMutex;
-  {
-    const std::lock_guard lock(memMutex);
-    VSIStatBufL st;
-    if (VSIStatL(mem.c_str(), &st) != 0) {
-      VSILFILE* fp =
-          VSIFileFromMemBuffer(mem.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(chart->text.data())),
-                               static_cast<vsi_l_offset>(chart->text.size()), FALSE);
-      if (!fp) throw ChartLoadError(path, "cannot open the embedded chart in memory");
-      VSIFCloseL(fp);
-    }
-  }
+  if (!gdalio::addStaticMemoryFile(mem, chart->text))
+    throw ChartLoadError(path, "cannot open the embedded chart in memory");
   // The same checks as any cell: the generator writes what a producer writes.
   s57::DataSetSummary summary;
   checkCellBytes(path, chart->text, summary);
-  return readCell(path, mem, "", "", {});
+  return gdalio::readCell(path, mem, "", "", {});
 }
 
 CellPtr loadCellWith(const std::string& path, const LoadContext& ctx) {
-  initialiseGdal();
-  if (catalogueDir.empty())
+  gdalio::initialise();
+  if (gdalio::catalogueDirectory().empty())
     throw ChartLoadError(path,
                          "GDAL's S-57 catalogue (s57objectclasses.csv) was not found; install gdal-data");
   if (path.rfind(kBuiltinPrefix, 0) == 0) return loadBuiltin(path);
@@ -597,72 +422,6 @@ std::vector<std::string> findCells(const std::string& path) {
   std::sort(out.begin(), out.end());
   return out;
 }
-
-namespace {
-CellPtr readCell(const std::string& path, const std::string& gdalPath, const std::string& memDir,
-                 const std::string& realDir, std::vector<std::string> updatesApplied) {
-  ErrorCapture errors;
-  const char* const drivers[] = {"S57", nullptr};
-  const char* const options[] = {
-      "UPDATES=APPLY",       "SPLIT_MULTIPOINT=OFF", "ADD_SOUNDG_DEPTH=OFF", "RETURN_PRIMITIVES=OFF",
-      "RETURN_LINKAGES=OFF", "LNAM_REFS=ON",         "RECODE_BY_DSSI=ON",    nullptr};
-  std::unique_ptr<void, DatasetCloser> ds(
-      GDALOpenEx(gdalPath.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, options, nullptr));
-  if (!ds) {
-    const std::string why = errors.firstErrorLine(memDir, realDir);
-    throw ChartLoadError(path, why.empty() ? "not an S-57 cell (GDAL's S57 driver cannot open it)"
-                                           : "not readable as S-57: " + why);
-  }
-  CellInfo info;
-  info.path = path;
-  info.name = fs::path(gdalPath).stem().string();
-  std::vector<ChartFeature> features;
-  const int layers = GDALDatasetGetLayerCount(ds.get());
-  for (int l = 0; l < layers; ++l) {
-    OGRLayerH layer = GDALDatasetGetLayer(ds.get(), l);
-    const std::string cls = OGR_L_GetName(layer);
-    OGRFeatureDefnH defn = OGR_L_GetLayerDefn(layer);
-    const int nFields = OGR_FD_GetFieldCount(defn);
-    OGR_L_ResetReading(layer);
-    while (OGRFeatureH f = OGR_L_GetNextFeature(layer)) {
-      if (cls == "DSID") {
-        const std::string dsnm = fieldString(f, "DSID_DSNM");
-        if (!dsnm.empty()) info.name = fs::path(dsnm).stem().string();
-        info.edition = fieldString(f, "DSID_EDTN");
-        info.updateNumber = fieldInt(f, "DSID_UPDN");
-        info.issueDate = fieldString(f, "DSID_ISDT");
-        info.updateDate = fieldString(f, "DSID_UADT");
-        info.agency = fieldInt(f, "DSID_AGEN");
-        info.intendedUsage = fieldInt(f, "DSID_INTU");
-        info.comment = fieldString(f, "DSID_COMT");
-        info.compilationScale = fieldInt(f, "DSPM_CSCL");
-        OGR_F_Destroy(f);
-        continue;
-      }
-      ChartFeature cf;
-      cf.objectClass = cls;
-      cf.objectCode = fieldInt(f, "OBJL");
-      cf.lnam = fieldString(f, "LNAM");
-      for (int i = 0; i < nFields; ++i) {
-        OGRFieldDefnH fd = OGR_FD_GetFieldDefn(defn, i);
-        const std::string name = OGR_Fld_GetNameRef(fd);
-        if (std::find(recordFields().begin(), recordFields().end(), name) != recordFields().end()) continue;
-        if (auto v = readField(f, i, fd)) cf.attributes.push_back({name, std::move(*v)});
-      }
-      cf.geometry = readGeometry(OGR_F_GetGeometryRef(f), cls == "SOUNDG");
-      features.push_back(std::move(cf));
-      OGR_F_Destroy(f);
-    }
-  }
-  if (!errors.firstError().empty())
-    throw ChartLoadError(path,
-                         "damaged (GDAL's S-57 reader: " + errors.firstErrorLine(memDir, realDir) + ")");
-  if (info.edition.empty())
-    throw ChartLoadError(path, "no data set identification (DSID): not an S-57 base cell");
-  info.updatesApplied = std::move(updatesApplied);
-  return std::make_shared<const ChartCell>(std::move(info), std::move(features));
-}
-}  // namespace
 
 LoadResult loadCharts(const std::vector<std::string>& paths, const LoadProgress& progress,
                       const std::atomic<bool>* cancel) {

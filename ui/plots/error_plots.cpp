@@ -174,73 +174,87 @@ void ErrorPlots::setTrack(std::optional<int> trackId) {
 }
 
 std::vector<ErrorPlots::Row> ErrorPlots::rows(std::vector<double>* nees, bool decimate) const {
-  std::vector<Row> out;
-  if (!history_ || history_->empty()) return out;
+  if (!history_ || history_->empty()) return {};
   const double window = window_->currentData().toDouble();
   const int q = quantity_->currentIndex();
-  if (subject_ == Subject::OwnShip && q >= kFirstRadarQuantity) {
-    const auto& fixes = history_->radarFixes();
-    const double t0 = window > 0.0 && !fixes.empty() ? fixes.back().tS - window : -1e300;
-    const double nan = std::nan("");
-    forWindow(fixes, t0, decimate, [&](const RadarFixSample& s) {
-      switch (q - kFirstRadarQuantity) {
-        case 0:
-          out.push_back({s.tS, s.x, s.trueX, s.sdX});
-          break;
-        case 1:
-          out.push_back({s.tS, s.y, s.trueY, s.sdY});
-          break;
-        case 2:
-          out.push_back({s.tS, s.headingDeg, s.trueHeadingDeg, s.sdHeadingDeg});
-          break;
-        default:
-          out.push_back({s.tS, s.rmsResidual, nan, nan});
-          break;
-      }
-      if (nees) nees->push_back(s.nees);
-    });
-    return out;
-  }
-  if (subject_ == Subject::OwnShip) {
-    const auto& own = history_->own();
-    const double t0 = window > 0.0 && !own.empty() ? own.back().tS - window : -1e300;
-    forWindow(own, t0, decimate, [&](const OwnSample& s) {
-      Row r{s.tS, 0, 0, 0};
-      switch (q) {
-        case 0:
-          r = {s.tS, s.estPos[0], s.truePos[0], s.sdPos[0]};
-          break;
-        case 1:
-          r = {s.tS, s.estPos[1], s.truePos[1], s.sdPos[1]};
-          break;
-        case 2:
-          r = {s.tS, s.estVel[0], s.trueVel[0], s.sdVel[0]};
-          break;
-        case 3:
-          r = {s.tS, s.estVel[1], s.trueVel[1], s.sdVel[1]};
-          break;
-        case 4:
-          r = {s.tS, s.estCurrent[0], s.trueCurrent[0], s.sdCurrent[0]};
-          break;
-        case 5:
-          r = {s.tS, s.estCurrent[1], s.trueCurrent[1], s.sdCurrent[1]};
-          break;
-        case 6:
-          r = {s.tS, s.estLoran[0], s.trueLoran[0], s.sdLoran[0]};
-          break;
-        case 7:
-          r = {s.tS, s.estLoran[1], s.trueLoran[1], s.sdLoran[1]};
-          break;
-        default:
-          r = {s.tS, s.estLogBias, s.trueLogBias, s.sdLogBias};
-          break;
-      }
-      out.push_back(r);
-      if (nees) nees->push_back(s.nees);
-    });
-    return out;
-  }
-  if (!track_) return out;
+  if (subject_ == Subject::OwnShip && q >= kFirstRadarQuantity)
+    return radarFixRows(q - kFirstRadarQuantity, window, nees, decimate);
+  if (subject_ == Subject::OwnShip) return ownRows(q, window, nees, decimate);
+  if (!track_) return {};
+  return trackRows(q, window, nees, decimate);
+}
+
+std::vector<ErrorPlots::Row> ErrorPlots::radarFixRows(int q, double window, std::vector<double>* nees,
+                                                      bool decimate) const {
+  std::vector<Row> out;
+  const auto& fixes = history_->radarFixes();
+  const double t0 = window > 0.0 && !fixes.empty() ? fixes.back().tS - window : -1e300;
+  const double nan = std::nan("");
+  forWindow(fixes, t0, decimate, [&](const RadarFixSample& s) {
+    switch (q) {
+      case 0:
+        out.push_back({s.tS, s.x, s.trueX, s.sdX});
+        break;
+      case 1:
+        out.push_back({s.tS, s.y, s.trueY, s.sdY});
+        break;
+      case 2:
+        out.push_back({s.tS, s.headingDeg, s.trueHeadingDeg, s.sdHeadingDeg});
+        break;
+      default:
+        out.push_back({s.tS, s.rmsResidual, nan, nan});
+        break;
+    }
+    if (nees) nees->push_back(s.nees);
+  });
+  return out;
+}
+
+std::vector<ErrorPlots::Row> ErrorPlots::ownRows(int q, double window, std::vector<double>* nees,
+                                                 bool decimate) const {
+  std::vector<Row> out;
+  const auto& own = history_->own();
+  const double t0 = window > 0.0 && !own.empty() ? own.back().tS - window : -1e300;
+  forWindow(own, t0, decimate, [&](const OwnSample& s) {
+    Row r{s.tS, 0, 0, 0};
+    switch (q) {
+      case 0:
+        r = {s.tS, s.estPos[0], s.truePos[0], s.sdPos[0]};
+        break;
+      case 1:
+        r = {s.tS, s.estPos[1], s.truePos[1], s.sdPos[1]};
+        break;
+      case 2:
+        r = {s.tS, s.estVel[0], s.trueVel[0], s.sdVel[0]};
+        break;
+      case 3:
+        r = {s.tS, s.estVel[1], s.trueVel[1], s.sdVel[1]};
+        break;
+      case 4:
+        r = {s.tS, s.estCurrent[0], s.trueCurrent[0], s.sdCurrent[0]};
+        break;
+      case 5:
+        r = {s.tS, s.estCurrent[1], s.trueCurrent[1], s.sdCurrent[1]};
+        break;
+      case 6:
+        r = {s.tS, s.estLoran[0], s.trueLoran[0], s.sdLoran[0]};
+        break;
+      case 7:
+        r = {s.tS, s.estLoran[1], s.trueLoran[1], s.sdLoran[1]};
+        break;
+      default:
+        r = {s.tS, s.estLogBias, s.trueLogBias, s.sdLogBias};
+        break;
+    }
+    out.push_back(r);
+    if (nees) nees->push_back(s.nees);
+  });
+  return out;
+}
+
+std::vector<ErrorPlots::Row> ErrorPlots::trackRows(int q, double window, std::vector<double>* nees,
+                                                   bool decimate) const {
+  std::vector<Row> out;
   const auto& hist = history_->track(*track_);
   const double t0 = window > 0.0 && !hist.empty() ? hist.back().tS - window : -1e300;
   forWindow(hist, t0, decimate, [&](const TrackSample& s) {

@@ -48,6 +48,13 @@ class ErrorPlots : public QWidget {
   };
   /// The rows of the current quantity and window; decimated to about kMaxPoints for display.
   [[nodiscard]] std::vector<Row> rows(std::vector<double>* nees, bool decimate) const;
+  /// The rows of one kind of subject: quantity q (of that kind), window in s (0: the whole run).
+  [[nodiscard]] std::vector<Row> radarFixRows(int q, double window, std::vector<double>* nees,
+                                              bool decimate) const;
+  [[nodiscard]] std::vector<Row> ownRows(int q, double window, std::vector<double>* nees,
+                                         bool decimate) const;
+  [[nodiscard]] std::vector<Row> trackRows(int q, double window, std::vector<double>* nees,
+                                           bool decimate) const;
   QChartView* makeChart(const QString& title, QChart*& chart);
 
   Subject subject_;

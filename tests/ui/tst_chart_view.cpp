@@ -10,7 +10,7 @@
 
 #include "charts/s57/s57_loader.h"
 #include "ui/map/chart_view.h"
-#include "ui/map/radar_raster.h"
+#include "ui/bridge/radar_raster.h"
 
 using namespace reckoner;
 

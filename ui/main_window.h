@@ -2,18 +2,20 @@
 // The ECDIS window: the chart with the navigation overlays in the centre; docks for own ship, sensors,
 // the ARPA target table, the error plots, alarms and pick reports; a toolbar with the simulation clock,
 // time control and display settings. The simulation runs in a worker thread (SimulationController);
-// frames are stored in SimHistory as they arrive and a timer repaints at no more than 30 Hz.
+// frames are stored in SimHistory as they arrive and a timer repaints at no more than 30 Hz. Charts
+// load in a worker thread of their own (ChartLoadWorker). main_window.cpp holds the state (frames,
+// repaints, files, settings); main_window_actions.cpp builds the docks, menus and toolbars.
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QMainWindow>
 #include <QTimer>
-#include <atomic>
-#include <memory>
 #include <optional>
 #include <vector>
 
+#include "ui/bridge/chart_load_worker.h"
 #include "ui/bridge/sim_history.h"
 #include "ui/bridge/simulation_controller.h"
+#include "ui/bridge/worker_thread.h"
 #include "ui/map/ecdis_view.h"
 
 QT_BEGIN_NAMESPACE
@@ -22,6 +24,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QListWidget;
 class QMenu;
+class QProgressBar;
 class QSortFilterProxyModel;
 class QTableView;
 class QTextBrowser;
@@ -50,7 +53,8 @@ class MainWindow : public QMainWindow {
   /// Loads a scenario file ("builtin:NAME" for an embedded one); false with a message on failure.
   bool openScenario(const QString& path);
   void loadScenario(const sim::Scenario& scenario, const QString& source);
-  /// Starts loading charts (file or folder, or builtin:default) in a background thread.
+  /// Starts loading charts (file or folder, or builtin:default) in a background thread; a load still
+  /// running is superseded (it stops, and its cells are not shown).
   void openCharts(const QString& path);
   /// Writes the scenario as edited so far (blocks the GUI only for the file write; the worker answers
   /// a queued request first, waited for with a local event loop).
@@ -68,8 +72,12 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] ErrorPlots* targetPlots() const { return targetPlots_; }
   [[nodiscard]] QTableView* targetTable() const { return table_; }
   [[nodiscard]] TargetTableModel* targetModel() const { return model_; }
-  [[nodiscard]] bool chartsLoading() const { return loading_ != nullptr; }
+  /// Whether the latest chart load has not answered yet (no answer to an older one can follow it).
+  [[nodiscard]] bool chartsLoading() const { return chartsLoading_; }
   [[nodiscard]] QString lastError() const { return lastError_; }
+  /// Whether a frame has arrived that the panels, table, chart overlays or plots do not show yet
+  /// (they follow at the window's repaint and plot ticks).
+  [[nodiscard]] bool refreshPending() const { return frameDirty_ || plotsDirty_; }
   void setPalette(charts::Palette palette);
   /// GUI-thread work, timed: each frame arrival, each repaint (panels, table, chart with overlays)
   /// and each plot refresh.
@@ -85,12 +93,21 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
 
  private:
+  // main_window_actions.cpp: the docks, menus and toolbars.
+  void buildDocks();
+  void buildActions();
+  void buildFileMenu();
+  void buildSimulationToolbar();
+  void buildDisplayToolbar();
+  void buildTrackingMenu();
+  void buildViewMenu();
   void buildRadarMenu();
   /// A checkable action in `menu` that switches one overlay setting.
   QAction* addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member);
-  void buildActions();
-  void buildDocks();
+
   void onFrame(const LiveFrame& frame);
+  void onChartLoadProgress(quint64 generation, int done, int total);
+  void onChartsLoaded(const ChartLoadAnswer& answer);
   void repaintTick();
   void refreshPlots();
   void updateClock();
@@ -125,6 +142,7 @@ class MainWindow : public QMainWindow {
   std::vector<QAction*> trackerKindActions_;  ///< Tracking > Filter for new tracks
   QAction* radarMatchAction_ = nullptr;       ///< Radar > Match (follows the scenario's own switch)
   QMenu* recentMenu_ = nullptr;
+  QProgressBar* chartProgress_ = nullptr;  ///< shown while charts load
   QTimer repaintTimer_;
   QTimer plotTimer_;
   bool frameDirty_ = false;
@@ -136,9 +154,8 @@ class MainWindow : public QMainWindow {
   QString lastError_;
   double lastRunRate_ = 10.0;
   std::vector<GuiTiming> guiTimings_;
-  struct Loading;
-  std::unique_ptr<Loading> loading_;
-  quint64 chartLoads_ = 0;
+  WorkerThread<ChartLoadWorker> chartLoad_{QStringLiteral("chart-load")};
+  bool chartsLoading_ = false;
 };
 
 }  // namespace reckoner::ui

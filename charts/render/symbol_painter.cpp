@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "charts/render/painting.h"
-#include "core/common/angles.h"
+#include "common/angles.h"
 
 namespace reckoner::charts::paint {
 namespace {

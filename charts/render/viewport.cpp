@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/common/angles.h"
+#include "common/angles.h"
 
 namespace reckoner::charts {
 namespace {

@@ -9,14 +9,19 @@
 #include <cmath>
 
 #include "charts/s57/s57_loader.h"
+#include "common/angles.h"
+#include "ui/bridge/radar_raster.h"
 #include "ui/map/chart_view.h"
-#include "ui/map/radar_raster.h"
 
 using namespace reckoner;
 
 namespace {
+// Conditions are waited for, never time; the limit only ends a test that would otherwise hang, so it
+// is generous (a render on a machine loaded by a parallel build takes several times longer).
+constexpr int kTimeoutMs = 60000;
+
 charts::LatLon local(double xKm, double yKm) {  // the default chart's own frame (resources/charts)
-  return {49.5 + yKm / 110.57, -29.5 + xKm / (111.32 * std::cos(49.5 * M_PI / 180.0))};
+  return {49.5 + yKm / 110.57, -29.5 + xKm / (111.32 * std::cos(degToRad(49.5)))};
 }
 
 void send(QWidget& w, QEvent::Type type, QPointF at, Qt::MouseButtons buttons) {
@@ -53,13 +58,13 @@ class TestChartView : public QObject {
       const int py = half + static_cast<int>(std::floor(-y / r.metresPerPixel));
       return r.mask.constScanLine(py)[px] != 0;
     };
-    const double a = 90.5 * M_PI / 180.0;  // the bin's centre
+    const double a = degToRad(90.5);  // the bin's centre
     QVERIFY(lit(north, 505.0 * std::sin(a), 505.0 * std::cos(a)));
     QVERIFY(!lit(north, -505.0, 0.0));
     QVERIFY(!lit(north, 0.0, 505.0));
-    pose.headingRad = M_PI / 2;
+    pose.headingRad = kPi / 2;
     const ui::RadarRaster east = ui::rasteriseRadarPicture(img, pose, 2.0);
-    QVERIFY(lit(east, 505.0 * std::sin(a + M_PI / 2), 505.0 * std::cos(a + M_PI / 2)));
+    QVERIFY(lit(east, 505.0 * std::sin(a + kPi / 2), 505.0 * std::cos(a + kPi / 2)));
     QVERIFY(!lit(east, 505.0, 0.0));
     int count = 0;
     for (int y = 0; y < east.mask.height(); ++y)
@@ -75,7 +80,8 @@ class TestChartView : public QObject {
     view.setView(local(0.6, -3.0), 30000);
     view.show();
     QTRY_VERIFY_WITH_TIMEOUT(
-        view.renderedGeneration() == view.requestedGeneration() && !view.renderedImage().isNull(), 10000);
+        view.renderedGeneration() == view.requestedGeneration() && !view.renderedImage().isNull(),
+        kTimeoutMs);
     // THEN what is on screen is the chart: land south of the bay, the notice at the bottom
     QImage shot = view.grab().toImage();
     const charts::Rgb land = charts::defaultColours().colour(charts::Palette::Day, "LANDA");
@@ -97,7 +103,7 @@ class TestChartView : public QObject {
 
     // WHEN the wheel turns one step in at (200, 150) THEN the scale is 1.25 times larger and the chart
     // point there stays put
-    QTRY_VERIFY_WITH_TIMEOUT(view.renderedGeneration() == view.requestedGeneration(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(view.renderedGeneration() == view.requestedGeneration(), kTimeoutMs);
     const double scale = view.viewport().scaleDenominator();
     const charts::LatLon anchor = view.viewport().toLatLon({200, 150});
     QWheelEvent wheel({200, 150}, view.mapToGlobal(QPointF(200, 150)), QPoint(), QPoint(0, 120), Qt::NoButton,
@@ -125,7 +131,7 @@ class TestChartView : public QObject {
     view.show();
     QSignalSpy done(&view, &ui::ChartView::renderFinished);
     for (int k = 0; k < 30; ++k) view.setView(local(-3.0 + 0.2 * k, 0.0), 40000 - 500 * k);
-    QTRY_VERIFY_WITH_TIMEOUT(view.renderedGeneration() == view.requestedGeneration(), 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(view.renderedGeneration() == view.requestedGeneration(), kTimeoutMs);
     QVERIFY2(done.count() < 30, qPrintable(QString("%1 renders for 30 views").arg(done.count())));
     QVERIFY(near(view.viewport().toScreen(local(-3.0 + 0.2 * 29, 0.0)), 600, 450));
   }

@@ -13,7 +13,7 @@
 #include "sim/scenario.h"
 #include "sim/simulation_engine.h"
 #include "studies/own_ship_filters.h"
-#include "ui/map/radar_raster.h"
+#include "ui/bridge/radar_raster.h"
 
 namespace reckoner::ui {
 

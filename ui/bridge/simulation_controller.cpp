@@ -1,107 +1,90 @@
 #include "ui/bridge/simulation_controller.h"
 
-#include <QMetaObject>
-
 namespace reckoner::ui {
 
 SimulationController::SimulationController(QObject* parent) : QObject(parent) {
   qRegisterMetaType<reckoner::ui::LiveFrame>();
   qRegisterMetaType<reckoner::sim::Scenario>();
-  worker_ = new SimulationWorker;
-  worker_->moveToThread(&thread_);
-  connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
-  connect(worker_, &SimulationWorker::frameReady, this, &SimulationController::onFrame, Qt::QueuedConnection);
+  SimulationWorker* w = sim_.worker();
+  connect(w, &SimulationWorker::frameReady, this, &SimulationController::onFrame, Qt::QueuedConnection);
   connect(
-      worker_, &SimulationWorker::loaded, this,
+      w, &SimulationWorker::loaded, this,
       [this](const sim::Scenario& s) {
         scenario_ = s;
         emit loaded(s);
       },
       Qt::QueuedConnection);
-  connect(worker_, &SimulationWorker::scenarioSnapshot, this, &SimulationController::scenarioReady,
+  connect(w, &SimulationWorker::scenarioSnapshot, this, &SimulationController::scenarioReady,
           Qt::QueuedConnection);
-  connect(worker_, &SimulationWorker::failed, this, &SimulationController::failed, Qt::QueuedConnection);
-  thread_.setObjectName(QStringLiteral("simulation"));
-  thread_.start();
+  connect(w, &SimulationWorker::failed, this, &SimulationController::failed, Qt::QueuedConnection);
 }
 
-SimulationController::~SimulationController() {
-  thread_.quit();
-  thread_.wait();
-}
-
-template <class F>
-void SimulationController::post(F&& f) {
-  QMetaObject::invokeMethod(worker_, std::forward<F>(f), Qt::QueuedConnection);
-}
+SimulationController::~SimulationController() = default;
 
 void SimulationController::onFrame(const LiveFrame& frame) {
-  if (frame.loadGeneration != generation_) {  // from the scenario before the last load()
-    post([w = worker_] { w->frameConsumed(); });
-    return;
+  if (loads_.isCurrent(frame.loadGeneration)) {  // else from the scenario before the last load()
+    latest_ = frame;
+    emit frameArrived(frame);
   }
-  latest_ = frame;
-  emit frameArrived(frame);
-  post([w = worker_] { w->frameConsumed(); });
+  sim_.post(&SimulationWorker::frameConsumed);
 }
 
 void SimulationController::load(const sim::Scenario& scenario) {
   latest_ = LiveFrame{};
-  post([w = worker_, scenario, g = ++generation_] { w->load(scenario, g); });
+  sim_.post(&SimulationWorker::load, scenario, loads_.issue());
 }
 void SimulationController::setRate(double rate) {
-  post([w = worker_, rate] { w->setRate(rate); });
+  sim_.post(&SimulationWorker::setRate, rate);
 }
 void SimulationController::stepOnce() {
-  post([w = worker_] { w->stepOnce(); });
+  sim_.post(&SimulationWorker::stepOnce);
 }
 void SimulationController::runTo(double tS, double rate) {
-  post([w = worker_, tS, rate] { w->runTo(tS, rate); });
+  sim_.post(&SimulationWorker::runTo, tS, rate);
 }
 void SimulationController::orderOwnShip(double trueHeadingRad, double speedMps) {
-  post([w = worker_, trueHeadingRad, speedMps] { w->orderOwnShip(trueHeadingRad, speedMps); });
+  sim_.post(&SimulationWorker::orderOwnShip, trueHeadingRad, speedMps);
 }
 void SimulationController::orderTarget(int targetId, double trueHeadingRad, double speedMps,
                                        double turnRateRadPerS, double accelerationMps2) {
-  post([w = worker_, targetId, trueHeadingRad, speedMps, turnRateRadPerS, accelerationMps2] {
-    w->orderTarget(targetId, trueHeadingRad, speedMps, turnRateRadPerS, accelerationMps2);
-  });
+  sim_.post(&SimulationWorker::orderTarget, targetId, trueHeadingRad, speedMps, turnRateRadPerS,
+            accelerationMps2);
 }
 void SimulationController::setSensorPower(sensors::SensorId id, bool on) {
-  post([w = worker_, id, on] { w->setSensorPower(id, on); });
+  sim_.post(&SimulationWorker::setSensorPower, id, on);
 }
 void SimulationController::setSpeedlogMode(sensors::SpeedlogMode mode) {
-  post([w = worker_, mode] { w->setSpeedlogMode(mode); });
+  sim_.post(&SimulationWorker::setSpeedlogMode, mode);
 }
 void SimulationController::setRadarPower(bool on) {
-  post([w = worker_, on] { w->setRadarPower(on); });
+  sim_.post(&SimulationWorker::setRadarPower, on);
 }
 void SimulationController::setCharts(const std::vector<charts::CellPtr>& cells) {
-  post([w = worker_, cells] { w->setCharts(cells); });
+  sim_.post(&SimulationWorker::setCharts, cells);
 }
 void SimulationController::setRadarMatching(bool on) {
-  post([w = worker_, on] { w->setRadarMatching(on); });
+  sim_.post(&SimulationWorker::setRadarMatching, on);
 }
 void SimulationController::setRadarPicturesWanted(bool on) {
-  post([w = worker_, on] { w->setRadarPicturesWanted(on); });
+  sim_.post(&SimulationWorker::setRadarPicturesWanted, on);
 }
 void SimulationController::setTrackerKind(track::TrackerKind kind) {
-  post([w = worker_, kind] { w->setTrackerKind(kind); });
+  sim_.post(&SimulationWorker::setTrackerKind, kind);
 }
 void SimulationController::addTarget(double xM, double yM, double vxMps, double vyMps) {
-  post([w = worker_, xM, yM, vxMps, vyMps] { w->addTarget(xM, yM, vxMps, vyMps); });
+  sim_.post(&SimulationWorker::addTarget, xM, yM, vxMps, vyMps);
 }
 void SimulationController::acquireAt(double xM, double yM) {
-  post([w = worker_, xM, yM] { w->acquireAt(xM, yM); });
+  sim_.post(&SimulationWorker::acquireAt, xM, yM);
 }
 void SimulationController::cancelTrack(int trackId) {
-  post([w = worker_, trackId] { w->cancelTrack(trackId); });
+  sim_.post(&SimulationWorker::cancelTrack, trackId);
 }
 void SimulationController::setDrLimit(double metres) {
-  post([w = worker_, metres] { w->setDrLimit(metres); });
+  sim_.post(&SimulationWorker::setDrLimit, metres);
 }
 void SimulationController::requestScenario() {
-  post([w = worker_] { w->requestScenario(); });
+  sim_.post(&SimulationWorker::requestScenario);
 }
 
 }  // namespace reckoner::ui

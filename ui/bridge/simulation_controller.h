@@ -1,11 +1,13 @@
 #pragma once
-// The GUI side of the simulation: owns the worker's thread, forwards commands as queued calls (the GUI
-// never waits on the worker), keeps the latest LiveFrame and acknowledges each one so that at most one
-// is in flight.
+// The GUI side of the simulation: owns the worker's thread (WorkerThread<SimulationWorker>), forwards
+// commands as queued calls (the GUI never waits on the worker), keeps the latest LiveFrame and
+// acknowledges each one so that at most one is in flight. Latest load wins: frames of a scenario
+// replaced since (LatestRequest) are acknowledged and dropped.
 #include <QObject>
-#include <QThread>
 
+#include "ui/bridge/latest_request.h"
 #include "ui/bridge/simulation_worker.h"
+#include "ui/bridge/worker_thread.h"
 
 namespace reckoner::ui {
 
@@ -51,15 +53,12 @@ class SimulationController : public QObject {
   void failed(const QString& message);
 
  private:
-  template <class F>
-  void post(F&& f);
   void onFrame(const LiveFrame& frame);
 
-  QThread thread_;
-  SimulationWorker* worker_ = nullptr;  // lives in thread_
+  WorkerThread<SimulationWorker> sim_{QStringLiteral("simulation")};
   LiveFrame latest_;
   sim::Scenario scenario_;
-  quint64 generation_ = 0;
+  LatestRequest loads_;
 };
 
 }  // namespace reckoner::ui

@@ -9,23 +9,15 @@
 namespace reckoner::ui {
 
 ChartView::ChartView(QWidget* parent) : QWidget(parent) {
-  qRegisterMetaType<ChartRenderRequest>();
   qRegisterMetaType<charts::Viewport>();
   setMouseTracking(true);
   setAttribute(Qt::WA_OpaquePaintEvent);
   setMinimumSize(64, 64);
-  worker_ = new ChartRenderWorker;
-  worker_->moveToThread(&thread_);
-  connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
-  connect(worker_, &ChartRenderWorker::rendered, this, &ChartView::onRendered, Qt::QueuedConnection);
-  thread_.setObjectName("chart-render");
-  thread_.start();
+  connect(render_.worker(), &ChartRenderWorker::rendered, this, &ChartView::onRendered, Qt::QueuedConnection);
 }
 
 ChartView::~ChartView() {
-  worker_->supersede(++generation_);  // stop a render in progress
-  thread_.quit();
-  thread_.wait();
+  render_.worker()->requests().issue();  // stops a render in progress; render_ then stops the thread
 }
 
 void ChartView::setCells(std::vector<charts::CellPtr> cells) {
@@ -70,15 +62,14 @@ void ChartView::panBy(QPointF deltaPx) {
 
 void ChartView::requestRender() {
   if (width() < 16 || height() < 16) return;
-  ChartRenderRequest req{cells_, viewport(), settings_, ++generation_};
-  worker_->supersede(req.generation);
-  QMetaObject::invokeMethod(worker_, "render", Qt::QueuedConnection,
-                            Q_ARG(reckoner::ui::ChartRenderRequest, req));
+  render_.post(&ChartRenderWorker::render,
+               ChartRenderRequest{cells_, viewport(), settings_, render_.worker()->requests().issue()});
   update();
 }
 
 void ChartView::onRendered(const QImage& image, const charts::Viewport& view, quint64 generation, double ms) {
-  if (generation < imageGeneration_) return;  // an older render finishing late
+  // The worker answers in request order and skips superseded requests, so each image is newer than
+  // the one shown (not necessarily the latest requested: a finished render is shown until the next).
   image_ = image;
   imageView_ = view;
   imageGeneration_ = generation;

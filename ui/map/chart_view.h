@@ -6,14 +6,14 @@
 // reports the features there (pick report). Overlays (own ship, targets) paint on top in subclasses
 // or through paintOverlay().
 #include <QImage>
-#include <QThread>
 #include <QWidget>
 #include <optional>
 #include <vector>
 
 #include "charts/pick/pick_report.h"
 #include "charts/render/chart_renderer.h"
-#include "ui/map/chart_render_worker.h"
+#include "ui/bridge/chart_render_worker.h"
+#include "ui/bridge/worker_thread.h"
 
 namespace reckoner::ui {
 
@@ -39,7 +39,7 @@ class ChartView : public QWidget {
   [[nodiscard]] const QImage& renderedImage() const { return image_; }
   [[nodiscard]] double lastRenderMs() const { return lastRenderMs_; }
   [[nodiscard]] quint64 renderedGeneration() const { return imageGeneration_; }
-  [[nodiscard]] quint64 requestedGeneration() const { return generation_; }
+  [[nodiscard]] quint64 requestedGeneration() const { return render_.worker()->requests().latest(); }
 
  signals:
   void viewChanged(const reckoner::charts::Viewport& view);
@@ -66,9 +66,7 @@ class ChartView : public QWidget {
   charts::LatLon centre_{49.5, -29.5};
   double scale_ = 20000;
   double rotation_ = 0;
-  QThread thread_;
-  ChartRenderWorker* worker_ = nullptr;  // lives in thread_
-  quint64 generation_ = 0;
+  WorkerThread<ChartRenderWorker> render_{QStringLiteral("chart-render")};
   QImage image_;
   std::optional<charts::Viewport> imageView_;
   quint64 imageGeneration_ = 0;

@@ -8,9 +8,12 @@
 // speed; Ctrl+click steers towards a point; click a target to select it; the right button opens the
 // context menu (add a target by dragging its vector, acquire, cancel a track, EBL/VRM, pick report).
 // Keys: left/right alter course 5 deg (1 with Shift), up/down speed 0.5 kn.
+// ecdis_view.cpp holds the state and the input handling, ecdis_paint.cpp the painting, ecdis_radar.cpp
+// the radar overlay.
 #include <QImage>
 #include <QMenu>
 #include <QPainterPath>
+#include <cmath>
 #include <optional>
 
 #include "geo/local_frame.h"
@@ -108,27 +111,55 @@ class EcdisView : public ChartView {
   void keyPressEvent(QKeyEvent* event) override;
 
  private:
-  struct Local;  // a grid point's screen position and local metres-to-pixels Jacobian
+  static constexpr double kHandleRadiusPx = 7.0;
+  /// A grid point's widget position and the local Jacobian of widget pixels per grid metre.
+  struct Local {
+    QPointF p;
+    double a = 1, b = 0, c = 0, d = 1;  // widget px per grid metre
+    [[nodiscard]] QPointF offset(double dxM, double dyM) const {
+      return {p.x() + a * dxM + b * dyM, p.y() + c * dxM + d * dyM};
+    }
+    [[nodiscard]] double pxPerMetre() const { return std::sqrt(std::abs(a * d - b * c)); }
+  };
+  /// What every target's symbol needs from the frame (paintTargets -> paintTarget).
+  struct TargetPaint {
+    double ownVx = 0.0, ownVy = 0.0;  ///< own ship's velocity over ground, grid m/s
+    double radiusPx = 0.0;            ///< symbol radius
+    bool flashOn = true;              ///< the 1 Hz flash of unacknowledged dangerous targets
+    double nowS = 0.0;
+  };
+  // ecdis_view.cpp
   [[nodiscard]] Local localAt(double xM, double yM) const;
-  /// The 95% ellipse of a grid position covariance (m^2) around a point, in widget pixels.
-  static QPolygonF ellipse95(const Local& at, double pxx, double pxy, double pyy, int points);
-  [[nodiscard]] QColor colour(const char* role) const;
   [[nodiscard]] std::optional<int> trackNear(QPointF p, double tolPx = 14.0) const;
   /// The ordered (or, without an order, the present) true course and speed through the water.
   [[nodiscard]] std::pair<double, double> orderedCourseSpeed() const;
   /// Emits orderRequested and remembers the order until a frame carries it.
   void requestOrder(double trueCourseRad, double speedMps);
+  [[nodiscard]] QString cursorText(QPointF p) const;
+  // ecdis_paint.cpp
+  /// The 95% ellipse of a grid position covariance (m^2) around a point, in widget pixels.
+  static QPolygonF ellipse95(const Local& at, double pxx, double pxy, double pyy, int points);
+  [[nodiscard]] QColor colour(const char* role) const;
   void paintRings(QPainter& p, const Local& own);
   void paintOwnShip(QPainter& p);
+  void paintPastTrack(QPainter& p);
+  void paintTruth(QPainter& p, const Local& own);
+  void paintFixes(QPainter& p);
+  void paintOwnEllipse(QPainter& p, const Local& own);
+  void paintSeed002(QPainter& p);
+  void paintCourseVector(QPainter& p, const Local& own);
+  void paintOrderedVector(QPainter& p, const Local& own);
+  void paintOwnSymbol(QPainter& p, const Local& own);
   void paintTargets(QPainter& p);
+  void paintTarget(QPainter& p, const sim::TrackSnapshot& t, const TargetPaint& k);
   void paintPlots(QPainter& p);
+  void paintScaleBar(QPainter& p, const charts::Viewport& view);
+  void paintReadouts(QPainter& p);
+  // ecdis_radar.cpp
   void paintRadarPicture(QPainter& p);
   void paintRadarEchoes(QPainter& p);
   /// The radar colour for the palette (dimmed at dusk and night).
   [[nodiscard]] QColor radarColour() const;
-  void paintScaleBar(QPainter& p, const charts::Viewport& view);
-  void paintReadouts(QPainter& p);
-  [[nodiscard]] QString cursorText(QPointF p) const;
 
   const SimHistory* history_ = nullptr;
   std::optional<geo::LocalFrame> frame_;

@@ -1,4 +1,4 @@
-#include "ui/map/radar_raster.h"
+#include "ui/bridge/radar_raster.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,121 @@
+#pragma once
+// What tst_main_window's tests share: waiting for the simulation and the window on conditions (never
+// on elapsed time), and the screenshots.
+#include <QCoreApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QScopeGuard>
+#include <QTest>
+#include <cmath>
+#include <vector>
+
+#include "ui/main_window.h"
+
+namespace reckoner::ui::test {
+
+// Conditions are waited for, never time; the limit only ends a test that would otherwise hang, so it
+// is generous (a machine loaded by a parallel build runs the simulation several times slower). Under
+// AddressSanitizer (Debug, -O0) the simulation runs some 30 times slower, and so may the wait.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr int kTimeoutMs = 600000;
+#else
+inline constexpr int kTimeoutMs = 120000;
+#endif
+
+inline double simTime(const MainWindow& w) {
+  return toSeconds(w.history().latest().frame.timeUs);
+}
+
+/// Runs as fast as possible to the simulated time tS, where the worker pauses, and waits until the
+/// window shows that frame: its repaint tick has run since (which may also move the view: true motion
+/// recentres on own ship), so what a test computes from the view stays true while it acts on it.
+inline void runUntil(MainWindow& w, double tS) {
+  QElapsedTimer clock;
+  clock.start();
+  const auto done = qScopeGuard([&] { qInfo("runUntil %g: %lld ms", tS, clock.elapsed()); });
+  w.controller()->runTo(tS, -1.0);
+  QTRY_VERIFY_WITH_TIMEOUT(simTime(w) >= tS - 1e-9 && !w.history().latest().running && !w.refreshPending(),
+                           kTimeoutMs);
+}
+
+inline MainWindowOptions freshOptions() {
+  MainWindowOptions o;
+  o.restoreSession = false;
+  return o;
+}
+
+inline void waitReady(MainWindow& w) {
+  QTRY_VERIFY_WITH_TIMEOUT(!w.history().empty(), kTimeoutMs);
+  QTRY_VERIFY_WITH_TIMEOUT(!w.chart()->cells().empty(), kTimeoutMs);
+  QTRY_VERIFY_WITH_TIMEOUT(
+      w.chart()->renderedGeneration() == w.chart()->requestedGeneration() && !w.refreshPending(), kTimeoutMs);
+}
+
+inline void showAndWait(MainWindow& w, QSize size = {1400, 900}) {
+  w.resize(size);
+  w.show();
+  waitReady(w);
+}
+
+inline void saveShot(QWidget& w, const QString& name) {
+  QDir().mkpath(QStringLiteral("screenshots"));
+  const QString path = QStringLiteral("screenshots/%1.png").arg(name);
+  QVERIFY(w.grab().save(path));
+  qInfo("screenshot: %s", qPrintable(QDir::current().absoluteFilePath(path)));
+}
+
+/// Whether the window shows its latest state: the panels, table and plots show the latest frame (the
+/// window's repaint and plot ticks have run since it arrived), the layouts their new contents asked
+/// for have been applied (handling the events waiting now leaves the chart's size as it is) and the
+/// chart render for the current view has arrived.
+inline bool settled(MainWindow& w) {
+  if (w.refreshPending()) return false;
+  const QSize size = w.chart()->size();
+  QCoreApplication::sendPostedEvents();
+  QCoreApplication::processEvents();
+  return w.chart()->size() == size && w.chart()->renderedGeneration() == w.chart()->requestedGeneration();
+}
+
+/// A screenshot of the window once it shows its latest state.
+inline void saveWindowShot(MainWindow& w, const QString& name) {
+  QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+  saveShot(w, name);
+}
+
+/// The radar fixes of the busy-shore run with matching switched on at 100 s, up to 400 s: one a sweep,
+/// most applied, consistent (mean NEES of 3 dof under 6).
+inline void verifyRadarFixesFrom100s(const std::vector<RadarFixSample>& fixes) {
+  QVERIFY(!fixes.empty());
+  QVERIFY(fixes.front().tS >= 100.0);
+  int applied = 0;
+  double nees = 0.0;
+  for (const auto& f : fixes) {
+    applied += f.applied ? 1 : 0;
+    nees += f.nees;
+  }
+  qInfo("%zu fixes from 100 to 400 s, %d applied, mean NEES %.2f (3 dof)", fixes.size(), applied,
+        nees / static_cast<double>(fixes.size()));
+  QVERIFY(fixes.size() >= 140);  // every 2 s sweep
+  QVERIFY(applied >= static_cast<int>(fixes.size()) / 2);
+  QVERIFY(nees / static_cast<double>(fixes.size()) < 6.0);
+}
+
+/// The centre (vertex mean, grid m) of the charted land ring nearest own ship's estimate.
+inline est::Vec<2> nearestLandCentre(const LiveFrame& live) {
+  const auto& x = live.frame.estimate.x;
+  est::Vec<2> nearest(0, 0);
+  double best = 1e300;
+  for (const auto& ring : live.land->rings()) {
+    est::Vec<2> c(0, 0);
+    for (const auto& q : ring) c += q;
+    c /= static_cast<double>(ring.size());
+    const double d = std::hypot(c[0] - x[est::drkf::kPosX], c[1] - x[est::drkf::kPosY]);
+    if (d < best) {
+      best = d;
+      nearest = c;
+    }
+  }
+  return nearest;
+}
+
+}  // namespace reckoner::ui::test

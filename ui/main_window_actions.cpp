@@ -1,0 +1,366 @@
+// MainWindow's docks, menus and toolbars: what the user can do, connected to the window's state
+// (main_window.cpp), the chart view and the simulation controller.
+#include <QActionGroup>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QHeaderView>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QSortFilterProxyModel>
+#include <QTabWidget>
+#include <QTableView>
+#include <QTextBrowser>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "charts/s57/s57_loader.h"
+#include "ui/main_window.h"
+#include "ui/panels/own_ship_panel.h"
+#include "ui/panels/sensor_panel.h"
+#include "ui/panels/target_table_model.h"
+#include "ui/plots/error_plots.h"
+
+namespace reckoner::ui {
+namespace {
+/// Changes the chart's overlay settings through `edit(OverlaySettings&)`.
+template <class F>
+void editOverlay(EcdisView* view, F&& edit) {
+  OverlaySettings s = view->overlay();
+  edit(s);
+  view->setOverlay(s);
+}
+
+QString defaultChartPath() {
+  return QString::fromLatin1(charts::kDefaultChartPath.data(), int(charts::kDefaultChartPath.size()));
+}
+}  // namespace
+
+void MainWindow::buildDocks() {
+  const auto dock = [this](const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {
+    auto* d = new QDockWidget(title, this);
+    d->setObjectName(name);
+    d->setWidget(w);
+    addDockWidget(area, d);
+    return d;
+  };
+  ownPanel_ = new OwnShipPanel(this);
+  sensors_ = new SensorPanel(this);
+  dock(tr("Own ship"), QStringLiteral("ownShipDock"), ownPanel_, Qt::RightDockWidgetArea);
+  dock(tr("Sensors"), QStringLiteral("sensorDock"), sensors_, Qt::RightDockWidgetArea);
+  connect(sensors_, &SensorPanel::sensorToggled, controller_, &SimulationController::setSensorPower);
+  connect(sensors_, &SensorPanel::radarToggled, controller_, &SimulationController::setRadarPower);
+  connect(sensors_, &SensorPanel::speedlogModeChosen, controller_, &SimulationController::setSpeedlogMode);
+  connect(sensors_, &SensorPanel::drLimitChanged, controller_, &SimulationController::setDrLimit);
+
+  model_ = new TargetTableModel(this);
+  proxy_ = new QSortFilterProxyModel(this);
+  proxy_->setSourceModel(model_);
+  proxy_->setSortRole(Qt::UserRole);
+  table_ = new QTableView(this);
+  table_->setObjectName(QStringLiteral("targetTable"));
+  table_->setModel(proxy_);
+  table_->setSortingEnabled(true);
+  table_->sortByColumn(TargetTableModel::Range, Qt::AscendingOrder);
+  table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  table_->setSelectionMode(QAbstractItemView::SingleSelection);
+  table_->verticalHeader()->hide();
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  dock(tr("Targets"), QStringLiteral("targetDock"), table_, Qt::BottomDockWidgetArea);
+  connect(table_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+          [this](const QModelIndex& current) {
+            if (!current.isValid()) return;
+            const int id = model_->trackIdAt(proxy_->mapToSource(current).row());
+            if (id >= 0) view_->setSelectedTrack(id);
+          });
+
+  auto* plots = new QTabWidget(this);
+  plots->setObjectName(QStringLiteral("plots"));
+  ownPlots_ = new ErrorPlots(ErrorPlots::Subject::OwnShip, plots);
+  targetPlots_ = new ErrorPlots(ErrorPlots::Subject::Target, plots);
+  ownPlots_->setHistory(&history_);
+  targetPlots_->setHistory(&history_);
+  plots->addTab(ownPlots_, tr("Own ship"));
+  plots->addTab(targetPlots_, tr("Selected target"));
+  dock(tr("Plots"), QStringLiteral("plotDock"), plots, Qt::LeftDockWidgetArea);
+
+  auto* alarms = new QWidget(this);
+  auto* av = new QVBoxLayout(alarms);
+  alarmList_ = new QListWidget(alarms);
+  alarmList_->setObjectName(QStringLiteral("alarms"));
+  auto* ack = new QPushButton(tr("Acknowledge all"), alarms);
+  ack->setObjectName(QStringLiteral("acknowledge"));
+  connect(ack, &QPushButton::clicked, this, [this] {
+    history_.acknowledgeAll();
+    updateAlarms();
+  });
+  av->addWidget(alarmList_);
+  av->addWidget(ack);
+  dock(tr("Alarms"), QStringLiteral("alarmDock"), alarms, Qt::BottomDockWidgetArea);
+
+  pick_ = new QTextBrowser(this);
+  pick_->setObjectName(QStringLiteral("pickReport"));
+  dock(tr("Pick report"), QStringLiteral("pickDock"), pick_, Qt::BottomDockWidgetArea);
+}
+
+void MainWindow::buildActions() {
+  buildFileMenu();
+  buildSimulationToolbar();
+  buildDisplayToolbar();
+  buildTrackingMenu();
+  buildViewMenu();
+  buildRadarMenu();
+}
+
+void MainWindow::buildFileMenu() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("Open scenario…"), QKeySequence::Open, this, [this] {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open scenario"), {}, tr("Scenarios (*.json)"));
+    if (!path.isEmpty()) openScenario(path);
+  });
+  file->addAction(tr("Save scenario as…"), QKeySequence::SaveAs, this, [this] {
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save scenario"), {}, tr("Scenarios (*.json)"));
+    if (!path.isEmpty()) saveScenario(path);
+  });
+  file->addSeparator();
+  file->addAction(tr("Open ENC cell…"), this, [this] {
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open ENC cell"), {}, tr("S-57 cells (*.000)"));
+    if (!path.isEmpty()) openCharts(path);
+  });
+  file->addAction(tr("Open ENC folder…"), this, [this] {
+    const QString path = QFileDialog::getExistingDirectory(this, tr("Open ENC folder"));
+    if (!path.isEmpty()) openCharts(path);
+  });
+  file->addAction(tr("Embedded default chart"), this, [this] { openCharts(defaultChartPath()); });
+  recentMenu_ = file->addMenu(tr("Recent files"));
+  file->addSeparator();
+  for (ErrorPlots* plots : {ownPlots_, targetPlots_}) {
+    const QString who = plots == ownPlots_ ? tr("own-ship") : tr("target");
+    const QString stem = plots == ownPlots_ ? QStringLiteral("ownship") : QStringLiteral("target");
+    file->addAction(tr("Export %1 plots (PNG)…").arg(who), this, [this, plots, stem] {
+      const QString p =
+          QFileDialog::getSaveFileName(this, tr("Export plots"), stem + ".png", tr("PNG (*.png)"));
+      if (!p.isEmpty() && !plots->exportPng(p)) reportError(tr("%1: cannot write the image").arg(p));
+    });
+    file->addAction(tr("Export %1 plot data (CSV)…").arg(who), this, [this, plots, stem] {
+      const QString p =
+          QFileDialog::getSaveFileName(this, tr("Export plot data"), stem + ".csv", tr("CSV (*.csv)"));
+      if (!p.isEmpty() && !plots->exportCsv(p)) reportError(tr("%1: cannot write the file").arg(p));
+    });
+  }
+  file->addSeparator();
+  file->addAction(tr("Quit"), QKeySequence::Quit, this, &QWidget::close);
+}
+
+void MainWindow::buildSimulationToolbar() {
+  // Simulation: toolbar with the clock, run/pause, step and the rate.
+  QToolBar* sim = addToolBar(tr("Simulation"));
+  sim->setObjectName(QStringLiteral("simulationToolbar"));
+  clock_ = new QLabel(this);
+  clock_->setObjectName(QStringLiteral("clock"));
+  clock_->setMinimumWidth(260);
+  QFont mono = clock_->font();
+  mono.setFamily(QStringLiteral("monospace"));
+  mono.setBold(true);
+  clock_->setFont(mono);
+  sim->addWidget(clock_);
+  runAction_ = sim->addAction(tr("Run"));
+  runAction_->setObjectName(QStringLiteral("run"));
+  runAction_->setShortcut(Qt::Key_Space);
+  runAction_->setShortcutContext(Qt::WindowShortcut);
+  connect(runAction_, &QAction::triggered, this,
+          [this] { setRate(history_.latest().running ? 0.0 : lastRunRate_); });
+  QAction* step = sim->addAction(tr("Step"));
+  step->setShortcut(QKeySequence(Qt::Key_Period));
+  connect(step, &QAction::triggered, controller_, &SimulationController::stepOnce);
+  rateBox_ = new QComboBox(this);
+  rateBox_->setObjectName(QStringLiteral("rate"));
+  for (double r : {1.0, 2.0, 5.0, 10.0, 30.0, 100.0}) rateBox_->addItem(QStringLiteral("%1x").arg(r), r);
+  rateBox_->addItem(tr("max"), -1.0);
+  rateBox_->setCurrentIndex(3);
+  connect(rateBox_, &QComboBox::activated, this, [this](int i) {
+    lastRunRate_ = rateBox_->itemData(i).toDouble();
+    if (history_.latest().running) setRate(lastRunRate_);
+  });
+  sim->addWidget(rateBox_);
+  alarmBanner_ = new QLabel(this);
+  alarmBanner_->setObjectName(QStringLiteral("alarmBanner"));
+  alarmBanner_->setStyleSheet(
+      QStringLiteral("QLabel { background: #c62828; color: white; font-weight: bold; padding: 2px 8px; }"));
+  alarmBanner_->hide();
+  sim->addWidget(alarmBanner_);
+}
+
+void MainWindow::buildDisplayToolbar() {
+  // Display: palette, category, safety contour, orientation, vectors.
+  QToolBar* display = addToolBar(tr("Display"));
+  display->setObjectName(QStringLiteral("displayToolbar"));
+  auto* palette = new QComboBox(this);
+  palette->setObjectName(QStringLiteral("palette"));
+  palette->addItems({tr("Day"), tr("Dusk"), tr("Night")});
+  connect(palette, &QComboBox::activated, this,
+          [this](int i) { setPalette(static_cast<charts::Palette>(i)); });
+  display->addWidget(palette);
+  auto* category = new QComboBox(this);
+  category->setObjectName(QStringLiteral("category"));
+  category->addItems({tr("Base"), tr("Standard"), tr("All")});
+  category->setCurrentIndex(1);
+  connect(category, &QComboBox::activated, this, [this](int i) {
+    charts::MarinerSettings s = view_->settings();
+    s.category = static_cast<charts::DisplayCategory>(i);
+    view_->setSettings(s);
+  });
+  display->addWidget(category);
+  auto* safety = new QDoubleSpinBox(this);
+  safety->setObjectName(QStringLiteral("safetyContour"));
+  safety->setPrefix(tr("Safety "));
+  safety->setSuffix(QStringLiteral(" m"));
+  safety->setRange(0.0, 200.0);
+  safety->setValue(view_->settings().safetyContourM);
+  connect(safety, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    charts::MarinerSettings s = view_->settings();
+    s.safetyContourM = v;
+    s.safetyDepthM = v;
+    view_->setSettings(s);
+  });
+  display->addWidget(safety);
+  QAction* courseUp = display->addAction(tr("Course up"));
+  courseUp->setCheckable(true);
+  connect(courseUp, &QAction::toggled, this,
+          [this](bool on) { editOverlay(view_, [on](OverlaySettings& s) { s.courseUp = on; }); });
+  QAction* relative = display->addAction(tr("Relative vectors"));
+  relative->setCheckable(true);
+  connect(relative, &QAction::toggled, this,
+          [this](bool on) { editOverlay(view_, [on](OverlaySettings& s) { s.relativeVectors = on; }); });
+  auto* minutes = new QDoubleSpinBox(this);
+  minutes->setObjectName(QStringLiteral("vectorMinutes"));
+  minutes->setRange(1.0, 60.0);
+  minutes->setDecimals(0);
+  minutes->setSuffix(tr(" min vectors"));
+  minutes->setValue(view_->overlay().vectorMinutes);
+  connect(minutes, &QDoubleSpinBox::valueChanged, this,
+          [this](double v) { editOverlay(view_, [v](OverlaySettings& s) { s.vectorMinutes = v; }); });
+  display->addWidget(minutes);
+  display->addAction(tr("Centre own ship"), this, [this] { view_->centreOnOwnShip(); });
+}
+
+void MainWindow::buildTrackingMenu() {
+  // Tracking: the filter of ARPA tracks started from now on (recorded in the scenario).
+  QMenu* tracking = menuBar()->addMenu(tr("&Tracking"));
+  QMenu* filterMenu = tracking->addMenu(tr("Filter for new tracks"));
+  filterMenu->setObjectName(QStringLiteral("trackerKindMenu"));
+  auto* kinds = new QActionGroup(this);
+  for (int i = 0; i < track::kTrackerKindCount; ++i) {
+    const auto kind = static_cast<track::TrackerKind>(i);
+    QAction* a = filterMenu->addAction(QString::fromLatin1(track::trackerKindLabel(kind)));
+    a->setObjectName(QStringLiteral("trackerKind_%1").arg(QString::fromLatin1(track::trackerKindName(kind))));
+    a->setCheckable(true);
+    a->setData(i);
+    kinds->addAction(a);
+    trackerKindActions_.push_back(a);
+    connect(a, &QAction::triggered, this, [this, kind] { controller_->setTrackerKind(kind); });
+  }
+}
+
+void MainWindow::buildViewMenu() {
+  QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+  // Seed 002's own-ship filters run beside the DRKF on the same sensors; one can be drawn with it.
+  QMenu* alt = viewMenu->addMenu(tr("Also show own ship by"));
+  alt->setObjectName(QStringLiteral("seed002Menu"));
+  auto* group = new QActionGroup(this);
+  const QString names[] = {tr("DRKF only"), tr("Geodetic Kalman filter (seed 002)"),
+                           tr("Least squares with dead reckoning (seed 002)")};
+  for (int i = 0; i < 3; ++i) {
+    QAction* a = alt->addAction(names[i]);
+    a->setObjectName(QStringLiteral("seed002_%1").arg(i));
+    a->setCheckable(true);
+    a->setChecked(i == view_->overlay().seed002Shown);
+    group->addAction(a);
+    connect(a, &QAction::triggered, this,
+            [this, i] { editOverlay(view_, [i](OverlaySettings& s) { s.seed002Shown = i; }); });
+  }
+  addOverlayToggle(viewMenu, tr("Truth"), &OverlaySettings::showTruth);
+  addOverlayToggle(viewMenu, tr("Covariance ellipses (95%)"), &OverlaySettings::showEllipses);
+  addOverlayToggle(viewMenu, tr("Raw radar plots"), &OverlaySettings::showPlots);
+  addOverlayToggle(viewMenu, tr("Past track"), &OverlaySettings::showPastTrack);
+  addOverlayToggle(viewMenu, tr("Follow own ship"), &OverlaySettings::followOwnShip);
+  QAction* rings = viewMenu->addAction(tr("Range rings"));
+  rings->setCheckable(true);
+  rings->setChecked(view_->overlay().ringSpacingNm > 0.0);
+  connect(rings, &QAction::toggled, this, [this](bool on) {
+    editOverlay(view_, [on](OverlaySettings& s) { s.ringSpacingNm = on ? 0.5 : 0.0; });
+  });
+  viewMenu->addSeparator();
+  for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu->addAction(d->toggleViewAction());
+}
+
+QAction* MainWindow::addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member) {
+  QAction* a = menu->addAction(name);
+  a->setCheckable(true);
+  a->setChecked(view_->overlay().*member);
+  connect(a, &QAction::toggled, this, [this, member](bool on) {
+    editOverlay(view_, [member, on](OverlaySettings& s) { s.*member = on; });
+  });
+  return a;
+}
+
+void MainWindow::buildRadarMenu() {
+  // Seed 004: the radar picture matched to the loaded charts, and the radar overlay.
+  QMenu* radar = menuBar()->addMenu(tr("&Radar"));
+  radar->setObjectName(QStringLiteral("radarMenu"));
+  radarMatchAction_ =
+      radar->addAction(tr("Match the radar picture to the chart (position and heading fixes)"));
+  radarMatchAction_->setObjectName(QStringLiteral("radarMatching"));
+  radarMatchAction_->setCheckable(true);
+  connect(radarMatchAction_, &QAction::triggered, this,
+          [this](bool on) { controller_->setRadarMatching(on); });
+  QAction* picture =
+      addOverlayToggle(radar, tr("Show the radar picture"), &OverlaySettings::showRadarPicture);
+  picture->setObjectName(QStringLiteral("radarPicture"));
+  connect(picture, &QAction::toggled, this, [this](bool on) { controller_->setRadarPicturesWanted(on); });
+  addOverlayToggle(radar, tr("Show matched echoes and their chart points"), &OverlaySettings::showRadarEchoes)
+      ->setObjectName(QStringLiteral("radarEchoes"));
+  radar->addSeparator();
+  auto* layer = new QActionGroup(this);
+  const std::pair<QString, bool> layers[] = {{tr("Radar over the chart"), true},
+                                             {tr("Radar under the chart's land (shown on water)"), false}};
+  for (const auto& [name, over] : layers) {
+    QAction* a = radar->addAction(name);
+    a->setObjectName(over ? QStringLiteral("radarOver") : QStringLiteral("radarUnder"));
+    a->setCheckable(true);
+    a->setChecked(view_->overlay().radarOverChart == over);
+    layer->addAction(a);
+    connect(a, &QAction::triggered, this, [this, over = over] {
+      editOverlay(view_, [over](OverlaySettings& s) { s.radarOverChart = over; });
+    });
+  }
+  QMenu* opacity = radar->addMenu(tr("Radar opacity"));
+  auto* opacities = new QActionGroup(this);
+  for (const int pct : {25, 40, 60, 80, 100}) {
+    QAction* a = opacity->addAction(tr("%1%").arg(pct));
+    a->setObjectName(QStringLiteral("radarOpacity%1").arg(pct));
+    a->setCheckable(true);
+    a->setChecked(std::abs(view_->overlay().radarOpacity * 100.0 - pct) < 1.0);
+    opacities->addAction(a);
+    connect(a, &QAction::triggered, this,
+            [this, pct] { editOverlay(view_, [pct](OverlaySettings& s) { s.radarOpacity = pct / 100.0; }); });
+  }
+  QMenu* colours = radar->addMenu(tr("Radar colour"));
+  auto* colourGroup = new QActionGroup(this);
+  for (int i = 0; i < static_cast<int>(std::size(kRadarColours)); ++i) {
+    QAction* a = colours->addAction(tr(kRadarColours[i].name));
+    a->setCheckable(true);
+    a->setChecked(view_->overlay().radarColour == i);
+    colourGroup->addAction(a);
+    connect(a, &QAction::triggered, this,
+            [this, i] { editOverlay(view_, [i](OverlaySettings& s) { s.radarColour = i; }); });
+  }
+}
+
+}  // namespace reckoner::ui

@@ -6,20 +6,9 @@
 #include <cstdio>
 #include <system_error>
 
-namespace reckoner::io {
+#include "io/text_format.h"
 
-namespace {
-/// The seconds field "01.250": a finite number, spaces around it allowed.
-std::optional<double> secondsField(std::string_view f) {
-  while (!f.empty() && f.front() == ' ') f.remove_prefix(1);
-  while (!f.empty() && f.back() == ' ') f.remove_suffix(1);
-  if (f.empty()) return std::nullopt;
-  double v = 0.0;
-  const auto [p, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
-  if (ec != std::errc() || p != f.data() + f.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-}  // namespace
+namespace reckoner::io {
 
 std::int64_t daysFromCivil(int y, int m, int d) {
   // Count of days from 1970-01-01 (proleptic Gregorian), by years shifted to start in March.
@@ -44,7 +33,7 @@ std::optional<UtcUs> parseIso8601(std::string_view s) {
     return v;
   };
   const auto y = num(0, 4), mo = num(5, 2), d = num(8, 2), h = num(11, 2), mi = num(14, 2);
-  const auto sec = secondsField(s.substr(17, s.size() - 18));
+  const auto sec = parseFiniteNumber(s.substr(17, s.size() - 18));
   if (!y || !mo || !d || !h || !mi || !sec || *mo < 1 || *mo > 12 || *d < 1 || *d > 31 || *h > 23 ||
       *mi > 59 || *sec < 0.0 || *sec >= 61.0)
     return std::nullopt;

@@ -1,7 +1,9 @@
 #include "io/text_format.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <system_error>
 
 namespace reckoner::io {
 namespace {
@@ -23,6 +25,16 @@ std::string formatLatitude(double latDeg) {
 }
 std::string formatLongitude(double lonDeg) {
   return degMin(lonDeg, 3, 'E', 'W');
+}
+
+std::optional<double> parseFiniteNumber(std::string_view f) {
+  while (!f.empty() && f.front() == ' ') f.remove_prefix(1);
+  while (!f.empty() && f.back() == ' ') f.remove_suffix(1);
+  if (f.empty()) return std::nullopt;
+  double v = 0.0;
+  const auto [p, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
+  if (ec != std::errc() || p != f.data() + f.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
 }
 
 }  // namespace reckoner::io

@@ -13,6 +13,7 @@
 #include "io/error_line.h"
 #include "io/input_error.h"
 #include "io/nmea.h"
+#include "io/text_format.h"
 
 namespace reckoner::sim {
 namespace replay_input {
@@ -33,13 +34,7 @@ std::vector<Line> linesOf(std::string_view text) {
 }
 
 std::optional<double> toNumber(std::string_view f) {
-  while (!f.empty() && f.front() == ' ') f.remove_prefix(1);
-  while (!f.empty() && f.back() == ' ') f.remove_suffix(1);
-  if (f.empty()) return std::nullopt;
-  double v = 0.0;
-  const auto [p, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
-  if (ec != std::errc() || p != f.data() + f.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
+  return io::parseFiniteNumber(f);
 }
 
 std::string_view trimmed(std::string_view f) {

@@ -14,6 +14,15 @@ class JsonValue {
  public:
   enum class Type { Null, Bool, Number, String, Array, Object };
 
+  // Out of line (json.cpp), where JsonValue is complete: the members hold vectors of JsonValue itself,
+  // whose special members need the complete type (clang rejects them defined inside the class).
+  JsonValue();
+  JsonValue(const JsonValue&);
+  JsonValue(JsonValue&&) noexcept;
+  JsonValue& operator=(const JsonValue&);
+  JsonValue& operator=(JsonValue&&) noexcept;
+  ~JsonValue();
+
   Type type = Type::Null;
   int line = 0;    ///< 1-based line of the value's first character
   int column = 0;  ///< 1-based column

@@ -449,7 +449,8 @@ Chart author() {
         {c.edge({root, {1.6, root.y + 0.45}, {1.25, root.y + 0.6}}), false, 255}};
   }
 
-  // The buoyed channel into the bay (IALA A, entering southwards: red cans to port, on the east side).
+  // The buoyed channel into the bay (IALA A, entering southwards: red cans to port, on the east side: CATLAM
+  // 1, port-hand; green cones CATLAM 2, starboard-hand).
   c.add("FAIRWY", 3, {{"OBJNAM", "Sound Channel"}, {"ORIENT", "180"}}).edges =
       c.polygon({{0.35, 1.5}, {0.85, 1.5}, {0.85, -4.2}, {0.35, -4.2}});
   const double pairs[] = {1.0, -0.3, -1.6, -2.9, -4.0};
@@ -457,9 +458,9 @@ Chart author() {
     const std::string n = std::to_string(2 * k + 2), m = std::to_string(2 * k + 1);
     const std::string nameN = cat("Sound Channel Buoy ", n), nameM = cat("Sound Channel Buoy ", m);
     c.point("BOYLAT", {0.85, pairs[k]},
-            {{"BOYSHP", "2"}, {"CATLAM", "2"}, {"COLOUR", "3"}, {"OBJNAM", nameN}});
+            {{"BOYSHP", "2"}, {"CATLAM", "1"}, {"COLOUR", "3"}, {"OBJNAM", nameN}});
     c.point("BOYLAT", {0.35, pairs[k]},
-            {{"BOYSHP", "1"}, {"CATLAM", "1"}, {"COLOUR", "4"}, {"OBJNAM", nameM}});
+            {{"BOYSHP", "1"}, {"CATLAM", "2"}, {"COLOUR", "4"}, {"OBJNAM", nameM}});
     c.point("TOPMAR", {0.85, pairs[k]}, {{"TOPSHP", "5"}, {"COLOUR", "3"}});
     c.point("TOPMAR", {0.35, pairs[k]}, {{"TOPSHP", "1"}, {"COLOUR", "4"}});
     if (k < 2) {

@@ -284,6 +284,31 @@ class TestChartRender : public QObject {
     // Inside the cone, a few pixels above the position.
     QCOMPARE(img.pixel(200, 194) & 0xFFFFFF, rgbOf(Palette::Day, "CHRED") & 0xFFFFFF);
   }
+  void theEmbeddedChannelIsBuoyedForIalaA() {
+    // GIVEN the embedded chart's buoyed channel (IALA region A, entered southwards) WHEN its lateral
+    // marks are decoded with GDAL's own S-57 catalogue
+    const std::vector<CellPtr> cells{loadCell(std::string(kDefaultChartPath))};
+    const S57Catalogue& catalogue = S57Catalogue::installed();
+    int red = 0, green = 0;
+    for (const auto& f : cells[0]->features()) {
+      if (f.objectClass != "BOYLAT") continue;
+      const std::string category = catalogue.valueText("CATLAM", f.list("CATLAM"));
+      const std::string shape = catalogue.valueText("BOYSHP", f.list("BOYSHP"));
+      // THEN red marks are port-hand cans and green marks starboard-hand cones
+      if (f.list("COLOUR") == std::vector<std::int64_t>{3}) {
+        ++red;
+        QCOMPARE(category, std::string("port-hand lateral mark"));
+        QCOMPARE(shape, std::string("can (cylindrical)"));
+      } else {
+        ++green;
+        QCOMPARE(f.list("COLOUR"), std::vector<std::int64_t>{4});
+        QCOMPARE(category, std::string("starboard-hand lateral mark"));
+        QCOMPARE(shape, std::string("conical (nun, ogival)"));
+      }
+    }
+    QCOMPARE(red, 5);
+    QCOMPARE(green, 5);
+  }
 };
 
 int main(int argc, char** argv) {

@@ -1,0 +1,85 @@
+#pragma once
+// Alerts as the IMO's bridge alert management (MSC.302(87)) defines them: a priority (alarm, warning,
+// caution), a state (unacknowledged, silenced, acknowledged, rectified but unacknowledged), and an
+// identity (the kind of condition and its source: a track, a zone, a sensor block). Plain values; the
+// rules that move an alert between states are in alert_manager.h, the kinds' defaults in alert.cpp.
+#include <cstdint>
+#include <string>
+
+#include "common/time.h"
+
+namespace reckoner::alerts {
+
+/// Highest last, so that a larger value is more urgent.
+enum class Priority { Caution, Warning, Alarm };
+
+/// The conditions Reckoner raises alerts for (docs/alerts.md).
+enum class AlertKind {
+  CpaTcpa,              ///< a target's CPA and TCPA under the operator's limits (with hysteresis)
+  GuardZone,            ///< a new target inside a guard zone
+  LostTarget,           ///< a confirmed radar track no longer updated
+  LostAisTarget,        ///< an AIS target silent for longer than its reporting interval allows
+  PositionSourceLost,   ///< no position fix: own ship is dead reckoning
+  DeadReckoningLimit,   ///< the dead-reckoned position's 95% radius above the operator's limit
+  PositionDiscrepancy,  ///< primary and secondary position sources further apart than a limit
+  SensorNoise,          ///< a sensor's innovations larger than its configured noise explains
+  Capacity,             ///< the tracker near its capacity
+};
+inline constexpr int kAlertKindCount = 9;
+
+/// Which condition, from which source (a track number, a zone index, a DRKF block; 0 when the kind has
+/// one source only).
+struct AlertId {
+  AlertKind kind = AlertKind::CpaTcpa;
+  int source = 0;
+  friend bool operator==(const AlertId&, const AlertId&) = default;
+  friend auto operator<=>(const AlertId&, const AlertId&) = default;
+};
+
+/// What every alert of a kind shares. Warnings escalate to alarms when escalates is set and they stay
+/// unacknowledged; an alarm whose condition is rectified stays (rectified, unacknowledged) until it is
+/// acknowledged unless rectifiedClears is set (MSC.302(87) 7.3.7 allows it for CPA/TCPA).
+struct AlertKindTraits {
+  const char* name = "";  ///< short upper-case title: "CPA/TCPA"
+  Priority priority = Priority::Warning;
+  bool escalates = false;
+  bool rectifiedClears = false;
+};
+const AlertKindTraits& traitsOf(AlertKind kind);
+const char* priorityName(Priority p);
+
+enum class AlertState {
+  Unacknowledged,  ///< active, audible (alarm and warning) and flashing
+  Silenced,        ///< active, audible signal off until silencedUntilUs, still unacknowledged
+  Acknowledged,    ///< active, steady; stays while the condition holds
+  Rectified,       ///< condition gone but never acknowledged (alarms): shown until acknowledged
+};
+const char* stateName(AlertState s);
+
+struct Alert {
+  AlertId id;
+  Priority priority = Priority::Warning;  ///< now (a warning escalated to alarm reads Alarm)
+  AlertState state = AlertState::Unacknowledged;
+  std::string text;            ///< the latest description the condition gave
+  TimeUs raisedUs = 0;         ///< when the condition began (this occurrence)
+  TimeUs changedUs = 0;        ///< the latest state or priority change
+  TimeUs silencedUntilUs = 0;  ///< while Silenced
+  bool escalated = false;
+  /// Audible: an unacknowledged alarm or warning that is not silenced (cautions are never audible).
+  [[nodiscard]] bool audible() const {
+    return priority != Priority::Caution && state == AlertState::Unacknowledged;
+  }
+};
+
+/// One line of the alert history (and of the log file).
+struct AlertLogEntry {
+  enum class Event { Raised, Escalated, Silenced, Unsilenced, Acknowledged, Rectified, Cleared };
+  Event event = Event::Raised;
+  TimeUs timeUs = 0;
+  AlertId id;
+  Priority priority = Priority::Warning;
+  std::string text;
+};
+const char* eventName(AlertLogEntry::Event e);
+
+}  // namespace reckoner::alerts

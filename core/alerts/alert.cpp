@@ -10,11 +10,11 @@ namespace {
 // (MSC.232(82) appendix 5), the radar's CPA/TCPA an alarm and lost target a warning (MSC.192(79)),
 // capacity a caution. docs/alerts.md gives the reasons for the rest.
 constexpr std::array<AlertKindTraits, kAlertKindCount> kTraits{{
-    {"CPA/TCPA", Priority::Alarm, false, true},
-    {"GUARD ZONE", Priority::Warning, true, false},
-    {"LOST TARGET", Priority::Warning, true, false},
-    {"LOST AIS TARGET", Priority::Warning, true, false},
-    {"POSITION SOURCE LOST", Priority::Alarm, false, false},
+    {"CPA/TCPA", Priority::Alarm, false, false},
+    {"GUARD ZONE", Priority::Warning, true, true},
+    {"LOST TARGET", Priority::Warning, true, true},
+    {"LOST AIS TARGET", Priority::Warning, true, true},
+    {"POSITION SOURCE LOST", Priority::Alarm, false, true},
     {"DEAD RECKONING LIMIT", Priority::Warning, true, false},
     {"POSITION DISCREPANCY", Priority::Warning, true, false},
     {"SENSOR NOISE", Priority::Caution, false, false},

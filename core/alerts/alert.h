@@ -37,13 +37,15 @@ struct AlertId {
 };
 
 /// What every alert of a kind shares. Warnings escalate to alarms when escalates is set and they stay
-/// unacknowledged; an alarm whose condition is rectified stays (rectified, unacknowledged) until it is
-/// acknowledged unless rectifiedClears is set (MSC.302(87) 7.3.7 allows it for CPA/TCPA).
+/// unacknowledged. An unacknowledged alert whose condition ends stays (Rectified) until it is
+/// acknowledged when holdsUntilAcknowledged is set: the alarms (except CPA/TCPA, for which
+/// MSC.302(87) 7.3.7 lets the indication end with the condition) and the events an officer must not
+/// miss even when they are over (a lost target, a new target in a guard zone).
 struct AlertKindTraits {
   const char* name = "";  ///< short upper-case title: "CPA/TCPA"
   Priority priority = Priority::Warning;
   bool escalates = false;
-  bool rectifiedClears = false;
+  bool holdsUntilAcknowledged = false;
 };
 const AlertKindTraits& traitsOf(AlertKind kind);
 const char* priorityName(Priority p);
@@ -52,7 +54,7 @@ enum class AlertState {
   Unacknowledged,  ///< active, audible (alarm and warning) and flashing
   Silenced,        ///< active, audible signal off until silencedUntilUs, still unacknowledged
   Acknowledged,    ///< active, steady; stays while the condition holds
-  Rectified,       ///< condition gone but never acknowledged (alarms): shown until acknowledged
+  Rectified,       ///< condition gone but never acknowledged (holdsUntilAcknowledged kinds)
 };
 const char* stateName(AlertState s);
 

@@ -57,7 +57,7 @@ void AlertManager::raise(TimeUs now, AlertId id, const std::string& text) {
 }
 
 void AlertManager::rectify(TimeUs now, Alert& a) {
-  const bool mustStay = a.priority == Priority::Alarm && !traitsOf(a.id.kind).rectifiedClears &&
+  const bool mustStay = traitsOf(a.id.kind).holdsUntilAcknowledged &&
                         (a.state == AlertState::Unacknowledged || a.state == AlertState::Silenced);
   if (!mustStay) {
     remove(now, a.id);

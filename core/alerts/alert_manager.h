@@ -6,8 +6,8 @@
 //   condition holds           -> Unacknowledged (alarm, warning: audible; caution: shown only)
 //   silence (alarm, warning)  -> Silenced for silenceS, then Unacknowledged again if still not acknowledged
 //   acknowledge               -> Acknowledged while the condition holds; removed once it does not
-//   condition rectified       -> alarm unacknowledged: Rectified (shown until acknowledged, unless its kind
-//                                clears when rectified); warning, caution, acknowledged alarm: removed
+//   condition rectified       -> unacknowledged, of a kind that holds until acknowledged: Rectified
+//                                (shown, quiet, until acknowledged); otherwise removed
 //   condition returns         -> a removed alert is raised anew; a Rectified one is Unacknowledged again
 //   warning of an escalating kind unacknowledged for escalateAfterS -> escalated to an alarm
 //

@@ -18,23 +18,34 @@ void validate(const CpaAlertLimits& l) {
   check(l.tcpaS, false, "tcpa_limit_s");
   check(l.cpaMarginM, true, "cpa_margin_m");
   check(l.tcpaMarginS, true, "tcpa_margin_s");
+  check(l.clearAfterS, true, "clear_after_s");
 }
 
 CpaAlertCondition::CpaAlertCondition(CpaAlertLimits limits) : limits_(limits) {
   validate(limits_);
 }
 
-bool CpaAlertCondition::update(int trackId, const track::Cpa& cpa) {
-  bool& holding = holding_[trackId];
-  if (!std::isfinite(cpa.cpaM) || !std::isfinite(cpa.tcpaS)) return holding;  // keep the last decision
-  if (!holding) {
-    holding = cpa.cpaM <= limits_.cpaM && cpa.tcpaS >= 0.0 && cpa.tcpaS <= limits_.tcpaS;
-  } else {
-    const bool clear = cpa.cpaM > limits_.cpaM + limits_.cpaMarginM ||
-                       cpa.tcpaS > limits_.tcpaS + limits_.tcpaMarginS || cpa.tcpaS < -limits_.tcpaMarginS;
-    holding = !clear;
+bool CpaAlertCondition::update(int trackId, TimeUs now, const track::Cpa& cpa) {
+  State& s = tracks_[trackId];
+  if (!std::isfinite(cpa.cpaM) || !std::isfinite(cpa.tcpaS)) return s.holding;  // keep the last decision
+  if (!s.holding) {
+    s.holding = cpa.cpaM <= limits_.cpaM && cpa.tcpaS >= 0.0 && cpa.tcpaS <= limits_.tcpaS;
+    s.outside = false;
+    return s.holding;
   }
-  return holding;
+  const bool outside = cpa.cpaM > limits_.cpaM + limits_.cpaMarginM ||
+                       cpa.tcpaS > limits_.tcpaS + limits_.tcpaMarginS || cpa.tcpaS < -limits_.tcpaMarginS;
+  if (!outside) {
+    s.outside = false;
+  } else if (!s.outside) {
+    s.outside = true;
+    s.outsideSinceUs = now;
+  }
+  if (s.outside && now - s.outsideSinceUs >= fromSeconds(limits_.clearAfterS)) {
+    s.holding = false;
+    s.outside = false;
+  }
+  return s.holding;
 }
 
 std::string cpaAlertText(int trackId, const track::Cpa& cpa) {

@@ -128,14 +128,20 @@ class TestAlertManager : public QObject {
     m.report(sec(7), fix, false);
     QVERIFY(m.acknowledge(sec(8), fix));
     QVERIFY(!m.find(fix));
-    // BUT a CPA/TCPA alarm ends with its condition (MSC.302(87) 7.3.7), and a warning too
-    const AlertId cpa{AlertKind::CpaTcpa, 3}, lost{AlertKind::LostTarget, 3};
-    m.report(sec(10), cpa, true);
+    // AND so does a lost target, a warning the officer must not miss
+    const AlertId lost{AlertKind::LostTarget, 3};
     m.report(sec(10), lost, true);
-    m.report(sec(11), cpa, false);
     m.report(sec(11), lost, false);
+    QVERIFY(m.find(lost));
+    QCOMPARE(m.find(lost)->state, AlertState::Rectified);
+    // BUT a CPA/TCPA alarm ends with its condition (MSC.302(87) 7.3.7), and so does a DR-limit warning
+    const AlertId cpa{AlertKind::CpaTcpa, 3}, dr{AlertKind::DeadReckoningLimit, 0};
+    m.report(sec(10), cpa, true);
+    m.report(sec(10), dr, true);
+    m.report(sec(11), cpa, false);
+    m.report(sec(11), dr, false);
     QVERIFY(!m.find(cpa));
-    QVERIFY(!m.find(lost));
+    QVERIFY(!m.find(dr));
   }
 
   void anAcknowledgedWarningDoesNotEscalate() {
@@ -229,7 +235,7 @@ class TestAlertManager : public QObject {
         const double tcpaS = 600.0 - 2.4 * sweep;
         const track::Cpa c = cpaAt(cpaM, tcpaS);
         const TimeUs now = sec(2.4 * sweep);
-        m.report(now, {AlertKind::CpaTcpa, 5}, condition.update(5, c), cpaAlertText(5, c));
+        m.report(now, {AlertKind::CpaTcpa, 5}, condition.update(5, now, c), cpaAlertText(5, c));
         m.tick(now);
       }
       return m.raisedCount(AlertKind::CpaTcpa);
@@ -239,23 +245,38 @@ class TestAlertManager : public QObject {
     // AND without it, one per approach (the test can tell the difference)
     CpaAlertLimits bare;
     bare.cpaMarginM = 0.0;
+    bare.clearAfterS = 0.0;
     QCOMPARE(run(bare), 100);
   }
 
   void theCpaConditionEndsWhenTheTargetIsClearlyOutside() {
-    CpaAlertCondition c;
-    QVERIFY(!c.update(1, cpaAt(2000.0, 300.0)));  // outside the CPA limit
-    QVERIFY(!c.update(1, cpaAt(500.0, 800.0)));   // too far in time
-    QVERIFY(!c.update(1, cpaAt(500.0, -5.0)));    // passed
-    QVERIFY(c.update(1, cpaAt(500.0, 300.0)));
-    QVERIFY(c.update(1, cpaAt(1900.0, 300.0)));                                   // within the margin
-    QVERIFY(c.update(1, cpaAt(500.0, -20.0)));                                    // just past: still holding
-    QVERIFY(!c.update(1, cpaAt(500.0, -31.0)));                                   // clearly past
-    QVERIFY(c.update(2, cpaAt(100.0, 10.0)));                                     // per track
-    QVERIFY(c.update(2, cpaAt(std::numeric_limits<double>::quiet_NaN(), 10.0)));  // NaN keeps it
+    CpaAlertLimits l;
+    l.clearAfterS = 0.0;
+    CpaAlertCondition c(l);
+    QVERIFY(!c.update(1, sec(0), cpaAt(2000.0, 300.0)));  // outside the CPA limit
+    QVERIFY(!c.update(1, sec(1), cpaAt(500.0, 800.0)));   // too far in time
+    QVERIFY(!c.update(1, sec(2), cpaAt(500.0, -5.0)));    // passed
+    QVERIFY(c.update(1, sec(3), cpaAt(500.0, 300.0)));
+    QVERIFY(c.update(1, sec(4), cpaAt(1900.0, 300.0)));  // within the margin
+    QVERIFY(c.update(1, sec(5), cpaAt(500.0, -20.0)));   // just past: still holding
+    QVERIFY(!c.update(1, sec(6), cpaAt(500.0, -31.0)));  // clearly past
+    QVERIFY(c.update(2, sec(7), cpaAt(100.0, 10.0)));    // per track
+    QVERIFY(c.update(2, sec(8), cpaAt(std::numeric_limits<double>::quiet_NaN(), 10.0)));  // NaN keeps it
     c.forget(2);
-    QVERIFY(!c.update(2, cpaAt(3000.0, 10.0)));
+    QVERIFY(!c.update(2, sec(9), cpaAt(3000.0, 10.0)));
     QCOMPARE(cpaAlertText(7, cpaAt(0.25 * 1852.0, 390.0)), std::string("track 7: CPA 0.25 NM in 6.5 min"));
+  }
+
+  void aNoisyTcpaMustStayOutsideBeforeTheConditionEnds() {
+    // GIVEN a holding condition (clear_after_s 20) WHEN the TCPA jumps out for a sweep, then back
+    CpaAlertCondition c;
+    QVERIFY(c.update(1, sec(0), cpaAt(1000.0, 120.0)));
+    QVERIFY(c.update(1, sec(2), cpaAt(1000.0, 900.0)));
+    QVERIFY(c.update(1, sec(4), cpaAt(1000.0, 110.0)));
+    // THEN it holds; only 20 s clearly outside end it
+    QVERIFY(c.update(1, sec(10), cpaAt(1000.0, 900.0)));
+    QVERIFY(c.update(1, sec(29.9), cpaAt(1000.0, 900.0)));
+    QVERIFY(!c.update(1, sec(30), cpaAt(1000.0, 900.0)));
   }
 };
 

@@ -1,0 +1,161 @@
+// The alert conditions of a run, read from its frames: the default scenario's GPS outage raises POSITION
+// SOURCE LOST for exactly its dead-reckoning stretch and it waits for acknowledgement; every dangerous
+// target the tracker flags raises a CPA/TCPA alarm for that track; a DR limit is reported while the 95%
+// radius is above it; settings a scenario implies; impossible settings are named.
+#include <QTest>
+
+#include <map>
+#include <stdexcept>
+
+#include "files/scenario_json.h"
+#include "navigation/dr_horizon.h"
+#include "resources/embedded.h"
+#include "sim/alert_feed.h"
+#include "support/compare_near.h"
+
+using namespace reckoner;
+using namespace reckoner::sim;
+using alerts::AlertKind;
+
+namespace {
+
+Scenario builtin(const char* name) {
+  const auto* f = resources::findScenario(name);
+  if (!f) qFatal("no built-in scenario %s", name);
+  return io::parseScenario(f->text, std::string("builtin:") + name);
+}
+
+struct Run {
+  std::vector<alerts::AlertLogEntry> log;
+  std::vector<track::TrackEvent> events;
+  std::vector<std::pair<TimeUs, bool>> deadReckoning;  ///< changes of f.deadReckoning.active
+  double maxError95M = 0.0;
+};
+
+Run runWithAlerts(const Scenario& s, AlertFeedSettings settings, alerts::AlertManager& m,
+                  bool acknowledgeEverything = false) {
+  SimulationEngine engine(s, 1);
+  AlertFeed feed(settings);
+  Run r;
+  bool dr = false;
+  while (!engine.finished()) {
+    const SimFrame f = engine.step();
+    feed.feed(f, m);
+    if (acknowledgeEverything)
+      for (const alerts::Alert& a : m.alerts()) m.acknowledge(f.timeUs, a.id);
+    r.events.insert(r.events.end(), f.trackEvents.begin(), f.trackEvents.end());
+    if (f.deadReckoning.active != dr) r.deadReckoning.emplace_back(f.timeUs, dr = f.deadReckoning.active);
+    r.maxError95M = std::max(r.maxError95M, nav::positionError95M(f.estimate));
+    const auto taken = m.takeLog();
+    r.log.insert(r.log.end(), taken.begin(), taken.end());
+  }
+  return r;
+}
+
+int count(const Run& r, AlertKind kind, alerts::AlertLogEntry::Event e) {
+  return static_cast<int>(std::count_if(r.log.begin(), r.log.end(), [&](const alerts::AlertLogEntry& x) {
+    return x.id.kind == kind && x.event == e;
+  }));
+}
+
+}  // namespace
+
+class TestAlertFeed : public QObject {
+  Q_OBJECT
+ private slots:
+  void theGpsOutageRaisesPositionSourceLostAndWaitsForAcknowledgement() {
+    // GIVEN the default scenario (a GPS outage on the way in) WHEN run with nobody acknowledging
+    const Scenario s = builtin("default");
+    alerts::AlertManager m;
+    const Run r = runWithAlerts(s, alertFeedSettingsFor(s), m);
+    using E = alerts::AlertLogEntry::Event;
+    QVERIFY(!r.deadReckoning.empty());
+    // THEN the alarm is raised when dead reckoning starts and rectified when it ends, once per stretch
+    int stretches = 0;
+    for (std::size_t k = 0; k < r.deadReckoning.size(); ++k) stretches += r.deadReckoning[k].second ? 1 : 0;
+    QCOMPARE(count(r, AlertKind::PositionSourceLost, E::Raised), stretches);
+    const auto first = std::find_if(r.log.begin(), r.log.end(), [](const alerts::AlertLogEntry& x) {
+      return x.id.kind == AlertKind::PositionSourceLost;
+    });
+    QVERIFY(first != r.log.end());
+    QCOMPARE(first->event, E::Raised);
+    QCOMPARE(first->timeUs, r.deadReckoning.front().first);
+    QCOMPARE(first->priority, alerts::Priority::Alarm);
+    // AND, never acknowledged, it is still shown at the end (rectified) when the fix came back
+    if (!r.deadReckoning.back().second) {
+      const alerts::Alert* a = m.find({AlertKind::PositionSourceLost, 0});
+      QVERIFY(a);
+      QCOMPARE(a->state, alerts::AlertState::Rectified);
+    }
+  }
+
+  void everyDangerousTargetRaisesACpaAlarm() {
+    // GIVEN the busy harbour (40 targets) WHEN run with every alert acknowledged at once
+    const Scenario s = builtin("busy-harbour");
+    alerts::AlertManager m;
+    const Run r = runWithAlerts(s, alertFeedSettingsFor(s), m, true);
+    using E = alerts::AlertLogEntry::Event;
+    // THEN each track the tracker calls dangerous has a CPA/TCPA alarm of its own
+    std::map<int, TimeUs> dangerous, alarmed;
+    for (const auto& e : r.events)
+      if (e.kind == track::TrackEvent::Kind::Dangerous) dangerous.emplace(e.trackId, e.timeUs);
+    for (const auto& x : r.log)
+      if (x.id.kind == AlertKind::CpaTcpa && x.event == E::Raised) alarmed.emplace(x.id.source, x.timeUs);
+    const auto risingEdges = std::count_if(r.events.begin(), r.events.end(), [](const track::TrackEvent& e) {
+      return e.kind == track::TrackEvent::Kind::Dangerous;
+    });
+    qInfo(
+        "%zu dangerous tracks (%td rising edges), %zu with CPA/TCPA alarms, %d raised in all, %d lost-target "
+        "warnings",
+        dangerous.size(), risingEdges, alarmed.size(), count(r, AlertKind::CpaTcpa, E::Raised),
+        count(r, AlertKind::LostTarget, E::Raised));
+    QVERIFY(!dangerous.empty());
+    for (const auto& [id, t] : dangerous) {
+      QVERIFY2(alarmed.count(id), qPrintable(QString("track %1 dangerous but never alarmed").arg(id)));
+      RK_COMPARE_NEAR(toSeconds(alarmed[id]), toSeconds(t), 3.0);  // within a sweep or so
+    }
+    // AND the hysteresis keeps the alarms no more numerous than the tracker's rising edges
+    QVERIFY(count(r, AlertKind::CpaTcpa, E::Raised) <=
+            static_cast<int>(std::count_if(r.events.begin(), r.events.end(), [](const auto& e) {
+              return e.kind == track::TrackEvent::Kind::Dangerous;
+            })));
+    // AND acknowledged alarms were never removed while they held: every Cleared follows a Rectify of
+    // the condition, i.e. no alert of a kind was raised twice without its condition ending in between
+    QVERIFY(count(r, AlertKind::LostTarget, E::Raised) > 0);
+  }
+
+  void theDeadReckoningLimitHoldsWhileTheRadiusIsAbove() {
+    const Scenario s = builtin("default");
+    AlertFeedSettings settings = alertFeedSettingsFor(s);
+    alerts::AlertManager probe;
+    const double maxE95 = runWithAlerts(s, settings, probe).maxError95M;
+    settings.drLimitM = 0.5 * maxE95;
+    alerts::AlertManager m;
+    const Run r = runWithAlerts(s, settings, m);
+    using E = alerts::AlertLogEntry::Event;
+    QVERIFY(count(r, AlertKind::DeadReckoningLimit, E::Raised) >= 1);
+    // AND with no limit set there is no such alert
+    QCOMPARE(
+        count(runWithAlerts(s, alertFeedSettingsFor(s), probe), AlertKind::DeadReckoningLimit, E::Raised), 0);
+  }
+
+  void settingsComeFromTheScenarioAndAreChecked() {
+    Scenario s = builtin("default");
+    s.tracker.dangerCpaM = 926.0;
+    s.tracker.dangerTcpaS = 360.0;
+    AlertFeedSettings a = alertFeedSettingsFor(s);
+    QCOMPARE(a.cpa.cpaM, 926.0);
+    QCOMPARE(a.cpa.tcpaS, 360.0);
+    QVERIFY(!a.guardZones);
+    a.drLimitM = -1.0;
+    try {
+      AlertFeed feed(a);
+      QFAIL("a negative DR limit was accepted");
+    } catch (const std::invalid_argument& e) {
+      QVERIFY(std::string(e.what()).find("dr_limit_m") != std::string::npos);
+    }
+  }
+};
+
+QTEST_GUILESS_MAIN(TestAlertFeed)
+#include "tst_alert_feed.moc"

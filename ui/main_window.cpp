@@ -3,16 +3,20 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDir>
 #include <QEventLoop>
+#include <QFile>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
 #include <QProgressBar>
 #include <QSettings>
 #include <QSortFilterProxyModel>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableView>
 #include <QTextBrowser>
+#include <QTextStream>
 #include <algorithm>
 #include <cmath>
 
@@ -21,6 +25,7 @@
 #include "common/units.h"
 #include "files/scenario_json.h"
 #include "resources/embedded.h"
+#include "ui/panels/alert_panel.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/sensor_panel.h"
 #include "ui/panels/target_table_model.h"
@@ -60,6 +65,9 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
   chartProgress_->hide();
   chartProgress_->setMaximumWidth(200);
   chartProgress_->setFormat(tr("charts %v/%m"));
+  const QString logDir = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation);
+  if (!logDir.isEmpty() && QDir().mkpath(logDir))
+    alertLogPath_ = QDir(logDir).filePath(QStringLiteral("alerts.log"));
 
   connect(controller_, &SimulationController::frameArrived, this, &MainWindow::onFrame);
   connect(chartLoad_.worker(), &ChartLoadWorker::progress, this, &MainWindow::onChartLoadProgress,
@@ -249,6 +257,7 @@ void MainWindow::onFrame(const LiveFrame& frame) {
   QElapsedTimer t;
   t.start();
   history_.append(frame);
+  appendAlertLog(frame);
   frameDirty_ = true;
   plotsDirty_ = true;
   if (!frame.running) QTimer::singleShot(0, this, &MainWindow::refreshPlots);  // paused: show all now
@@ -261,7 +270,7 @@ void MainWindow::onFrame(const LiveFrame& frame) {
 
 void MainWindow::repaintTick() {
   if (!frameDirty_) {
-    if (!history_.alarms().empty()) view_->update();  // flashing symbols
+    if (!history_.alerts().empty()) view_->update();  // flashing symbols
     return;
   }
   QElapsedTimer t;
@@ -318,17 +327,30 @@ void MainWindow::updateClock() {
 }
 
 void MainWindow::updateAlarms() {
-  const auto& alarms = history_.alarms();
-  alarmList_->clear();
-  for (const Alarm& a : alarms)
-    alarmList_->addItem(QStringLiteral("%1  at T+%2").arg(a.text(), clockText(a.tS)));
-  if (alarms.empty()) {
-    alarmBanner_->hide();
-  } else {
-    alarmBanner_->setText(alarms.begin()->text() +
-                          (alarms.size() > 1 ? tr("  (+%1)").arg(alarms.size() - 1) : QString()));
-    alarmBanner_->show();
+  alertPanel_->refresh(history_);
+  const auto& alerts = history_.alerts();
+  alarmBannerAction_->setVisible(!alerts.empty());
+  if (alerts.empty()) return;
+  const alerts::Alert& top = alerts.front();
+  alarmBanner_->setText(alertTitle(top) +
+                        (alerts.size() > 1 ? tr("  (+%1)").arg(alerts.size() - 1) : QString()));
+  const QColor c = alertColour(top.priority);
+  alarmBanner_->setStyleSheet(
+      QStringLiteral("QLabel { background: %1; color: %2; font-weight: bold; padding: 2px 8px; }")
+          .arg(c.name(), top.priority == alerts::Priority::Caution ? "black" : "white"));
+  alarmBanner_->setToolTip(tr("The most urgent alert; the Alerts dock lists them all"));
+}
+
+void MainWindow::appendAlertLog(const LiveFrame& frame) {
+  if (frame.alertLog.empty() || alertLogPath_.isEmpty()) return;
+  QFile f(alertLogPath_);
+  if (!f.open(QIODevice::Append | QIODevice::Text)) {
+    reportError(tr("cannot write the alert log %1: %2").arg(alertLogPath_, f.errorString()));
+    alertLogPath_.clear();  // said once
+    return;
   }
+  QTextStream out(&f);
+  for (const auto& e : frame.alertLog) out << scenarioSource_ << "  " << alertLogLine(e) << '\n';
 }
 
 void MainWindow::selectTrack(std::optional<int> id) {

@@ -33,6 +33,7 @@ QT_END_NAMESPACE
 
 namespace reckoner::ui {
 
+class AlertPanel;
 class ErrorPlots;
 class OwnShipPanel;
 class SensorPanel;
@@ -72,6 +73,11 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] ErrorPlots* targetPlots() const { return targetPlots_; }
   [[nodiscard]] QTableView* targetTable() const { return table_; }
   [[nodiscard]] TargetTableModel* targetModel() const { return model_; }
+  [[nodiscard]] AlertPanel* alertPanel() const { return alertPanel_; }
+  /// The toolbar banner with the most urgent alert (shown while there is one).
+  [[nodiscard]] QLabel* alarmBanner() const { return alarmBanner_; }
+  /// The alert log file: every alert change, one line each, appended across runs (docs/alerts.md).
+  [[nodiscard]] QString alertLogPath() const { return alertLogPath_; }
   /// Whether the latest chart load has not answered yet (no answer to an older one can follow it).
   [[nodiscard]] bool chartsLoading() const { return chartsLoading_; }
   [[nodiscard]] QString lastError() const { return lastError_; }
@@ -112,6 +118,7 @@ class MainWindow : public QMainWindow {
   void refreshPlots();
   void updateClock();
   void updateAlarms();
+  void appendAlertLog(const LiveFrame& frame);
   void showPick(QPointF widgetPoint);
   void showPickedFeatures(const std::vector<charts::PickedFeature>& features, charts::LatLon where);
   void addRecent(const QString& key, const QString& path);
@@ -132,9 +139,11 @@ class MainWindow : public QMainWindow {
   ErrorPlots* ownPlots_ = nullptr;
   ErrorPlots* targetPlots_ = nullptr;
   QTextBrowser* pick_ = nullptr;
-  QListWidget* alarmList_ = nullptr;
+  AlertPanel* alertPanel_ = nullptr;
   QLabel* clock_ = nullptr;
   QLabel* alarmBanner_ = nullptr;
+  QAction* alarmBannerAction_ = nullptr;  ///< the banner's toolbar action (shows and hides it)
+  QString alertLogPath_;
   QLabel* cursorLabel_ = nullptr;
   QLabel* chartLabel_ = nullptr;
   QComboBox* rateBox_ = nullptr;

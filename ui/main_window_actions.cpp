@@ -19,6 +19,7 @@
 
 #include "charts/s57/s57_loader.h"
 #include "ui/main_window.h"
+#include "ui/panels/alert_panel.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/sensor_panel.h"
 #include "ui/panels/target_table_model.h"
@@ -87,19 +88,11 @@ void MainWindow::buildDocks() {
   plots->addTab(targetPlots_, tr("Selected target"));
   dock(tr("Plots"), QStringLiteral("plotDock"), plots, Qt::LeftDockWidgetArea);
 
-  auto* alarms = new QWidget(this);
-  auto* av = new QVBoxLayout(alarms);
-  alarmList_ = new QListWidget(alarms);
-  alarmList_->setObjectName(QStringLiteral("alarms"));
-  auto* ack = new QPushButton(tr("Acknowledge all"), alarms);
-  ack->setObjectName(QStringLiteral("acknowledge"));
-  connect(ack, &QPushButton::clicked, this, [this] {
-    history_.acknowledgeAll();
-    updateAlarms();
-  });
-  av->addWidget(alarmList_);
-  av->addWidget(ack);
-  dock(tr("Alarms"), QStringLiteral("alarmDock"), alarms, Qt::BottomDockWidgetArea);
+  alertPanel_ = new AlertPanel(this);
+  connect(alertPanel_, &AlertPanel::acknowledgeRequested, controller_,
+          &SimulationController::acknowledgeAlert);
+  connect(alertPanel_, &AlertPanel::silenceRequested, controller_, &SimulationController::silenceAlerts);
+  dock(tr("Alerts"), QStringLiteral("alarmDock"), alertPanel_, Qt::BottomDockWidgetArea);
 
   pick_ = new QTextBrowser(this);
   pick_->setObjectName(QStringLiteral("pickReport"));
@@ -193,8 +186,10 @@ void MainWindow::buildSimulationToolbar() {
   alarmBanner_->setObjectName(QStringLiteral("alarmBanner"));
   alarmBanner_->setStyleSheet(
       QStringLiteral("QLabel { background: #c62828; color: white; font-weight: bold; padding: 2px 8px; }"));
-  alarmBanner_->hide();
-  sim->addWidget(alarmBanner_);
+  // A widget in a toolbar is shown and hidden through its action (QWidget::hide() is undone by the
+  // toolbar's layout).
+  alarmBannerAction_ = sim->addWidget(alarmBanner_);
+  alarmBannerAction_->setVisible(false);
 }
 
 void MainWindow::buildDisplayToolbar() {

@@ -407,16 +407,16 @@ class TestMainWindow : public QObject {
     for (const auto id : {sensors::SensorId::Gps, sensors::SensorId::LoranC, sensors::SensorId::Speedlog,
                           sensors::SensorId::Gyro})
       QVERIFY(w.sensorPanel()->noiseLabel(id)->isHidden());
-    for (const Alarm& a : w.history().alarms()) QVERIFY(a.kind != Alarm::Kind::SensorNoise);
+    for (const alerts::Alert& a : w.history().alerts()) QVERIFY(a.id.kind != alerts::AlertKind::SensorNoise);
     QVERIFY(w.openScenario(path));
     waitReady(w);
     QVERIFY(w.sensorPanel()->noiseLabel(sensors::SensorId::Gps)->isHidden());
     runUntil(w, 200.0);
     QTRY_VERIFY_WITH_TIMEOUT(!w.sensorPanel()->noiseLabel(sensors::SensorId::Gps)->isHidden(), kTimeoutMs);
     bool alarmed = false;
-    for (const Alarm& a : w.history().alarms())
-      alarmed = alarmed || (a.kind == Alarm::Kind::SensorNoise &&
-                            (a.trackId == nav::kGpsPosition || a.trackId == nav::kGpsVelocity));
+    for (const alerts::Alert& a : w.history().alerts())
+      alarmed = alarmed || (a.id.kind == alerts::AlertKind::SensorNoise &&
+                            (a.id.source == nav::kGpsPosition || a.id.source == nav::kGpsVelocity));
     QVERIFY(alarmed);
     saveWindowShot(w, QStringLiteral("sensor-noise"));
   }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "alerts/alert.h"
 #include "radar/land_mask.h"
 #include "sim/scenario.h"
 #include "sim/simulation_engine.h"
@@ -103,10 +104,15 @@ struct LiveFrame {
   std::vector<TrackSample> trackHistory;  ///< every track at every sweep end since then
   std::vector<ShownPlot> recentPlots;     ///< plots of the last few sweeps
   std::vector<track::TrackEvent> events;  ///< track events since the previous emitted frame
-  std::array<LastFix, 2> lastFix{};       ///< GPS, Loran-C
-  std::array<BlockStatus, 5> blocks{};    ///< per nav::DrkfBlock
-  bool positionFixUsed = true;            ///< not frame.deadReckoning.active (a recent position fix)
-  std::optional<double> drHorizonS;       ///< time until the 95% error exceeds the limit (DR only)
+  /// The alerts now (alerts::AlertManager::alerts(): most urgent first) and the alert log entries since
+  /// the previous emitted frame (docs/alerts.md).
+  std::vector<alerts::Alert> alerts;
+  std::vector<alerts::AlertLogEntry> alertLog;
+  bool alertAudible = false;
+  std::array<LastFix, 2> lastFix{};     ///< GPS, Loran-C
+  std::array<BlockStatus, 5> blocks{};  ///< per nav::DrkfBlock
+  bool positionFixUsed = true;          ///< not frame.deadReckoning.active (a recent position fix)
+  std::optional<double> drHorizonS;     ///< time until the 95% error exceeds the limit (DR only)
   double drLimitM = 0.0;
   double error95M = 0.0;
   /// Seed 002's own-ship filters beside the DRKF (geodetic KF, least squares): [x, y, vx, vy] over

@@ -4,13 +4,31 @@
 
 namespace reckoner::ui {
 
-QString Alarm::text() const {
-  if (kind == Kind::SensorNoise)
-    return QStringLiteral("SENSOR NOISE  %1 larger than configured")
-        .arg(QString::fromLatin1(nav::blockName(static_cast<nav::DrkfBlock>(trackId))));
-  const QString what =
-      kind == Kind::Dangerous ? QStringLiteral("DANGEROUS TARGET") : QStringLiteral("LOST TARGET");
-  return QStringLiteral("%1  track %2").arg(what).arg(trackId);
+namespace {
+
+QString clock(TimeUs t) {
+  const long long s = std::max<long long>(0, static_cast<long long>(t / kMicrosPerSecond));
+  return QStringLiteral("%1:%2:%3")
+      .arg(s / 3600, 2, 10, QLatin1Char('0'))
+      .arg(s / 60 % 60, 2, 10, QLatin1Char('0'))
+      .arg(s % 60, 2, 10, QLatin1Char('0'));
+}
+
+}  // namespace
+
+QString alertTitle(const alerts::Alert& a) {
+  QString s = QString::fromLatin1(alerts::priorityName(a.priority)).toUpper();
+  s += QStringLiteral("  ") + QString::fromLatin1(alerts::traitsOf(a.id.kind).name);
+  if (!a.text.empty()) s += QStringLiteral("  ") + QString::fromStdString(a.text);
+  return s;
+}
+
+QString alertLogLine(const alerts::AlertLogEntry& e) {
+  return QStringLiteral("T+%1  %2  %3  %4%5")
+      .arg(clock(e.timeUs), QString::fromLatin1(alerts::priorityName(e.priority)).toUpper(),
+           QString::fromLatin1(alerts::traitsOf(e.id.kind).name),
+           QString::fromLatin1(alerts::eventName(e.event)),
+           e.text.empty() ? QString() : QStringLiteral(": ") + QString::fromStdString(e.text));
 }
 
 void SimHistory::clear() {
@@ -18,8 +36,8 @@ void SimHistory::clear() {
   own_.clear();
   tracks_.clear();
   radarFixes_.clear();
-  alarms_.clear();
-  noisy_ = {};
+  alertHistory_.clear();
+  alertHistoryCount_ = 0;
 }
 
 void SimHistory::append(const LiveFrame& frame) {
@@ -27,22 +45,9 @@ void SimHistory::append(const LiveFrame& frame) {
   own_.insert(own_.end(), frame.ownHistory.begin(), frame.ownHistory.end());
   for (const TrackSample& s : frame.trackHistory) tracks_[s.trackId].push_back(s);
   radarFixes_.insert(radarFixes_.end(), frame.radarFixes.begin(), frame.radarFixes.end());
-  const auto& noisy = frame.frame.noisierThanConfigured;
-  for (std::size_t b = 0; b < noisy.size(); ++b) {
-    if (noisy[b] && !noisy_[b])
-      alarms_.insert({Alarm::Kind::SensorNoise, static_cast<int>(b), toSeconds(frame.frame.timeUs)});
-    noisy_[b] = noisy[b];
-  }
-  for (const auto& e : frame.events) {
-    using K = track::TrackEvent::Kind;
-    const double t = toSeconds(e.timeUs);
-    if (e.kind == K::Dangerous) alarms_.insert({Alarm::Kind::Dangerous, e.trackId, t});
-    if (e.kind == K::Lost) alarms_.insert({Alarm::Kind::Lost, e.trackId, t});
-    if (e.kind == K::Removed || e.kind == K::Cancelled || e.kind == K::Dropped) {
-      alarms_.erase({Alarm::Kind::Dangerous, e.trackId, 0.0});
-      alarms_.erase({Alarm::Kind::Lost, e.trackId, 0.0});
-    }
-  }
+  alertHistory_.insert(alertHistory_.end(), frame.alertLog.begin(), frame.alertLog.end());
+  alertHistoryCount_ += frame.alertLog.size();
+  while (alertHistory_.size() > kAlertHistoryLimit) alertHistory_.pop_front();
 }
 
 const std::vector<TrackSample>& SimHistory::track(int trackId) const {
@@ -51,8 +56,15 @@ const std::vector<TrackSample>& SimHistory::track(int trackId) const {
   return it == tracks_.end() ? kNone : it->second;
 }
 
-bool SimHistory::unacknowledged(Alarm::Kind kind, int trackId) const {
-  return alarms_.count({kind, trackId, 0.0}) > 0;
+const alerts::Alert* SimHistory::alert(alerts::AlertId id) const {
+  const auto& list = latest_.alerts;
+  const auto it = std::find_if(list.begin(), list.end(), [&](const alerts::Alert& a) { return a.id == id; });
+  return it == list.end() ? nullptr : &*it;
+}
+
+bool SimHistory::unacknowledged(alerts::AlertId id) const {
+  const alerts::Alert* a = alert(id);
+  return a && (a->state == alerts::AlertState::Unacknowledged || a->state == alerts::AlertState::Silenced);
 }
 
 }  // namespace reckoner::ui

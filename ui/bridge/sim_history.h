@@ -1,30 +1,26 @@
 #pragma once
 // The GUI thread's record of a run: every own-ship step and every track at every sweep end since the
-// scenario was loaded, built from the LiveFrame batches; the latest frame; and the alarms the operator
-// has not yet acknowledged. The chart overlay, the target table and the plots all read it.
+// scenario was loaded, built from the LiveFrame batches; the latest frame; the alerts now (the
+// worker's alerts::AlertManager decides them) and their history. The chart overlay, the target table,
+// the plots and the alert list all read it.
 #include <QString>
+#include <deque>
 #include <map>
-#include <set>
 #include <vector>
 
 #include "ui/bridge/live_frame.h"
 
 namespace reckoner::ui {
 
-struct Alarm {
-  /// SensorNoise: a DRKF block's windowed NIS above its band (SimFrame::noisierThanConfigured).
-  enum class Kind { Dangerous, Lost, SensorNoise };
-  Kind kind = Kind::Dangerous;
-  int trackId = 0;  ///< SensorNoise: the nav::DrkfBlock
-  double tS = 0.0;
-  [[nodiscard]] QString text() const;
-  friend bool operator<(const Alarm& a, const Alarm& b) {
-    return a.kind != b.kind ? a.kind < b.kind : a.trackId < b.trackId;
-  }
-};
+/// "ALARM  CPA/TCPA  track 5: CPA 0.42 NM in 6.5 min" and the like (for the list, banner and log).
+QString alertTitle(const alerts::Alert& a);
+QString alertLogLine(const alerts::AlertLogEntry& e);
 
 class SimHistory {
  public:
+  /// Entries of the alert history kept (older ones dropped).
+  static constexpr std::size_t kAlertHistoryLimit = 2000;
+
   void clear();
   /// Appends a frame's batches and makes it the latest.
   void append(const LiveFrame& frame);
@@ -38,17 +34,23 @@ class SimHistory {
   /// Every radar fix (matched picture) of the run, oldest first.
   [[nodiscard]] const std::vector<RadarFixSample>& radarFixes() const { return radarFixes_; }
 
-  [[nodiscard]] const std::set<Alarm>& alarms() const { return alarms_; }
-  [[nodiscard]] bool unacknowledged(Alarm::Kind kind, int trackId) const;
-  void acknowledgeAll() { alarms_.clear(); }
+  /// The alerts of the latest frame, most urgent first.
+  [[nodiscard]] const std::vector<alerts::Alert>& alerts() const { return latest_.alerts; }
+  [[nodiscard]] const alerts::Alert* alert(alerts::AlertId id) const;
+  /// An alert of this id that still waits for acknowledgement (unacknowledged or silenced).
+  [[nodiscard]] bool unacknowledged(alerts::AlertId id) const;
+  /// The alert log of the run, oldest first (at most kAlertHistoryLimit entries).
+  [[nodiscard]] const std::deque<alerts::AlertLogEntry>& alertHistory() const { return alertHistory_; }
+  /// Alert log entries appended since clear(), dropped ones included.
+  [[nodiscard]] std::uint64_t alertHistoryCount() const { return alertHistoryCount_; }
 
  private:
   LiveFrame latest_;
   std::vector<OwnSample> own_;
   std::map<int, std::vector<TrackSample>> tracks_;
   std::vector<RadarFixSample> radarFixes_;
-  std::set<Alarm> alarms_;
-  std::array<bool, nav::kDrkfBlockCount> noisy_{};  ///< the flags of the latest frame (rising edges alarm)
+  std::deque<alerts::AlertLogEntry> alertHistory_;
+  std::uint64_t alertHistoryCount_ = 0;
 };
 
 }  // namespace reckoner::ui

@@ -83,6 +83,15 @@ void SimulationController::cancelTrack(int trackId) {
 void SimulationController::setDrLimit(double metres) {
   sim_.post(&SimulationWorker::setDrLimit, metres);
 }
+void SimulationController::setCpaLimits(double cpaM, double tcpaS) {
+  sim_.post(&SimulationWorker::setCpaLimits, cpaM, tcpaS);
+}
+void SimulationController::acknowledgeAlert(alerts::AlertId id) {
+  sim_.post(&SimulationWorker::acknowledgeAlert, id);
+}
+void SimulationController::silenceAlerts() {
+  sim_.post(&SimulationWorker::silenceAlerts);
+}
 void SimulationController::requestScenario() {
   sim_.post(&SimulationWorker::requestScenario);
 }

@@ -37,6 +37,10 @@ class SimulationController : public QObject {
   void acquireAt(double xM, double yM);
   void cancelTrack(int trackId);
   void setDrLimit(double metres);
+  void setCpaLimits(double cpaM, double tcpaS);
+  /// One alert acknowledged; every audible alert silenced for 30 s (docs/alerts.md).
+  void acknowledgeAlert(alerts::AlertId id);
+  void silenceAlerts();
   /// Asks for the edited scenario; scenarioReady() answers.
   void requestScenario();
 

@@ -118,6 +118,10 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
   rateWindow_.clear();
   sweepCounter_ = 0;
   drHorizon_ = nav::DeadReckoningHorizon{};
+  alerts_ = alerts::AlertManager{};
+  sim::AlertFeedSettings feedSettings = sim::alertFeedSettingsFor(engine_->scenario());
+  feedSettings.drLimitM = drLimitM_;
+  alertFeed_.emplace(feedSettings);
   emit loaded(engine_->scenario());
   // The first frame shows the state at t = 0 + one step, so the picture is never empty.
   stepEngine();
@@ -239,6 +243,11 @@ void SimulationWorker::absorb(sim::SimFrame&& f) {
     }
   }
   pending_.events.insert(pending_.events.end(), f.trackEvents.begin(), f.trackEvents.end());
+  if (alertFeed_) {
+    alertFeed_->feed(f, alerts_);
+    const auto log = alerts_.takeLog();
+    pending_.alertLog.insert(pending_.alertLog.end(), log.begin(), log.end());
+  }
   // Radar fixes are taken at sweep ends, inside the cycle; the truth they are scored against is the
   // cycle's end, which is the fix's time when the sweep ends on a step (the usual 1 s step and 2 s
   // sweep). Fixes in between are scored against it too: the plot shows them; their NEES is only
@@ -294,6 +303,8 @@ void SimulationWorker::maybeEmit(bool force) {
     picture_.reset();
     rasterisedNs_ = now;
   }
+  pending_.alerts = alerts_.alerts();
+  pending_.alertAudible = alerts_.audible();
   pending_.running = rate_ != 0.0;
   pending_.finished = engine_->finished();
   pending_.durationS = toSeconds(engine_->scenario().durationUs);
@@ -310,6 +321,7 @@ void SimulationWorker::maybeEmit(bool force) {
   emit frameReady(pending_);
   // Keep the state that persists between frames; clear the batches.
   pending_.ownHistory.clear();
+  pending_.alertLog.clear();
   pending_.trackHistory.clear();
   pending_.events.clear();
   pending_.radarFixes.clear();
@@ -427,6 +439,38 @@ void SimulationWorker::cancelTrack(int trackId) {
 void SimulationWorker::setDrLimit(double metres) {
   if (!(metres > 0.0) || !std::isfinite(metres)) return;
   drLimitM_ = metres;
+  if (alertFeed_) {
+    sim::AlertFeedSettings s = alertFeed_->settings();
+    s.drLimitM = metres;
+    alertFeed_->setSettings(s);
+  }
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::setCpaLimits(double cpaM, double tcpaS) {
+  if (!alertFeed_) return;
+  sim::AlertFeedSettings s = alertFeed_->settings();
+  s.cpa.cpaM = cpaM;
+  s.cpa.tcpaS = tcpaS;
+  try {
+    alertFeed_->setSettings(s);
+  } catch (const std::exception& e) {
+    emit failed(QString::fromStdString(e.what()));
+  }
+}
+
+void SimulationWorker::acknowledgeAlert(alerts::AlertId id) {
+  if (engine_ && alerts_.acknowledge(engine_->timeUs(), id)) alertsChanged();
+}
+
+void SimulationWorker::silenceAlerts() {
+  if (engine_ && alerts_.silenceAll(engine_->timeUs()) > 0) alertsChanged();
+}
+
+void SimulationWorker::alertsChanged() {
+  const auto log = alerts_.takeLog();
+  pending_.alertLog.insert(pending_.alertLog.end(), log.begin(), log.end());
   dirty_ = true;
   maybeEmit(true);
 }

@@ -11,9 +11,11 @@
 #include <memory>
 #include <optional>
 
+#include "alerts/alert_manager.h"
 #include "charts/model/chart_model.h"
 #include "navigation/dead_reckoning_monitor.h"
 #include "radar/land_mask.h"
+#include "sim/alert_feed.h"
 #include "ui/bridge/live_frame.h"
 
 namespace reckoner::ui {
@@ -48,8 +50,13 @@ class SimulationWorker : public QObject {
   void addTarget(double xM, double yM, double vxMps, double vyMps);
   void acquireAt(double xM, double yM);
   void cancelTrack(int trackId);
-  /// The 95% position error limit of the dead-reckoning indication, metres.
+  /// The 95% position error limit of the dead-reckoning indication and alert, metres.
   void setDrLimit(double metres);
+  /// The CPA (m) and TCPA (s) limits of the CPA/TCPA alert from now on.
+  void setCpaLimits(double cpaM, double tcpaS);
+  /// Operator actions on one alert (docs/alerts.md); applied at the current simulated time.
+  void acknowledgeAlert(reckoner::alerts::AlertId id);
+  void silenceAlerts();
   /// Emits scenarioSnapshot() with the scenario as edited so far (for saving).
   void requestScenario();
   /// The charts the window shows: their radar contours and land areas (around the scenario's origin)
@@ -100,6 +107,9 @@ class SimulationWorker : public QObject {
   qint64 rasterisedNs_ = 0;
   std::shared_ptr<const RadarMatchShown> match_;
   double drLimitM_ = 185.2;  // 0.1 NM
+  alerts::AlertManager alerts_;
+  std::optional<sim::AlertFeed> alertFeed_;
+  void alertsChanged();
   nav::DeadReckoningHorizon drHorizon_;
 };
 

@@ -364,8 +364,11 @@ void EcdisView::paintTarget(QPainter& p, const sim::TrackSnapshot& t, const Targ
   namespace tk = est::ttkf;
   const auto& x = t.estimate.x;
   const Local at = localAt(x[tk::kTgtX], x[tk::kTgtY]);
-  const bool alarm = history_->unacknowledged(Alarm::Kind::Dangerous, t.trackId);
-  const bool danger = t.dangerous && t.status != track::TrackStatus::Lost;
+  // Dangerous while the tracker says so or its CPA/TCPA alarm stands (the alarm's hysteresis keeps it a
+  // little longer); flashing while that alarm waits for acknowledgement.
+  const alerts::AlertId cpaAlert{alerts::AlertKind::CpaTcpa, t.trackId};
+  const bool alarm = history_->unacknowledged(cpaAlert);
+  const bool danger = (t.dangerous || history_->alert(cpaAlert)) && t.status != track::TrackStatus::Lost;
   const QColor c = danger ? colour("danger") : colour("target");
   const double width = danger ? 2.5 : 1.6;
   const double r = k.radiusPx;

@@ -158,6 +158,7 @@ MatchResult matchEchoes(const std::vector<EchoPoint>& echoes, const SweepPose& p
   if (fix.failed) return out;
   const Eigen::LDLT<est::Mat<3>> ldlt(fix.last.information);
   if (!est::ldltPositiveDefinite(ldlt)) return out;
+  // The fix and its covariance, the inverse normal matrix of the last iteration.
   out.correction = fix.correction;
   out.covariance = ldlt.solve(est::Mat<3>::Identity());
   est::symmetrise(out.covariance);

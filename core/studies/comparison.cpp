@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "common/angles.h"
 #include "io/error_line.h"
 #include "sim/scenario_run.h"
 #include "sim/simulation_engine.h"
@@ -43,111 +44,164 @@ track::OwnShipInput ownInput(const est::drkf::Belief& b, TimeUs t) {
   return {t, nav::groundStateOf(b), nav::groundCovarianceOf(b), 0.0};
 }
 
-RunOutcome runOnce(const Scenario& s, std::uint64_t seed, bool timePropagation) {
-  SimulationEngine engine(s, seed);
-  const geo::LocalFrame& frame = engine.frame();
-  const nav::DrkfConfig ownConfig = drkfConfigFor(s);
-  nav::Drkf dec(ownConfig, frame, engine.drkf().belief(), 0);
+/// Own ship's events of one frame, in time order (at equal times: epochs, then sweep ends, then plots).
+enum class EventKind { Epoch, SweepEnd, Plot };
+struct FrameEvent {
+  TimeUs t;
+  EventKind kind;
+  std::size_t index;  ///< into the frame's updates, sweeps or plots
+};
+
+std::vector<FrameEvent> eventsOf(const SimFrame& f) {
+  std::vector<FrameEvent> events;
+  for (std::size_t i = 0; i < f.updates.size(); ++i)
+    events.push_back({f.updates[i].timeUs, EventKind::Epoch, i});
+  for (std::size_t i = 0; i < f.sweeps.size(); ++i)
+    events.push_back({f.sweeps[i].timeUs, EventKind::SweepEnd, i});
+  for (std::size_t i = 0; i < f.plots.size(); ++i) events.push_back({f.plots[i].timeUs, EventKind::Plot, i});
+  std::stable_sort(events.begin(), events.end(), [](const FrameEvent& a, const FrameEvent& b) {
+    return a.t != b.t ? a.t < b.t : static_cast<int>(a.kind) < static_cast<int>(b.kind);
+  });
+  return events;
+}
+
+track::TrackManagerConfig knownAssociationConfig(const Scenario& s) {
   track::TrackManagerConfig tmc = trackManagerConfigFor(s.tracker, s.radar.sweepPeriodS);
   tmc.association = track::Association::Known;
-  track::TrackManager bank(tmc);
+  return tmc;
+}
+
+track::CoupledConfig coupledConfig(const Scenario& s, const nav::DrkfConfig& own) {
   track::CoupledConfig cc;
-  cc.own = ownConfig;
+  cc.own = own;
   cc.targetAcceleration = s.tracker.targetAcceleration;
   cc.gateProbability = s.tracker.gateProbability;
   cc.initialSpeedSdMps = s.tracker.initialSpeedSdMps;
-  track::CoupledDrttkf cpl(cc, frame, engine.drkf().belief(), 0);
+  return cc;
+}
 
-  RunOutcome out;
-  std::map<int, TimeUs> firstSeen;
-  enum class Kind { Epoch, SweepEnd, Plot };
-  struct Event {
-    TimeUs t;
-    Kind kind;
-    std::size_t index;
-  };
-  while (!engine.finished()) {
-    const SimFrame f = engine.step();
-    std::vector<Event> events;
-    for (std::size_t i = 0; i < f.updates.size(); ++i)
-      events.push_back({f.updates[i].timeUs, Kind::Epoch, i});
-    for (std::size_t i = 0; i < f.sweeps.size(); ++i)
-      events.push_back({f.sweeps[i].timeUs, Kind::SweepEnd, i});
-    for (std::size_t i = 0; i < f.plots.size(); ++i) events.push_back({f.plots[i].timeUs, Kind::Plot, i});
-    std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
-      return a.t != b.t ? a.t < b.t : static_cast<int>(a.kind) < static_cast<int>(b.kind);
-    });
-    for (const Event& e : events) {
-      if (e.kind == Kind::Epoch) {
-        std::vector<sensors::OwnShipSample> samples;
-        for (const auto& m : f.measurements)
-          if (sensors::timeOf(m) == e.t) samples.push_back(m);
-        auto t0 = Clock::now();
-        dec.update(e.t, samples);
-        bank.feedOwnShip(ownInput(dec.belief(), e.t));
-        auto t1 = Clock::now();
-        cpl.updateOwnShip(e.t, samples);
-        auto t2 = Clock::now();
-        out.decUs += microseconds(t1 - t0);
-        out.cplUs += microseconds(t2 - t1);
-      } else if (e.kind == Kind::SweepEnd) {
-        auto t0 = Clock::now();
-        bank.endSweep(e.t);
-        out.decUs += microseconds(Clock::now() - t0);
-      } else {
-        const auto& p = f.plots[e.index];
-        const int tag = f.plotSources[e.index];
-        firstSeen.emplace(tag, p.timeUs);
-        auto t0 = Clock::now();
-        const auto ownD = nav::groundStateOf(dec.belief());
-        bank.addPlot(track::toGrid(p, frame.gridInfo({ownD[0], ownD[1]})), tag);
-        auto t1 = Clock::now();
-        const auto ownC = cpl.ownShip().x;
-        cpl.updateRadar(tag,
-                        track::toGrid(p, frame.gridInfo({ownC[est::drkf::kPosX], ownC[est::drkf::kPosY]})));
-        auto t2 = Clock::now();
-        out.decUs += microseconds(t1 - t0);
-        out.cplUs += microseconds(t2 - t1);
+/// One run of the comparison: the decoupled filters (the DRKF feeding a bank of TTKFs with known
+/// association) and the coupled filter on the same engine's streams, timed and scored against truth.
+class ComparisonRun {
+ public:
+  ComparisonRun(const Scenario& s, std::uint64_t seed)
+      : s_(s),
+        engine_(s, seed),
+        frame_(engine_.frame()),
+        ownConfig_(drkfConfigFor(s)),
+        dec_(ownConfig_, frame_, engine_.drkf().belief(), 0),
+        bank_(knownAssociationConfig(s)),
+        cpl_(coupledConfig(s, ownConfig_), frame_, engine_.drkf().belief(), 0) {}
+
+  /// Runs the scenario to its end; with `timePropagation`, also times one covariance propagation.
+  RunOutcome run(bool timePropagation) {
+    while (!engine_.finished()) {
+      const SimFrame f = engine_.step();
+      for (const FrameEvent& e : eventsOf(f)) {
+        if (e.kind == EventKind::Epoch)
+          onEpoch(f, e.t);
+        else if (e.kind == EventKind::SweepEnd)
+          onSweepEnd(e.t);
+        else
+          onPlot(f, e.index);
       }
+      // Errors at the frame time (an own-ship epoch when step and sensor rates agree).
+      if (!f.updates.empty() && f.updates.back().timeUs == f.timeUs) scoreTargets(f);
     }
-    // Errors at the frame time (an own-ship epoch when step and sensor rates agree).
-    if (f.updates.empty() || f.updates.back().timeUs != f.timeUs) continue;
-    for (std::size_t i = 0; i < s.targets.size(); ++i) {
-      const int tag = s.targets[i].id;
-      const auto seen = firstSeen.find(tag);
-      if (seen == firstSeen.end() || f.timeUs < seen->second + 60 * kMicrosPerSecond) continue;
+    out_.seconds = toSeconds(s_.durationUs);
+    out_.dim = cpl_.dim();
+    if (timePropagation) timeOnePropagation();
+    return out_;
+  }
+
+ private:
+  void onEpoch(const SimFrame& f, TimeUs t) {
+    std::vector<sensors::OwnShipSample> samples;
+    for (const auto& m : f.measurements)
+      if (sensors::timeOf(m) == t) samples.push_back(m);
+    auto t0 = Clock::now();
+    dec_.update(t, samples);
+    bank_.feedOwnShip(ownInput(dec_.belief(), t));
+    auto t1 = Clock::now();
+    cpl_.updateOwnShip(t, samples);
+    auto t2 = Clock::now();
+    out_.decUs += microseconds(t1 - t0);
+    out_.cplUs += microseconds(t2 - t1);
+  }
+
+  void onSweepEnd(TimeUs t) {
+    auto t0 = Clock::now();
+    bank_.endSweep(t);
+    out_.decUs += microseconds(Clock::now() - t0);
+  }
+
+  void onPlot(const SimFrame& f, std::size_t index) {
+    const auto& p = f.plots[index];
+    const int tag = f.plotSources[index];
+    firstSeen_.emplace(tag, p.timeUs);
+    auto t0 = Clock::now();
+    const auto ownD = nav::groundStateOf(dec_.belief());
+    bank_.addPlot(track::toGrid(p, frame_.gridInfo({ownD[0], ownD[1]})), tag);
+    auto t1 = Clock::now();
+    const auto ownC = cpl_.ownShip().x;
+    cpl_.updateRadar(tag,
+                     track::toGrid(p, frame_.gridInfo({ownC[est::drkf::kPosX], ownC[est::drkf::kPosY]})));
+    auto t2 = Clock::now();
+    out_.decUs += microseconds(t1 - t0);
+    out_.cplUs += microseconds(t2 - t1);
+  }
+
+  /// Each target's errors in both filters, from 60 s after its first plot on.
+  void scoreTargets(const SimFrame& f) {
+    for (std::size_t i = 0; i < s_.targets.size(); ++i) {
+      const int tag = s_.targets[i].id;
+      const auto seen = firstSeen_.find(tag);
+      if (seen == firstSeen_.end() || f.timeUs < seen->second + 60 * kMicrosPerSecond) continue;
       const VesselTruth& tr = f.targets[i];
       const est::Vec<4> truth(tr.position.xM, tr.position.yM, tr.groundVxMps(), tr.groundVyMps());
-      for (const auto& t : bank.tracks()) {
+      for (const auto& t : bank_.tracks()) {
         if (t.tag() != tag || !t.active()) continue;
-        const tk::Belief b = bank.beliefAt(t, f.timeUs);
-        out.dec.add(truth - b.x.segment<4>(tk::kTgtX), b.P.block<4, 4>(tk::kTgtX, tk::kTgtX));
+        const tk::Belief b = bank_.beliefAt(t, f.timeUs);
+        out_.dec.add(truth - b.x.segment<4>(tk::kTgtX), b.P.block<4, 4>(tk::kTgtX, tk::kTgtX));
       }
-      const int k = cpl.indexOf(tag);
-      if (k >= 0) out.cpl.add(truth - cpl.target(k).head<4>(), cpl.targetCovariance(k).topLeftCorner<4, 4>());
+      const int k = cpl_.indexOf(tag);
+      if (k >= 0)
+        out_.cpl.add(truth - cpl_.target(k).head<4>(), cpl_.targetCovariance(k).topLeftCorner<4, 4>());
     }
   }
-  out.seconds = toSeconds(s.durationUs);
-  out.dim = cpl.dim();
-  if (timePropagation) {
-    // One covariance propagation over 1 s: the coupled joint state against the DRKF plus every TTKF.
+
+  /// One covariance propagation over 1 s: the coupled joint state against the DRKF plus every TTKF.
+  void timeOnePropagation() {
     constexpr int reps = 20;
-    track::CoupledDrttkf c = cpl;
+    track::CoupledDrttkf c = cpl_;
     auto t0 = Clock::now();
-    for (int r = 1; r <= reps; ++r) c.predictTo(cpl.timeUs() + r * kMicrosPerSecond);
-    out.cplPropUs = microseconds(Clock::now() - t0) / reps;
-    nav::Drkf d = dec;
+    for (int r = 1; r <= reps; ++r) c.predictTo(cpl_.timeUs() + r * kMicrosPerSecond);
+    out_.cplPropUs = microseconds(Clock::now() - t0) / reps;
+    nav::Drkf d = dec_;
     std::vector<track::Ttkf> filters;
-    for (const auto& t : bank.tracks())
+    for (const auto& t : bank_.tracks())
       if (const auto* f = t.filter.ttkf()) filters.push_back(*f);
     t0 = Clock::now();
     for (int r = 1; r <= reps; ++r) {
-      d.predictTo(dec.timeUs() + r * kMicrosPerSecond);
-      for (auto& f : filters) f.predictTo(dec.timeUs() + r * kMicrosPerSecond);
+      d.predictTo(dec_.timeUs() + r * kMicrosPerSecond);
+      for (auto& f : filters) f.predictTo(dec_.timeUs() + r * kMicrosPerSecond);
     }
-    out.decPropUs = microseconds(Clock::now() - t0) / reps;
+    out_.decPropUs = microseconds(Clock::now() - t0) / reps;
   }
-  return out;
+
+  const Scenario& s_;
+  SimulationEngine engine_;
+  const geo::LocalFrame& frame_;
+  nav::DrkfConfig ownConfig_;
+  nav::Drkf dec_;
+  track::TrackManager bank_;
+  track::CoupledDrttkf cpl_;
+  RunOutcome out_;
+  std::map<int, TimeUs> firstSeen_;
+};
+
+RunOutcome runOnce(const Scenario& s, std::uint64_t seed, bool timePropagation) {
+  return ComparisonRun(s, seed).run(timePropagation);
 }
 }  // namespace
 
@@ -165,7 +219,7 @@ Scenario withTargetCount(const Scenario& s, int n) {
     TargetSpec t = s.targets[static_cast<std::size_t>(k % m)];
     const int turn = k / m;
     if (turn > 0) {
-      const double a = 2.0 * 3.14159265358979323846 * turn / turns, c = std::cos(a), sn = std::sin(a);
+      const double a = 2.0 * kPi * turn / turns, c = std::cos(a), sn = std::sin(a);
       const auto rot = [&](double x, double y) {
         return std::array<double, 2>{c * x + sn * y, -sn * x + c * y};
       };

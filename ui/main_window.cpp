@@ -6,9 +6,12 @@
 #include <QDir>
 #include <QEventLoop>
 #include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QSettings>
 #include <QSortFilterProxyModel>
@@ -52,7 +55,10 @@ QString escape(const std::string& s) {
 }  // namespace
 
 MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
-    : QMainWindow(parent), controller_(new SimulationController(this)), view_(new EcdisView(this)) {
+    : QMainWindow(parent),
+      controller_(new SimulationController(this)),
+      view_(new EcdisView(this)),
+      options_(options) {
   setWindowTitle(QStringLiteral("Reckoner"));
   setObjectName(QStringLiteral("mainWindow"));
   setCentralWidget(view_);
@@ -75,6 +81,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
   connect(chartLoad_.worker(), &ChartLoadWorker::loaded, this, &MainWindow::onChartsLoaded,
           Qt::QueuedConnection);
   connect(controller_, &SimulationController::failed, this, &MainWindow::reportError);
+  connect(controller_, &SimulationController::scenarioEdited, this, [this] { setWindowModified(true); });
   connect(controller_, &SimulationController::loaded, this, [this](const sim::Scenario& s) {
     localFrame_.emplace(s.origin.latDeg, s.origin.lonDeg);
     view_->setHistory(&history_, *localFrame_);
@@ -150,10 +157,12 @@ bool MainWindow::openScenario(const QString& path) {
 void MainWindow::loadScenario(const sim::Scenario& scenario, const QString& source) {
   history_.clear();
   scenarioSource_ = source;
+  scenarioName_ = QString::fromStdString(scenario.name);
+  setWindowModified(false);
   firstFrame_ = true;
   view_->setSelectedTrack(std::nullopt);
   controller_->load(scenario);
-  setWindowTitle(QStringLiteral("Reckoner — %1").arg(QString::fromStdString(scenario.name)));
+  updateTitle();
   runAction_->setText(tr("Run"));
 }
 
@@ -218,8 +227,29 @@ bool MainWindow::saveScenario(const QString& path) {
   }
   addRecent(QStringLiteral("recent/scenarios"), path);
   scenarioSource_ = path;
+  setWindowModified(false);
+  updateTitle();
   statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
   return true;
+}
+
+bool MainWindow::save() {
+  if (scenarioSource_.isEmpty() || scenarioSource_.startsWith(kBuiltinPrefix)) return saveAs();
+  return saveScenario(scenarioSource_);
+}
+
+bool MainWindow::saveAs() {
+  QString path = QFileDialog::getSaveFileName(this, tr("Save scenario"), {}, tr("Scenarios (*.json)"));
+  if (path.isEmpty()) return false;
+  if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");  // else the Open dialog hides it
+  return saveScenario(path);
+}
+
+void MainWindow::updateTitle() {
+  // "[*]" is where Qt shows the unsaved-changes mark (setWindowModified).
+  const QString where =
+      scenarioSource_.startsWith(kBuiltinPrefix) ? scenarioSource_ : QFileInfo(scenarioSource_).fileName();
+  setWindowTitle(QStringLiteral("%1 — %2[*] — Reckoner").arg(scenarioName_, where));
 }
 
 void MainWindow::setRate(double rate) {
@@ -442,6 +472,16 @@ void MainWindow::writeSettings() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (isWindowModified() && options_.askToSaveOnClose) {
+    const auto answer = QMessageBox::question(
+        this, tr("Unsaved changes"),
+        tr("The scenario has changes made while it ran (orders, sensors, targets). Save them?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel || (answer == QMessageBox::Save && !save())) {
+      event->ignore();
+      return;
+    }
+  }
   writeSettings();
   QMainWindow::closeEvent(event);
 }

@@ -43,6 +43,8 @@ struct MainWindowOptions {
   std::string scenarioPath;    ///< empty: the last one (settings) or the embedded default
   std::string encPath;         ///< empty: the last one (settings) or the embedded default chart
   bool restoreSession = true;  ///< reopen the last scenario and chart named in the settings
+  /// On closing with unsaved operator changes, ask whether to save them (tests say no).
+  bool askToSaveOnClose = true;
 };
 
 class MainWindow : public QMainWindow {
@@ -62,6 +64,10 @@ class MainWindow : public QMainWindow {
   bool saveScenario(const QString& path);
   /// Simulated seconds per wall second; 0 pauses, < 0 as fast as possible.
   void setRate(double rate);
+  /// Save to the scenario's file, or ask for one (a built-in scenario has none).
+  bool save();
+  /// Asks for a file name (".json" added when it has no suffix) and saves.
+  bool saveAs();
 
   // For tests and the benchmark.
   [[nodiscard]] EcdisView* chart() const { return view_; }
@@ -119,6 +125,7 @@ class MainWindow : public QMainWindow {
   void updateClock();
   void updateAlarms();
   void appendAlertLog(const LiveFrame& frame);
+  void updateTitle();
   void showPick(QPointF widgetPoint);
   void showPickedFeatures(const std::vector<charts::PickedFeature>& features, charts::LatLon where);
   void addRecent(const QString& key, const QString& path);
@@ -159,6 +166,8 @@ class MainWindow : public QMainWindow {
   bool firstFrame_ = true;
   std::optional<geo::LocalFrame> localFrame_;
   QString scenarioSource_;
+  QString scenarioName_;
+  MainWindowOptions options_;
   QString chartSource_;
   QString lastError_;
   double lastRunRate_ = 10.0;

@@ -18,6 +18,8 @@
 #include <cmath>
 
 #include "charts/s57/s57_loader.h"
+#include "files/scenario_json.h"
+#include "resources/embedded.h"
 #include "ui/main_window.h"
 #include "ui/panels/alert_panel.h"
 #include "ui/panels/own_ship_panel.h"
@@ -115,11 +117,22 @@ void MainWindow::buildFileMenu() {
         QFileDialog::getOpenFileName(this, tr("Open scenario"), {}, tr("Scenarios (*.json)"));
     if (!path.isEmpty()) openScenario(path);
   });
-  file->addAction(tr("Save scenario as…"), QKeySequence::SaveAs, this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save scenario"), {}, tr("Scenarios (*.json)"));
-    if (!path.isEmpty()) saveScenario(path);
-  });
+  QMenu* builtins = file->addMenu(tr("Open built-in scenario"));
+  builtins->setObjectName(QStringLiteral("builtinScenarios"));
+  for (const resources::EmbeddedFile& f : resources::scenarios()) {
+    const QString name = QString::fromUtf8(f.name.data(), static_cast<qsizetype>(f.name.size()));
+    QString title = name;
+    try {
+      title += QStringLiteral("  —  ") +
+               QString::fromStdString(io::parseScenario(f.text, std::string("builtin:").append(f.name)).name);
+    } catch (const io::InputError&) {  // tst_scenario_json keeps every built-in valid; show the name only
+    }
+    QAction* a =
+        builtins->addAction(title, this, [this, name] { openScenario(QStringLiteral("builtin:") + name); });
+    a->setData(name);
+  }
+  file->addAction(tr("Save scenario"), QKeySequence::Save, this, [this] { save(); });
+  file->addAction(tr("Save scenario as…"), QKeySequence::SaveAs, this, [this] { saveAs(); });
   file->addSeparator();
   file->addAction(tr("Open ENC cell…"), this, [this] {
     const QString path =

@@ -41,6 +41,7 @@ inline void runUntil(MainWindow& w, double tS) {
 inline MainWindowOptions freshOptions() {
   MainWindowOptions o;
   o.restoreSession = false;
+  o.askToSaveOnClose = false;
   return o;
 }
 

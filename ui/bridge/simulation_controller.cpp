@@ -44,35 +44,43 @@ void SimulationController::runTo(double tS, double rate) {
 }
 void SimulationController::orderOwnShip(double trueHeadingRad, double speedMps) {
   sim_.post(&SimulationWorker::orderOwnShip, trueHeadingRad, speedMps);
+  emit scenarioEdited();
 }
 void SimulationController::orderTarget(int targetId, double trueHeadingRad, double speedMps,
                                        double turnRateRadPerS, double accelerationMps2) {
   sim_.post(&SimulationWorker::orderTarget, targetId, trueHeadingRad, speedMps, turnRateRadPerS,
             accelerationMps2);
+  emit scenarioEdited();
 }
 void SimulationController::setSensorPower(sensors::SensorId id, bool on) {
   sim_.post(&SimulationWorker::setSensorPower, id, on);
+  emit scenarioEdited();
 }
 void SimulationController::setSpeedlogMode(sensors::SpeedlogMode mode) {
   sim_.post(&SimulationWorker::setSpeedlogMode, mode);
+  emit scenarioEdited();
 }
 void SimulationController::setRadarPower(bool on) {
   sim_.post(&SimulationWorker::setRadarPower, on);
+  emit scenarioEdited();
 }
 void SimulationController::setCharts(const std::vector<charts::CellPtr>& cells) {
   sim_.post(&SimulationWorker::setCharts, cells);
 }
 void SimulationController::setRadarMatching(bool on) {
   sim_.post(&SimulationWorker::setRadarMatching, on);
+  emit scenarioEdited();
 }
 void SimulationController::setRadarPicturesWanted(bool on) {
   sim_.post(&SimulationWorker::setRadarPicturesWanted, on);
 }
 void SimulationController::setTrackerKind(track::TrackerKind kind) {
   sim_.post(&SimulationWorker::setTrackerKind, kind);
+  emit scenarioEdited();
 }
 void SimulationController::addTarget(double xM, double yM, double vxMps, double vyMps) {
   sim_.post(&SimulationWorker::addTarget, xM, yM, vxMps, vyMps);
+  emit scenarioEdited();
 }
 void SimulationController::acquireAt(double xM, double yM) {
   sim_.post(&SimulationWorker::acquireAt, xM, yM);

@@ -55,6 +55,9 @@ class SimulationController : public QObject {
   void loaded(const reckoner::sim::Scenario& scenario);
   void scenarioReady(const reckoner::sim::Scenario& scenario);
   void failed(const QString& message);
+  /// An operator change that the scenario records (helm orders, sensors, targets added, tracker
+  /// kind, radar matching): what a save would keep.
+  void scenarioEdited();
 
  private:
   void onFrame(const LiveFrame& frame);

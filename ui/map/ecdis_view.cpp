@@ -10,6 +10,7 @@
 
 #include "common/angles.h"
 #include "common/units.h"
+#include "geo/geodesic.h"
 #include "io/text_format.h"
 
 namespace reckoner::ui {
@@ -175,15 +176,15 @@ QString EcdisView::cursorText(QPointF at) const {
   const charts::LatLon ll = viewport().toLatLon({at.x(), at.y()});
   QString s = latLonText(ll.latDeg, ll.lonDeg);
   if (history_ && !history_->empty() && frame_) {
+    // From own ship along the geodesic: the grid is only valid near its zone, and the cursor may be
+    // anywhere on the chart.
     const auto& x = history_->latest().frame.estimate.x;
-    const geo::GridPoint g = widgetToGrid(at);
-    const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
-    const double gamma = frame_->gridInfo({ox, oy}).convergenceRad;
-    const double brg = wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gamma);
-    const double range = std::hypot(g.xM - ox, g.yM - oy) / frame_->gridInfo({ox, oy}).scale;
-    s += QStringLiteral("   %1° %2 NM")
-             .arg(radToDeg(brg), 5, 'f', 1, QChar('0'))
-             .arg(metresToNm(range), 0, 'f', 2);
+    const geo::GeoPoint own = frame_->toGeodetic({x[est::drkf::kPosX], x[est::drkf::kPosY]});
+    const geo::RangeBearing rb = geo::rangeBearing(own, {ll.latDeg, ll.lonDeg});
+    if (std::isfinite(rb.rangeM))
+      s += QStringLiteral("   %1° %2 NM")
+               .arg(radToDeg(rb.trueBearingRad), 5, 'f', 1, QChar('0'))
+               .arg(metresToNm(rb.rangeM), 0, 'f', 2);
   }
   return s;
 }

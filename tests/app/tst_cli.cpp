@@ -8,6 +8,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "support/compare_near.h"
+
 class TestCli : public QObject {
   Q_OBJECT
 
@@ -76,7 +78,7 @@ class TestCli : public QObject {
     QCOMPARE(last.size(), 24);
     QCOMPARE(last[2], QByteArray("1"));
     QCOMPARE(last[3], QByteArray("confirmed"));
-    QVERIFY(std::abs(last[19].toDouble() - 14.14) < 0.5);  // true speed 14.1 kn
+    RK_COMPARE_NEAR(last[19].toDouble(), 14.14, 0.5);  // true speed 14.1 kn
     const QJsonObject t =
         QJsonDocument::fromJson(read(dir.filePath("summary.json"))).object()["tracking"].toObject();
     QVERIFY(t["continuity"].toDouble() > 0.99);

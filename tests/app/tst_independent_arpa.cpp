@@ -84,6 +84,7 @@
 #include <vector>
 
 #include "support/campaign_tools.h"
+#include "support/compare_near.h"
 #include "support/resource_limits.h"
 
 namespace {
@@ -656,14 +657,10 @@ void scoreRun(const QTemporaryDir& dir, int seed, std::vector<Sample>& samples) 
       const Kinematics atT0 = truth.at(s.target, static_cast<double>(t0Us) * 1e-6);
       const double cpaM = atT0.cpaNm.value_or(kInf) * kMetresPerNm;
       const double tcpaS = atT0.tcpaMin.value_or(kInf) * 60.0;
-      QVERIFY2(std::abs(cpaM - t.toObject()["cpa_nm"].toDouble() * kMetresPerNm) < 1.0 &&
-                   std::abs(tcpaS - t.toObject()["tcpa_s"].toDouble()) < 0.5,
-               qPrintable(QString("%1 %2: truth CPA %3 m, TCPA %4 s at t0; params.json says %5 NM, %6 s")
-                              .arg(out, QString::fromStdString(s.target))
-                              .arg(cpaM)
-                              .arg(tcpaS)
-                              .arg(t.toObject()["cpa_nm"].toDouble())
-                              .arg(t.toObject()["tcpa_s"].toDouble())));
+      const reckoner::test::NearContext at(
+          QString("%1 %2: truth at t0 against params.json").arg(out, QString::fromStdString(s.target)));
+      RK_COMPARE_NEAR(cpaM, t.toObject()["cpa_nm"].toDouble() * kMetresPerNm, 1.0);
+      RK_COMPARE_NEAR(tcpaS, t.toObject()["tcpa_s"].toDouble(), 0.5);
       const auto p = plots.find(s.target);
       QVERIFY2(p != plots.end(), qPrintable(out + ": no plots of " + QString::fromStdString(s.target)));
       // Acquisition: the target's first plot at or after t0 (compared in whole microseconds).

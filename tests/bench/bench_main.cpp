@@ -346,8 +346,8 @@ void BM_EcdisWindow100x40Targets(benchmark::State& state) {
   for (int id = 4; s.targets.size() < 40; ++id) {
     sim::TargetSpec t;
     t.id = id;
-    const double r = 1500.0 + 9500.0 * rng.uniform(), b = 2.0 * M_PI * rng.uniform();
-    const double c = 2.0 * M_PI * rng.uniform(), v = 2.0 + 7.0 * rng.uniform();
+    const double r = 1500.0 + 9500.0 * rng.uniform(), b = 2.0 * kPi * rng.uniform();
+    const double c = 2.0 * kPi * rng.uniform(), v = 2.0 + 7.0 * rng.uniform();
     t.motion.initialPosition = {own.xM + r * std::sin(b), own.yM + r * std::cos(b)};
     t.motion.initialVelocityMps = {v * std::sin(c), v * std::cos(c)};
     s.targets.push_back(t);

@@ -14,8 +14,11 @@
 #include "charts/render/chart_renderer.h"
 #include "charts/render/viewport.h"
 #include "charts/s57/s57_loader.h"
+#include "common/angles.h"
+#include "support/compare_near.h"
 
 using namespace reckoner::charts;
+using reckoner::kPi;
 
 namespace {
 const std::string kEnc = RECKONER_SHARED_DIR "/data/enc";
@@ -34,28 +37,32 @@ class TestChartRender : public QObject {
     const Viewport v({47.27, -122.43}, 20000, 1200, 800);
     for (const LatLon p : {LatLon{47.27, -122.43}, LatLon{47.30, -122.50}, LatLon{47.20, -122.35}}) {
       const LatLon back = v.toLatLon(v.toScreen(p));
-      QVERIFY(std::abs(back.latDeg - p.latDeg) < 1e-9 && std::abs(back.lonDeg - p.lonDeg) < 1e-9);
+      RK_COMPARE_NEAR(back.latDeg, p.latDeg, 1e-9);
+      RK_COMPARE_NEAR(back.lonDeg, p.lonDeg, 1e-9);
     }
     const ScreenPoint c = v.toScreen({47.27, -122.43});
-    QVERIFY(std::abs(c.x - 600) < 1e-9 && std::abs(c.y - 400) < 1e-9);
+    RK_COMPARE_NEAR(c.x, 600, 1e-9);
+    RK_COMPARE_NEAR(c.y, 400, 1e-9);
     // 1 km east at the centre latitude is 1000 / (20000 * 0.28 mm) = 178.6 px to the right.
-    const double dLon = 1000.0 / (6378137.0 * std::cos(47.27 * M_PI / 180.0)) * 180.0 / M_PI;
+    const double dLon = 1000.0 / (6378137.0 * std::cos(47.27 * kPi / 180.0)) * 180.0 / kPi;
     const ScreenPoint e = v.toScreen({47.27, -122.43 + dLon});
-    QVERIFY2(std::abs(e.x - c.x - 1000.0 / (20000 * 0.00028)) < 0.01, qPrintable(QString::number(e.x - c.x)));
-    QVERIFY(std::abs(e.y - c.y) < 1e-6);
+    RK_COMPARE_NEAR(e.x - c.x, 1000.0 / (20000 * 0.00028), 0.01);
+    RK_COMPARE_NEAR(e.y, c.y, 1e-6);
     QVERIFY(v.toScreen({47.28, -122.43}).y < c.y);  // north is up
     // Course-up at 090: east is up.
-    const Viewport r({47.27, -122.43}, 20000, 1200, 800, 0.28, M_PI / 2);
+    const Viewport r({47.27, -122.43}, 20000, 1200, 800, 0.28, kPi / 2);
     const ScreenPoint er = r.toScreen({47.27, -122.43 + dLon});
-    QVERIFY(std::abs(er.x - 600) < 1e-6 && std::abs(400 - er.y - 178.571) < 0.01);
+    RK_COMPARE_NEAR(er.x, 600, 1e-6);
+    RK_COMPARE_NEAR(400 - er.y, 178.571, 0.01);
     const LatLon back = r.toLatLon(er);
-    QVERIFY(std::abs(back.lonDeg - (-122.43 + dLon)) < 1e-9);
+    RK_COMPARE_NEAR(back.lonDeg, -122.43 + dLon, 1e-9);
     // The affine Mercator map the renderer uses agrees with toScreen, rotated or not.
     for (const Viewport& vp : {v, r})
       for (const LatLon ll : {LatLon{47.2, -122.5}, LatLon{47.31, -122.38}}) {
         const MercatorPoint m = toMercator(ll);
         const ScreenPoint a = vp.toScreen(ll), b = vp.mercatorToScreen()(m.x, m.y);
-        QVERIFY(std::abs(a.x - b.x) < 1e-6 && std::abs(a.y - b.y) < 1e-6);
+        RK_COMPARE_NEAR(a.x, b.x, 1e-6);
+        RK_COMPARE_NEAR(a.y, b.y, 1e-6);
       }
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Viewport({89.0, 0.0}, 1000, 10, 10));
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Viewport({0.0, 0.0}, 0, 10, 10));
@@ -233,7 +240,7 @@ class TestChartRender : public QObject {
     QVERIFY(st.notForNavigation);
     const auto at = [&](double xKm, double yKm) {
       const ScreenPoint p =
-          view.toScreen({49.5 + yKm / 110.57, -29.5 + xKm / (111.32 * std::cos(49.5 * M_PI / 180))});
+          view.toScreen({49.5 + yKm / 110.57, -29.5 + xKm / (111.32 * std::cos(49.5 * kPi / 180))});
       return img.pixel(static_cast<int>(p.x), static_cast<int>(p.y)) & 0xFFFFFF;
     };
     QCOMPARE(at(-5.0, -5.0), rgbOf(Palette::Day, "LANDA") & 0xFFFFFF);
@@ -245,7 +252,7 @@ class TestChartRender : public QObject {
   void pickReportsSpeakPlainWords() {
     // GIVEN the default chart WHEN the dangerous wreck is clicked
     const std::vector<CellPtr> cells{loadCell(std::string(kDefaultChartPath))};
-    const LatLon wreck{49.5 + 1.8 / 110.57, -29.5 + 2.8 / (111.32 * std::cos(49.5 * M_PI / 180))};
+    const LatLon wreck{49.5 + 1.8 / 110.57, -29.5 + 2.8 / (111.32 * std::cos(49.5 * kPi / 180))};
     const Viewport view(wreck, 10000, 200, 200);
     const ScreenPoint click = view.toScreen(wreck);
     const auto picked = pickFeatures(cells, view, {click.x + 3, click.y - 2});

@@ -19,6 +19,7 @@
 #include "charts/s57/iso8211.h"
 #include "charts/s57/s57_checks.h"
 #include "charts/s57/s57_loader.h"
+#include "support/compare_near.h"
 #include "support/resource_limits.h"
 
 using namespace reckoner::charts;
@@ -296,8 +297,8 @@ class TestS57Loader : public QObject {
     QCOMPARE(*buoy->number("BOYSHP"), 1.0);
     QCOMPARE(*buoy->number("CATLAM"), 2.0);
     QCOMPARE(buoy->list("COLOUR"), std::vector<std::int64_t>{3});
-    QVERIFY(std::abs(buoy->geometry.parts[0][0].latDeg - 42.3874441) < 1e-6);
-    QVERIFY(std::abs(buoy->geometry.parts[0][0].lonDeg + 71.0547772) < 1e-6);
+    RK_COMPARE_NEAR(buoy->geometry.parts[0][0].latDeg, 42.3874441, 1e-6);
+    RK_COMPARE_NEAR(buoy->geometry.parts[0][0].lonDeg, -71.0547772, 1e-6);
   }
 
   void givenACellCutInHalfAtARecordBoundary_whenLoaded_thenItFailsCountingTheMissingRecords() {

@@ -10,6 +10,7 @@
 
 #include "charts/s57/s57_loader.h"
 #include "common/angles.h"
+#include "support/compare_near.h"
 #include "ui/bridge/radar_raster.h"
 #include "ui/map/chart_view.h"
 
@@ -109,7 +110,7 @@ class TestChartView : public QObject {
     QWheelEvent wheel({200, 150}, view.mapToGlobal(QPointF(200, 150)), QPoint(), QPoint(0, 120), Qt::NoButton,
                       Qt::NoModifier, Qt::NoScrollPhase, false);
     QCoreApplication::sendEvent(&view, &wheel);
-    QVERIFY(std::abs(view.viewport().scaleDenominator() - scale / 1.25) < 1e-6 * scale);
+    RK_COMPARE_NEAR(view.viewport().scaleDenominator(), scale / 1.25, 1e-6 * scale);
     QVERIFY(near(view.viewport().toScreen(anchor), 200, 150));
 
     // WHEN the wreck is clicked (press and release without a drag) THEN its pick report arrives

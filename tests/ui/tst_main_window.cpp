@@ -20,6 +20,7 @@
 #include "main_window_test_helpers.h"
 #include "resources/embedded.h"
 #include "sim/simulation_engine.h"
+#include "support/compare_near.h"
 #include "ui/main_window.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/sensor_panel.h"
@@ -81,10 +82,8 @@ class TestMainWindow : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(w.history().latest().frame.order.has_value(), kTimeoutMs);
     const sim::HelmOrder order = *w.history().latest().frame.order;
     const double orderedTrue = wrapTwoPi(order.headingRad + gi.convergenceRad);
-    QVERIFY2(std::abs(radToDeg(angleDiff(orderedTrue, wantCourse))) < 1.0,
-             qPrintable(QString("ordered %1 deg").arg(radToDeg(orderedTrue))));
-    QVERIFY2(std::abs(order.speedMps - wantSpeed) < 0.1,
-             qPrintable(QString("ordered %1 m/s").arg(order.speedMps)));
+    RK_COMPARE_NEAR(radToDeg(angleDiff(orderedTrue, wantCourse)), 0.0, 1.0);  // deg off the dragged course
+    RK_COMPARE_NEAR(order.speedMps, wantSpeed, 0.1);
     // The turn: after 20 s the heading has moved towards 045 by at most 20 deg (plus the Gauss-Markov
     // wander of the random part), and after 120 s more it is within a few degrees of the order.
     const double t0 = simTime(w);
@@ -95,9 +94,9 @@ class TestMainWindow : public QObject {
     const double left = radToDeg(angleDiff(w.history().latest().frame.truth.headingRad, order.headingRad));
     qInfo("ordered %.2f deg %.3f m/s; turned %.1f deg in the first 20 s; %.2f deg from the order after 140 s",
           radToDeg(orderedTrue), order.speedMps, turned, left);
-    QVERIFY2(std::abs(left) < 5.0, qPrintable(QString("%1 deg from the order").arg(left)));
+    RK_COMPARE_NEAR(left, 0.0, 5.0);  // deg from the order
     const auto& tr = w.history().latest().frame.truth;
-    QVERIFY(std::abs(std::hypot(tr.waterVxMps, tr.waterVyMps) - wantSpeed) < 0.3);
+    RK_COMPARE_NEAR(std::hypot(tr.waterVxMps, tr.waterVyMps), wantSpeed, 0.3);
   }
 
   void gpsOffGrowsTheEllipseAndShowsDeadReckoning() {
@@ -296,7 +295,7 @@ class TestMainWindow : public QObject {
     const sim::Scenario reread = io::loadScenarioFile(path.toStdString());
     QCOMPARE(reread.tracker.kindChanges.size(), std::size_t(1));
     QCOMPARE(reread.tracker.kindChanges[0].second, track::TrackerKind::Imm);
-    QVERIFY(std::abs(toSeconds(reread.tracker.kindChanges[0].first) - 20.0) < 1.01);
+    RK_COMPARE_NEAR(toSeconds(reread.tracker.kindChanges[0].first), 20.0, 1.01);
   }
 
   void aTargetSteeredFromTheChartIsFlaggedAndItsVectorSettles() {
@@ -346,7 +345,7 @@ class TestMainWindow : public QObject {
         "target 2 turned %.1f deg; flagged %d; 60 s after the turn: course error %.2f deg, speed error %.2f "
         "kn",
         turned, flagged, courseErr, speedErrKn);
-    QVERIFY(std::abs(turned - 40.0) < 3.0);
+    RK_COMPARE_NEAR(turned, 40.0, 3.0);
     QVERIFY(flagged);
     // IMO MSC.192(79) asks after the one-minute trend for the relative course within 11 deg and the
     // relative speed within 1.5 kn, and after three minutes for the true course within 5 deg and the
@@ -472,15 +471,14 @@ class TestMainWindow : public QObject {
     runUntil(w, 6.0);
     QVERIFY(w.history().latest().frame.order.has_value());
     const double first = w.history().latest().frame.order->headingRad;
-    QVERIFY2(std::abs(radToDeg(angleDiff(first, course)) - 5.0) < 0.5,
-             qPrintable(QString("%1 -> %2").arg(radToDeg(course)).arg(radToDeg(first))));
+    RK_COMPARE_NEAR(radToDeg(angleDiff(first, course)), 5.0, 0.5);  // deg from the course to the order
     QTest::keyClick(w.chart(), Qt::Key_Left, Qt::ShiftModifier);
     QTest::keyClick(w.chart(), Qt::Key_Up);
     runUntil(w, 7.0);
     const sim::HelmOrder o = *w.history().latest().frame.order;
-    QVERIFY(std::abs(radToDeg(angleDiff(o.headingRad, first)) + 1.0) < 1e-6);
+    RK_COMPARE_NEAR(radToDeg(angleDiff(o.headingRad, first)), -1.0, 1e-6);
     const double speed = std::hypot(f.estimate.x[est::drkf::kVelX], f.estimate.x[est::drkf::kVelY]);
-    QVERIFY2(std::abs(o.speedMps - speed - knotsToMps(0.5)) < 0.05, qPrintable(QString::number(o.speedMps)));
+    RK_COMPARE_NEAR(o.speedMps - speed, knotsToMps(0.5), 0.05);
   }
 
   void chartFoldersLoadInTheBackgroundAndBadCellsAreReported() {

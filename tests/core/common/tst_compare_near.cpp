@@ -1,9 +1,10 @@
 // RK_COMPARE_NEAR passes inside the tolerance and fails outside it, on NaN and infinity, and on a
 // tolerance that is not a finite non-negative number; each failure is expected here (QEXPECT_FAIL), so a
-// macro that stopped failing would make this test fail.
+// macro that stopped failing would make this test fail. A NearContext names its scope in the failure.
 #include <QTest>
 
 #include <limits>
+#include <string>
 
 #include "support/compare_near.h"
 
@@ -27,6 +28,25 @@ class TestCompareNear : public QObject {
     const double inf = std::numeric_limits<double>::infinity();
     QEXPECT_FAIL("", "infinity is near nothing, not even itself", Abort);
     RK_COMPARE_NEAR(inf, inf, 1.0);
+  }
+  void contextsNestAndEndWithTheirScope() {
+    using reckoner::test::NearContext;
+    QCOMPARE(NearContext::describe(), std::string());
+    {
+      const NearContext scenario(QStringLiteral("scenario head-on"));
+      for (int i = 0; i < 2; ++i) {
+        const NearContext at(QString("i = %1").arg(i));
+        QCOMPARE(NearContext::describe(),
+                 std::string("\n   Context: scenario head-on; i = ") + std::to_string(i));
+      }
+      QCOMPARE(NearContext::describe(), std::string("\n   Context: scenario head-on"));
+    }
+    QCOMPARE(NearContext::describe(), std::string());
+  }
+  void failsWithAContext() {
+    const reckoner::test::NearContext at(QStringLiteral("F(2,3)"));
+    QEXPECT_FAIL("", "the failure also names F(2,3)", Abort);
+    RK_COMPARE_NEAR(1.1, 1.0, 0.05);
   }
   void failsOnBadTolerance() {
     QEXPECT_FAIL("", "a negative tolerance", Abort);

@@ -1,6 +1,7 @@
 #include <QTest>
 
 #include "common/rng.h"
+#include "support/compare_near.h"
 
 using namespace reckoner;
 
@@ -31,9 +32,9 @@ class TestRng : public QObject {
       sum4 += v * v * v * v;
     }
     const double mean = sum / n, var = sum2 / n - mean * mean;
-    QVERIFY2(std::abs(mean) < 0.01, qPrintable(QString::number(mean)));
-    QVERIFY2(std::abs(var - 1.0) < 0.01, qPrintable(QString::number(var)));
-    QVERIFY2(std::abs(sum4 / n - 3.0) < 0.05, "kurtosis of a normal is 3");
+    RK_COMPARE_NEAR(mean, 0.0, 0.01);
+    RK_COMPARE_NEAR(var, 1.0, 0.01);
+    RK_COMPARE_NEAR(sum4 / n, 3.0, 0.05);  // kurtosis of a normal is 3
   }
   void uniformOpenInterval() {
     Rng r(3, 3);
@@ -45,7 +46,7 @@ class TestRng : public QObject {
       sum += u;
     }
     QVERIFY(lo > 0.0 && hi < 1.0);
-    QVERIFY(std::abs(sum / 100000 - 0.5) < 0.005);
+    RK_COMPARE_NEAR(sum / 100000, 0.5, 0.005);
   }
 };
 

@@ -3,6 +3,7 @@
 #include "common/rng.h"
 #include "estimation/chi_square.h"
 #include "estimation/nis_window.h"
+#include "support/compare_near.h"
 
 using namespace reckoner::est;
 
@@ -28,22 +29,22 @@ class TestChiSquare : public QObject {
     QFETCH(double, dof);
     QFETCH(double, expected);
     const double q = chiSquareQuantile(p, dof);
-    QVERIFY2(std::abs(q - expected) < 1e-5 * std::max(1.0, expected),
-             qPrintable(QString::number(q, 'g', 10)));
-    QVERIFY(std::abs(chiSquareCdf(q, dof) - p) < 1e-10);
+    RK_COMPARE_NEAR(q, expected, 1e-5 * std::max(1.0, expected));
+    RK_COMPARE_NEAR(chiSquareCdf(q, dof), p, 1e-10);
   }
   void roundTripAcrossDegreesOfFreedom() {
     for (double dof : {0.5, 1.0, 2.0, 7.0, 60.0, 550.0, 600.0, 5000.0})
       for (double p : {1e-6, 0.025, 0.3, 0.5, 0.975, 0.999999})
-        QVERIFY(std::abs(chiSquareCdf(chiSquareQuantile(p, dof), dof) - p) < 1e-9);
+        RK_COMPARE_NEAR(chiSquareCdf(chiSquareQuantile(p, dof), dof), p, 1e-9);
   }
   void averageNeesBoundsOfTheIssues() {
     // 50 runs of an 11-state filter: the bounds quoted for the DRKF; of a 12-state one, the TTKF's.
     const auto b11 = averageNeesBounds(11, 50);
-    QVERIFY2(std::abs(b11.lower - 9.74) < 0.005 && std::abs(b11.upper - 12.34) < 0.005,
-             qPrintable(QString("%1 %2").arg(b11.lower).arg(b11.upper)));
+    RK_COMPARE_NEAR(b11.lower, 9.74, 0.005);
+    RK_COMPARE_NEAR(b11.upper, 12.34, 0.005);
     const auto b12 = averageNeesBounds(12, 50);
-    QVERIFY(std::abs(b12.lower - 10.68) < 0.005 && std::abs(b12.upper - 13.40) < 0.005);
+    RK_COMPARE_NEAR(b12.lower, 10.68, 0.005);
+    RK_COMPARE_NEAR(b12.upper, 13.40, 0.005);
     QVERIFY(b11.contains(11.0) && !b11.contains(12.5) && !b11.contains(9.7));
   }
   void invalidArguments() {
@@ -70,7 +71,7 @@ class TestChiSquare : public QObject {
     QCOMPARE(ok.windows, 400L);
     QVERIFY2(ok.above + ok.below <= 12,
              qPrintable(QString("%1 above, %2 below").arg(ok.above).arg(ok.below)));
-    QVERIFY(std::abs(ok.meanPerDof() - 1.0) < 0.03);
+    RK_COMPARE_NEAR(ok.meanPerDof(), 1.0, 0.03);
     QCOMPARE(noisy.above, 400L);
     QCOMPARE(quiet.below, 400L);
     reckoner::est::NisWindow w;

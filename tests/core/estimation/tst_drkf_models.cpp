@@ -8,6 +8,7 @@
 #include "estimation/models/drkf_process.h"
 #include "estimation/models/drkf_radar_fix.h"
 #include "estimation/models/drkf_speedlog.h"
+#include "support/compare_near.h"
 #include "support/numeric_jacobian.h"
 
 using namespace reckoner;
@@ -120,11 +121,12 @@ class TestDrkfModels : public QObject {
     x[kVelY] = 5.0;  // north
     x[kTurnRate] = degToRad(1.0);
     const State y = m.propagate(x, 90.0);
-    QVERIFY(std::abs(std::hypot(y[kVelX], y[kVelY]) - 5.0) < 1e-6);
-    QVERIFY(std::abs(angleDiff(bearingOf(y[kVelX], y[kVelY]), degToRad(90.0))) < 1e-6);
+    RK_COMPARE_NEAR(std::hypot(y[kVelX], y[kVelY]), 5.0, 1e-6);
+    RK_COMPARE_NEAR(angleDiff(bearingOf(y[kVelX], y[kVelY]), degToRad(90.0)), 0.0, 1e-6);
     // the arc: radius 5 / (pi / 180) = 286.5 m, from (0, 0) to (r, r)
     const double r = 5.0 / degToRad(1.0);
-    QVERIFY(std::abs(y[kPosX] - r) < 1e-3 && std::abs(y[kPosY] - r) < 1e-3);
+    RK_COMPARE_NEAR(y[kPosX], r, 1e-3);
+    RK_COMPARE_NEAR(y[kPosY], r, 1e-3);
   }
   void radarFixMovesWithTheAssumedMotion() {
     // GIVEN a fix taken with the filter's own motion, WHEN the state's turn rate differs from the one the
@@ -134,36 +136,36 @@ class TestDrkfModels : public QObject {
     S(2, 2) = -1.0;  // heading at mid-sweep of a 2 s sweep
     S(1, 2) = 500.0;
     const Vec<3> r = sweepMotionOf(x);
-    QVERIFY(std::abs(r[2] - (4.0 * 0.1 - 3.0 * -0.05) / 25.0) < 1e-15);
+    RK_COMPARE_NEAR(r[2], (4.0 * 0.1 - 3.0 * -0.05) / 25.0, 1e-15);
     const Vec<3> same = RadarFixModel(S, r).h(x);
     QVERIFY((same - RadarFixModel().h(x)).norm() < 1e-12);
     const Vec<3> turned = RadarFixModel(S, r - Vec<3>(0.0, 0.0, 0.01)).h(x);
-    QVERIFY(std::abs(turned[1] - same[1] - 5.0) < 1e-9);
-    QVERIFY(std::abs(angleDiff(turned[2], same[2]) + 0.01) < 1e-12);
+    RK_COMPARE_NEAR(turned[1] - same[1], 5.0, 1e-9);
+    RK_COMPARE_NEAR(angleDiff(turned[2], same[2]), -0.01, 1e-12);
   }
   void measurementFunctions() {
     const State x = makeState(3.0, 4.0, 0.0, 1.0);
     QCOMPARE(PositionFixModel(PositionFixModel::Source::Gps).h(x), Vec<2>(1200.0, -800.0));
     QCOMPARE(PositionFixModel(PositionFixModel::Source::LoranC).h(x), Vec<2>(1212.0, -807.0));
     QCOMPARE(GroundVelocityModel().h(x), Vec<2>(3.0, 5.0));
-    QVERIFY(std::abs(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0).h(x)[0] - (5.0 + 0.08)) < 1e-12);
-    QVERIFY(std::abs(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0).h(x)[0] -
-                     (std::hypot(3.0, 5.0) + 0.08)) < 1e-12);
+    RK_COMPARE_NEAR(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0).h(x)[0], 5.0 + 0.08, 1e-12);
+    RK_COMPARE_NEAR(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0).h(x)[0], std::hypot(3.0, 5.0) + 0.08,
+                    1e-12);
     // Heading of the water velocity (3, 4): atan2(3, 4) clockwise from north, not of the ground velocity.
-    QVERIFY(std::abs(GyroHeadingModel(0).h(x)[0] - std::atan2(3.0, 4.0)) < 1e-12);
+    RK_COMPARE_NEAR(GyroHeadingModel(0).h(x)[0], std::atan2(3.0, 4.0), 1e-12);
     // The calibration states: reading (1 + k) |v| + b, heading + bias; unseen unless modelled.
-    QVERIFY(std::abs(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0, true).h(x)[0] - (1.015 * 5.0 + 0.08)) <
-            1e-12);
-    QVERIFY(std::abs(GyroHeadingModel(0, true).h(x)[0] - (std::atan2(3.0, 4.0) + 0.012)) < 1e-12);
+    RK_COMPARE_NEAR(SpeedlogModel(SpeedlogModel::Mode::BottomLock, 0, true).h(x)[0], 1.015 * 5.0 + 0.08,
+                    1e-12);
+    RK_COMPARE_NEAR(GyroHeadingModel(0, true).h(x)[0], std::atan2(3.0, 4.0) + 0.012, 1e-12);
     QCOMPARE(GyroHeadingModel(0).jacobian(x)(0, kHeadingBias), 0.0);
     QCOMPARE(SpeedlogModel(SpeedlogModel::Mode::GroundLock, 0).jacobian(x)(0, kLogScale), 0.0);
   }
   void gyroResidualWrapsAcrossNorth() {
     const GyroHeadingModel g(0.0);
     const double r = g.residual(Vec<1>(degToRad(1.0)), Vec<1>(degToRad(359.0)))[0];
-    QVERIFY(std::abs(r - degToRad(2.0)) < 1e-12);
+    RK_COMPARE_NEAR(r, degToRad(2.0), 1e-12);
     const double r2 = g.residual(Vec<1>(degToRad(359.0)), Vec<1>(degToRad(1.0)))[0];
-    QVERIFY(std::abs(r2 + degToRad(2.0)) < 1e-12);
+    RK_COMPARE_NEAR(r2, -degToRad(2.0), 1e-12);
     QVERIFY(g.h(makeState(-0.05, 6.0))[0] > degToRad(359.0));  // reported in [0, 2 pi)
   }
   void degenerateAtLowSpeed() {
@@ -188,8 +190,8 @@ class TestDrkfModels : public QObject {
     QCOMPARE(F(kLogBias, kLogBias), -0.5);
     QCOMPARE(F.cwiseAbs().sum(), 2 * (1 + 1 + 0.17 + 1 + 1.0) + 2 * 0.25 + 0.5);
     const auto& G = m.G();
-    QVERIFY(std::abs(G(kCurX, 0) - std::sqrt(2 * 0.55 * 0.55 * 0.17)) < 1e-15);
-    QVERIFY(std::abs(G(kLogBias, 6) - std::sqrt(2 * 0.7 * 0.7 * 0.5)) < 1e-15);
+    RK_COMPARE_NEAR(G(kCurX, 0), std::sqrt(2 * 0.55 * 0.55 * 0.17), 1e-15);
+    RK_COMPARE_NEAR(G(kLogBias, 6), std::sqrt(2 * 0.7 * 0.7 * 0.5), 1e-15);
     QCOMPARE((G.array() != 0.0).count(), 7);
   }
 };

@@ -8,6 +8,7 @@
 #include "estimation/ekf.h"
 #include "estimation/measurement_stack.h"
 #include "estimation/sparse_transition.h"
+#include "support/compare_near.h"
 
 using namespace reckoner;
 using namespace reckoner::est;
@@ -50,9 +51,7 @@ class TestEkf : public QObject {
     }
     for (const Mat<2>& P : cases) {
       const double expected = Eigen::SelfAdjointEigenSolver<Mat<2>>(P).eigenvalues().maxCoeff();
-      QVERIFY2(std::abs(largestEigenvalue(P) - expected) <= 1e-12 * std::max(1.0, expected),
-               qPrintable(
-                   QString("%1 against %2").arg(largestEigenvalue(P), 0, 'g', 17).arg(expected, 0, 'g', 17)));
+      RK_COMPARE_NEAR(largestEigenvalue(P), expected, 1e-12 * std::max(1.0, expected));
     }
   }
   void scalarUpdateMatchesClosedForm() {
@@ -62,13 +61,13 @@ class TestEkf : public QObject {
     g.P << 4.0, 0.0, 0.0, 9.0;
     const auto rep = update(g, PickModel<2>{0}, Vec<1>(5.0), Mat<1>(1.0), 0.0);
     QVERIFY(rep.applied());
-    QVERIFY(std::abs(g.x[0] - (2.0 + 4.0 / 5.0 * 3.0)) < 1e-12);
-    QVERIFY(std::abs(g.P(0, 0) - 4.0 * 1.0 / 5.0) < 1e-12);
+    RK_COMPARE_NEAR(g.x[0], 2.0 + 4.0 / 5.0 * 3.0, 1e-12);
+    RK_COMPARE_NEAR(g.P(0, 0), 4.0 * 1.0 / 5.0, 1e-12);
     QCOMPARE(g.x[1], -1.0);
     QCOMPARE(g.P(1, 1), 9.0);
-    QVERIFY(std::abs(rep.nis - 9.0 / 5.0) < 1e-12);
+    RK_COMPARE_NEAR(rep.nis, 9.0 / 5.0, 1e-12);
     QCOMPARE(rep.dim, 1);
-    QVERIFY(std::abs(rep.S(0, 0) - 5.0) < 1e-12);
+    RK_COMPARE_NEAR(rep.S(0, 0), 5.0, 1e-12);
   }
   void josephKeepsCovariancePositiveWhenIllConditioned() {
     // Near-perfect measurements of a strongly correlated state: the simple P - K H P form loses
@@ -106,7 +105,7 @@ class TestEkf : public QObject {
     const Gaussian<2> before = g;
     const auto rep = update(g, PickModel<2>{1}, Vec<1>(10.0), Mat<1>(1.0), 9.0);
     QCOMPARE(rep.status, UpdateStatus::RejectedGate);
-    QVERIFY(std::abs(rep.nis - 50.0) < 1e-12);  // 10^2 / (1 + 1)
+    RK_COMPARE_NEAR(rep.nis, 50.0, 1e-12);  // 10^2 / (1 + 1)
     QCOMPARE(rep.gate, 9.0);
     QVERIFY(g.x == before.x && g.P == before.P);
   }
@@ -114,7 +113,7 @@ class TestEkf : public QObject {
     Mat<2> P;
     P << 4.0, 1.0, 1.0, 2.0;
     const Vec<2> e(1.0, -1.0);
-    QVERIFY(std::abs(nees<2>(e, P) - e.dot(P.inverse() * e)) < 1e-12);
+    RK_COMPARE_NEAR(nees<2>(e, P), e.dot(P.inverse() * e), 1e-12);
     QVERIFY(std::isnan(nees<2>(e, Mat<2>::Zero())));
   }
   void predictRejectsNonFinite() {
@@ -143,7 +142,7 @@ class TestEkf : public QObject {
     const Mat<2> F = m.transition(g.x, 2.0);
     const Mat<2> expectedP = F * g.P * F.transpose() + m.noise(2.0);
     QVERIFY(predict(g, m, 2.0));
-    QVERIFY(std::abs(g.x[0] - (1.0 + 2.0 * std::sin(0.5))) < 1e-15);
+    RK_COMPARE_NEAR(g.x[0], 1.0 + 2.0 * std::sin(0.5), 1e-15);
     QVERIFY((g.P - expectedP).norm() < 1e-15);
   }
   void sparseTransitionMatchesDense() {
@@ -196,7 +195,7 @@ class TestEkf : public QObject {
     QCOMPARE(rep.dim, 1);
     QCOMPARE(stack.block(0).status, UpdateStatus::Accepted);
     QCOMPARE(stack.block(1).status, UpdateStatus::RejectedGate);
-    QVERIFY(std::abs(stack.block(1).nis - 800.0) < 1e-9);
+    RK_COMPARE_NEAR(stack.block(1).nis, 800.0, 1e-9);
     QCOMPARE(stack.block(2).status, UpdateStatus::RejectedDegenerate);
     QCOMPARE(stack.block(3).status, UpdateStatus::RejectedNonFinite);
     update(onlyGood, PickModel<3>{0}, Vec<1>(0.5), Mat<1>(1.0), 0.0);

@@ -7,6 +7,7 @@
 #include "estimation/discretize.h"
 #include "estimation/gauss_markov.h"
 #include "estimation/models/drkf_process.h"
+#include "support/compare_near.h"
 
 using namespace reckoner;
 using namespace reckoner::est;
@@ -20,9 +21,8 @@ class TestGaussMarkov : public QObject {
       for (double dt : {0.01, 0.1, 1.0, 2.0, 30.0}) {
         const GaussMarkov gm{0.7, beta};
         const auto d = discretiseVanLoan<1, 1>(Mat<1>(-beta), MatRC<1, 1>(gm.alpha()), dt);
-        QVERIFY(std::abs(d.Phi(0, 0) - gm.phi(dt)) < 1e-13);
-        QVERIFY2(std::abs(d.Q(0, 0) - gm.discreteVariance(dt)) < 1e-12 * std::max(1.0, d.Q(0, 0)),
-                 qPrintable(QString("%1 vs %2").arg(d.Q(0, 0)).arg(gm.discreteVariance(dt))));
+        RK_COMPARE_NEAR(d.Phi(0, 0), gm.phi(dt), 1e-13);
+        RK_COMPARE_NEAR(d.Q(0, 0), gm.discreteVariance(dt), 1e-12 * std::max(1.0, d.Q(0, 0)));
       }
     }
   }
@@ -35,11 +35,11 @@ class TestGaussMarkov : public QObject {
     MatRC<2, 1> G(0.0, gm.alpha());
     const auto d = discretiseVanLoan<2, 1>(F, G, dt);
     const double e1 = std::exp(-beta * dt), e2 = std::exp(-2 * beta * dt), a2 = gm.alpha() * gm.alpha();
-    QVERIFY(std::abs(d.Phi(0, 1) - (1 - e1) / beta) < 1e-13);
-    QVERIFY(std::abs(d.Q(1, 1) - sigma * sigma * (1 - e2)) < 1e-13);
-    QVERIFY(std::abs(d.Q(0, 1) - a2 / beta * ((1 - e1) / beta - (1 - e2) / (2 * beta))) < 1e-12);
-    QVERIFY(std::abs(d.Q(0, 0) - a2 / (beta * beta) * (dt - 2 * (1 - e1) / beta + (1 - e2) / (2 * beta))) <
-            1e-12);
+    RK_COMPARE_NEAR(d.Phi(0, 1), (1 - e1) / beta, 1e-13);
+    RK_COMPARE_NEAR(d.Q(1, 1), sigma * sigma * (1 - e2), 1e-13);
+    RK_COMPARE_NEAR(d.Q(0, 1), a2 / beta * ((1 - e1) / beta - (1 - e2) / (2 * beta)), 1e-12);
+    RK_COMPARE_NEAR(d.Q(0, 0), a2 / (beta * beta) * (dt - 2 * (1 - e1) / beta + (1 - e2) / (2 * beta)),
+                    1e-12);
   }
   void vanLoanAgreesWithMonteCarlo() {
     // GIVEN the DRKF's per-axis block [position, current, velocity, acceleration] WHEN the continuous
@@ -74,8 +74,8 @@ class TestGaussMarkov : public QObject {
       for (int j = 0; j <= i; ++j) {
         // Standard error of a sample covariance: sqrt((Qii Qjj + Qij^2) / n); allow 4 of them.
         const double se = std::sqrt((d.Q(i, i) * d.Q(j, j) + d.Q(i, j) * d.Q(i, j)) / kSamples);
-        QVERIFY2(std::abs(C(i, j) - d.Q(i, j)) < 4 * se,
-                 qPrintable(QString("Q(%1,%2): MC %3 vs %4").arg(i).arg(j).arg(C(i, j)).arg(d.Q(i, j))));
+        const test::NearContext at(QString("Q(%1,%2)").arg(i).arg(j));
+        RK_COMPARE_NEAR(C(i, j), d.Q(i, j), 4 * se);  // Monte Carlo against Van Loan
       }
     }
   }
@@ -93,8 +93,8 @@ class TestGaussMarkov : public QObject {
       // A calibration state is its own first-order Gauss-Markov process (eq. 2b).
       const double q =
           drkf::ProcessParams{{}, {}, {}, {}, {0.017, 1.0 / 3600.0}, {}}.headingBias.discreteVariance(dt);
-      QVERIFY(std::abs(d.Q(drkf::kHeadingBias, drkf::kHeadingBias) - q) < 1e-12 * q + 1e-18);
-      QVERIFY(std::abs(d.Phi(drkf::kLogScale, drkf::kLogScale) - std::exp(-dt / 7200.0)) < 1e-14);
+      RK_COMPARE_NEAR(d.Q(drkf::kHeadingBias, drkf::kHeadingBias), q, 1e-12 * q + 1e-18);
+      RK_COMPARE_NEAR(d.Phi(drkf::kLogScale, drkf::kLogScale), std::exp(-dt / 7200.0), 1e-14);
     }
   }
   void printedTransitionIsFirstOrder() {
@@ -106,11 +106,10 @@ class TestGaussMarkov : public QObject {
     QVERIFY((m.printedTransition(small) - m.discretise(small).Phi).cwiseAbs().maxCoeff() < 1e-6);
     const auto exact = m.discretise(1.0).Phi;
     const auto printed = m.printedTransition(1.0);
-    QVERIFY(std::abs(exact(kPosX, kAccX) - (1.0 - (1.0 - std::exp(-1.0)))) <
-            1e-12);  // dt/b - (1-e^-b dt)/b^2
-    QVERIFY(std::abs(printed(kPosX, kAccX) - 0.5) < 1e-15);
-    QVERIFY(std::abs(exact(kVelX, kAccX) - (1.0 - std::exp(-1.0))) < 1e-12);
-    QVERIFY(std::abs(printed(kVelX, kAccX) - 1.0) < 1e-15);
+    RK_COMPARE_NEAR(exact(kPosX, kAccX), 1.0 - (1.0 - std::exp(-1.0)), 1e-12);  // dt/b - (1-e^-b dt)/b^2
+    RK_COMPARE_NEAR(printed(kPosX, kAccX), 0.5, 1e-15);
+    RK_COMPARE_NEAR(exact(kVelX, kAccX), 1.0 - std::exp(-1.0), 1e-12);
+    RK_COMPARE_NEAR(printed(kVelX, kAccX), 1.0, 1e-15);
   }
   void invalidParametersThrow() {
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument,

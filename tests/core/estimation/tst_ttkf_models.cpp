@@ -5,6 +5,7 @@
 #include "estimation/models/ttkf_process.h"
 #include "estimation/models/ttkf_radar.h"
 #include "estimation/singer.h"
+#include "support/compare_near.h"
 #include "support/numeric_jacobian.h"
 
 using namespace reckoner;
@@ -105,11 +106,11 @@ class TestTtkfModels : public QObject {
   void radarMeasurementAndWrap() {
     const RadarModel m(1.0);
     const auto z = m.h(geometry(3000.0, 4000.0));
-    QVERIFY(std::abs(z[0] - 5000.0) < 1e-9);
-    QVERIFY(std::abs(z[1] - std::atan2(3000.0, 4000.0)) < 1e-12);
+    RK_COMPARE_NEAR(z[0], 5000.0, 1e-9);
+    RK_COMPARE_NEAR(z[1], std::atan2(3000.0, 4000.0), 1e-12);
     // Azimuth residual across north: measured 0.5 deg, predicted 359.5 deg -> +1 deg.
     const auto r = m.residual(Vec<2>(10.0, degToRad(0.5)), Vec<2>(10.0, degToRad(359.5)));
-    QVERIFY(std::abs(r[1] - degToRad(1.0)) < 1e-12);
+    RK_COMPARE_NEAR(r[1], degToRad(1.0), 1e-12);
     QVERIFY(m.degenerate(geometry(0.3, 0.4)));
     QVERIFY(!m.degenerate(geometry(3.0, 4.0)));
   }

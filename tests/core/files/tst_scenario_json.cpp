@@ -5,6 +5,7 @@
 #include "common/angles.h"
 #include "files/scenario_json.h"
 #include "resources/embedded.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;
@@ -42,15 +43,15 @@ class TestScenarioJson : public QObject {
     const sim::Scenario s = io::parseScenario(kValid, "t.json");
     QCOMPARE(s.name, std::string("t"));
     QCOMPARE(s.durationUs, 100 * kMicrosPerSecond);
-    QVERIFY(std::abs(s.current.sigma - std::sqrt(0.3)) < 1e-15);
+    RK_COMPARE_NEAR(s.current.sigma, std::sqrt(0.3), 1e-15);
     QCOMPARE(s.ownShip.schedule.size(), std::size_t(1));
-    QVERIFY(std::abs(*s.ownShip.schedule[0].turnRateRadPerS - degToRad(1.5)) < 1e-15);
+    RK_COMPARE_NEAR(*s.ownShip.schedule[0].turnRateRadPerS, degToRad(1.5), 1e-15);
     QVERIFY(s.gps.fitted && s.speedlog.fitted && s.gyro.fitted && !s.loran.fitted);
     QCOMPARE(s.gps.power.at(35 * kMicrosPerSecond), false);
     QCOMPARE(s.gps.power.at(60 * kMicrosPerSecond), true);
     QCOMPARE(s.speedlog.mode.at(45 * kMicrosPerSecond), sensors::SpeedlogMode::BottomLock);
     QCOMPARE(s.speedlog.power.at(45 * kMicrosPerSecond), true);
-    QVERIFY(std::abs(s.gyro.sdRad - degToRad(1.0)) < 1e-15);
+    RK_COMPARE_NEAR(s.gyro.sdRad, degToRad(1.0), 1e-15);
     QCOMPARE(s.filter.gateProbability, 0.9999);  // default
   }
   void everyBuiltinScenarioLoads() {
@@ -138,14 +139,14 @@ class TestScenarioJson : public QObject {
     const sim::Scenario s = io::parseScenario(text, "t.json");
     QVERIFY(s.radar.fitted);
     QCOMPARE(s.radar.rangeSdM, 20.0);
-    QVERIFY(std::abs(s.radar.maxRangeM - 12 * 1852.0) < 1e-9);
+    RK_COMPARE_NEAR(s.radar.maxRangeM, 12 * 1852.0, 1e-9);
     QCOMPARE(s.radar.detectionProbability, 0.9);
     QCOMPARE(s.targets.size(), std::size_t(1));
     QCOMPARE(s.targets[0].id, 7);
     QCOMPARE(s.targets[0].name, std::string("ferry"));
-    QVERIFY(std::abs(s.targets[0].motion.randomAcceleration->sigma - 0.1) < 1e-12);
+    RK_COMPARE_NEAR(s.targets[0].motion.randomAcceleration->sigma, 0.1, 1e-12);
     QCOMPARE(s.targets[0].motion.schedule.size(), std::size_t(1));
-    QVERIFY(std::abs(s.tracker.targetAcceleration.sigma - std::sqrt(0.005)) < 1e-12);
+    RK_COMPARE_NEAR(s.tracker.targetAcceleration.sigma, std::sqrt(0.005), 1e-12);
     QCOMPARE(s.tracker.feed, track::OwnShipFeed::Measurement);
     QCOMPARE(s.tracker.capacity, std::size_t(50));
     QCOMPARE(s.tracker.association, track::Association::Nearest);  // default
@@ -160,14 +161,14 @@ class TestScenarioJson : public QObject {
               "acquisition_zones": [{"min_range_nm": 0.5, "max_range_nm": 6, "from_bearing_deg": 270, "to_bearing_deg": 90}])");
     const sim::Scenario s = io::parseScenario(text, "t.json");
     QCOMPARE(s.radar.rangeSdM, 20.0);
-    QVERIFY(std::abs(radToDeg(s.radar.bearingSdRad) - std::hypot(0.05, 0.03)) < 1e-12);
-    QVERIFY(std::abs(radToDeg(s.radar.bearingBacklashRad) - 0.05) < 1e-12);
-    QVERIFY(std::abs(s.radar.rangeQuantumM - 0.02 * 1852.0) < 1e-9);
-    QVERIFY(std::abs(radToDeg(s.radar.bearingQuantumRad) - 0.2) < 1e-12);
-    QVERIFY(std::abs(radToDeg(s.radar.gyroCalibrationRad) + 0.5) < 1e-12);  // overridden
-    QVERIFY(std::abs(radToDeg(s.radar.gyroScatterSdRad) - 0.12) < 1e-12);
+    RK_COMPARE_NEAR(radToDeg(s.radar.bearingSdRad), std::hypot(0.05, 0.03), 1e-12);
+    RK_COMPARE_NEAR(radToDeg(s.radar.bearingBacklashRad), 0.05, 1e-12);
+    RK_COMPARE_NEAR(s.radar.rangeQuantumM, 0.02 * 1852.0, 1e-9);
+    RK_COMPARE_NEAR(radToDeg(s.radar.bearingQuantumRad), 0.2, 1e-12);
+    RK_COMPARE_NEAR(radToDeg(s.radar.gyroCalibrationRad), -0.5, 1e-12);  // overridden
+    RK_COMPARE_NEAR(radToDeg(s.radar.gyroScatterSdRad), 0.12, 1e-12);
     QCOMPARE(s.radar.clutterPerKm2, 0.1);
-    QVERIFY(std::abs(s.radar.clutterMaxRangeM - 3 * 1852.0) < 1e-9);
+    RK_COMPARE_NEAR(s.radar.clutterMaxRangeM, 3 * 1852.0, 1e-9);
     QCOMPARE(s.radar.minRangeM, 40.0);
     QCOMPARE(s.tracker.association, track::Association::Known);
     QCOMPARE(s.tracker.confirmHits, 2);
@@ -176,7 +177,7 @@ class TestScenarioJson : public QObject {
     QCOMPARE(s.tracker.keepSweeps, 8);
     QVERIFY(!s.tracker.autoAcquire);
     QCOMPARE(s.tracker.lostHoldS, 30.0);
-    QVERIFY(std::abs(s.tracker.dangerCpaM - 926.0) < 1e-9);
+    RK_COMPARE_NEAR(s.tracker.dangerCpaM, 926.0, 1e-9);
     QCOMPARE(s.tracker.dangerTcpaS, 360.0);
     QCOMPARE(s.tracker.zones.size(), std::size_t(1));
     QVERIFY(s.tracker.zones[0].contains(3000.0, degToRad(10.0)));
@@ -255,7 +256,7 @@ class TestScenarioJson : public QObject {
         R"({"filter": "imm", "imm": {"ct_sojourn_s": 30, "initial_turn_sd_dps": 2}, "alpha_beta_gamma": {"alpha": 0.2, "expanding_start": false}})");
     QCOMPARE(s.tracker.kind, track::TrackerKind::Imm);
     QCOMPARE(s.tracker.imm.ctSojournS, 30.0);
-    QVERIFY(std::abs(radToDeg(s.tracker.imm.initialTurnSdRadPerS) - 2.0) < 1e-12);
+    RK_COMPARE_NEAR(radToDeg(s.tracker.imm.initialTurnSdRadPerS), 2.0, 1e-12);
     QCOMPARE(s.tracker.abg.alpha, 0.2);
     QVERIFY(!s.tracker.abg.expandingStart);
     // Written and read back unchanged.

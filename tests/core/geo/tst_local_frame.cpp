@@ -4,6 +4,7 @@
 
 #include "common/angles.h"
 #include "geo/local_frame.h"
+#include "support/compare_near.h"
 
 using namespace reckoner;
 
@@ -15,7 +16,8 @@ class TestLocalFrame : public QObject {
     QCOMPARE(f.utmZone(), 10);
     QCOMPARE(f.centralMeridianDeg(), -123.0);
     const auto p = f.toLocal({47.27, -122.45});
-    QVERIFY(std::abs(p.xM) < 1e-6 && std::abs(p.yM) < 1e-6);
+    RK_COMPARE_NEAR(p.xM, 0.0, 1e-6);
+    RK_COMPARE_NEAR(p.yM, 0.0, 1e-6);
   }
   void roundTrip() {
     const geo::LocalFrame f(47.27, -122.45);
@@ -23,8 +25,8 @@ class TestLocalFrame : public QObject {
       for (double dlon = -0.7; dlon <= 0.7; dlon += 0.35) {
         const geo::GeoPoint g{47.27 + dlat, -122.45 + dlon};
         const auto back = f.toGeodetic(f.toLocal(g));
-        QVERIFY(std::abs(back.latDeg - g.latDeg) < 1e-9);
-        QVERIFY(std::abs(back.lonDeg - g.lonDeg) < 1e-9);
+        RK_COMPARE_NEAR(back.latDeg, g.latDeg, 1e-9);
+        RK_COMPARE_NEAR(back.lonDeg, g.lonDeg, 1e-9);
       }
     }
   }
@@ -32,8 +34,10 @@ class TestLocalFrame : public QObject {
     const geo::LocalFrame f(49.29, -123.0);  // on the central meridian: no convergence at the origin
     const auto n = f.toLocal({49.30, -123.0});
     const auto e = f.toLocal({49.29, -122.99});
-    QVERIFY(n.yM > 1000.0 && std::abs(n.xM) < 1e-6);
-    QVERIFY(e.xM > 700.0 && std::abs(e.yM) < 10.0);
+    QVERIFY(n.yM > 1000.0);
+    RK_COMPARE_NEAR(n.xM, 0.0, 1e-6);
+    QVERIFY(e.xM > 700.0);
+    RK_COMPARE_NEAR(e.yM, 0.0, 10.0);
   }
   void convergenceAndScaleAgreeWithGeodesics() {
     // East of the central meridian in the north: grid north lies clockwise of true north (gamma > 0).
@@ -45,13 +49,12 @@ class TestLocalFrame : public QObject {
     // A short step due true north has grid bearing -gamma.
     const auto q = f.toLocal({p.latDeg + 0.001, p.lonDeg});
     const double gridBearing = std::atan2(q.xM - gp.xM, q.yM - gp.yM);
-    QVERIFY2(std::abs(angleDiff(gridBearing, -info.convergenceRad)) < 1e-6,
-             qPrintable(QString("%1 vs %2").arg(gridBearing).arg(-info.convergenceRad)));
+    RK_COMPARE_NEAR(angleDiff(gridBearing, -info.convergenceRad), 0.0, 1e-6);
     // Grid length / geodesic length is the point scale.
     double s12 = 0.0;
     GeographicLib::Geodesic::WGS84().Inverse(p.latDeg, p.lonDeg, p.latDeg + 0.001, p.lonDeg, s12);
     const double grid = std::hypot(q.xM - gp.xM, q.yM - gp.yM);
-    QVERIFY(std::abs(grid / s12 - info.scale) < 1e-6);
+    RK_COMPARE_NEAR(grid / s12, info.scale, 1e-6);
     QVERIFY(info.scale > 0.9996 && info.scale < 1.001);
   }
   void badInput() {

@@ -2,6 +2,7 @@
 
 #include "common/angles.h"
 #include "navigation/drkf.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;
@@ -63,12 +64,10 @@ class TestDrkf : public QObject {
         const auto* g = blockOf(f.update(t, s), kGyro);
         QVERIFY(g && g->status == est::UpdateStatus::AcceptedForced);
         const State& x = f.belief().x;
-        QVERIFY(std::abs(std::hypot(x[kVelX], x[kVelY]) - speed) < 1e-9);
-        QVERIFY2(std::abs(angleDiff(bearingOf(x[kVelX], x[kVelY]), degToRad(10.0) - x[kHeadingBias])) < 1e-5,
-                 qPrintable(QString("%1 %2 %3")
-                                .arg(radToDeg(bearingOf(x[kVelX], x[kVelY])))
-                                .arg(x[kVelX])
-                                .arg(x[kVelY])));
+        RK_COMPARE_NEAR(std::hypot(x[kVelX], x[kVelY]), speed, 1e-9);
+        // the velocity turned to the gyro's heading less the heading bias
+        RK_COMPARE_NEAR(angleDiff(bearingOf(x[kVelX], x[kVelY]), degToRad(10.0) - x[kHeadingBias]), 0.0,
+                        1e-5);
         QVERIFY(est::isPositiveDefinite(f.belief().P));
         continue;
       }
@@ -83,7 +82,7 @@ class TestDrkf : public QObject {
       QVERIFY(g);
       QVERIFY2(g->status == est::UpdateStatus::Accepted, std::string(est::statusName(g->status)).c_str());
       const State& x = f.belief().x;
-      QVERIFY(std::abs(std::hypot(x[kVelX], x[kVelY]) - std::hypot(before[kVelX], before[kVelY])) < 1e-3);
+      RK_COMPARE_NEAR(std::hypot(x[kVelX], x[kVelY]), std::hypot(before[kVelX], before[kVelY]), 1e-3);
       QCOMPARE(x[kAlongAccel], before[kAlongAccel]);
       QVERIFY(angleDiff(bearingOf(x[kVelX], x[kVelY]), course) > 0.0);  // turned to starboard
       QVERIFY(est::isPositiveDefinite(f.belief().P));
@@ -106,8 +105,7 @@ class TestDrkf : public QObject {
     const auto* g = blockOf(r, kGyro);
     QVERIFY(g && g->status == est::UpdateStatus::Accepted);
     // (1e-6 rad: after the 1 s prediction the ship is 0.1 m off the central meridian, convergence 2e-8)
-    QVERIFY2(std::abs(r.joint.innovation[g->row] - degToRad(2.0)) < 1e-6,
-             qPrintable(QString("innovation %1 deg").arg(radToDeg(r.joint.innovation[g->row]), 0, 'g', 12)));
+    RK_COMPARE_NEAR(r.joint.innovation[g->row], degToRad(2.0), 1e-6);
     QVERIFY(r.joint.nis < 1.0);  // +2 deg against a prior heading sd of ~5 deg; -358 deg would be gated out
     const double heading = bearingOf(f.belief().x[kVelX], f.belief().x[kVelY]);
     QVERIFY2(heading > degToRad(359.0) || heading < degToRad(1.0),
@@ -122,7 +120,7 @@ class TestDrkf : public QObject {
     QVERIFY(gamma > degToRad(0.3));
     const std::vector<OwnShipSample> s{GyroSample{kMicrosPerSecond, gamma, 1e-6}};
     const auto r = f.update(kMicrosPerSecond, s);
-    QVERIFY(std::abs(r.joint.nis) < 1e-3);
+    RK_COMPARE_NEAR(r.joint.nis, 0.0, 1e-3);
   }
   void stationaryShipSkipsHeadingAndSpeed() {
     Drkf f = makeFilter(0.0, 0.0);
@@ -148,8 +146,7 @@ class TestDrkf : public QObject {
       if (k <= 10) QCOMPARE(status, est::UpdateStatus::RejectedGate);
       if (k == 11) {
         QCOMPARE(status, est::UpdateStatus::AcceptedForced);
-        QVERIFY2(std::abs(f.belief().x[kPosX] - 2000.0) < 60.0,
-                 qPrintable(QString::number(f.belief().x[kPosX])));
+        RK_COMPARE_NEAR(f.belief().x[kPosX], 2000.0, 60.0);
         QVERIFY(std::sqrt(f.belief().P(kPosX, kPosX)) > 9.0);  // no tighter than the fix itself
       }
       if (k >= 12) QCOMPARE(status, est::UpdateStatus::Accepted);

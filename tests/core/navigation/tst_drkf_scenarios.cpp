@@ -3,6 +3,7 @@
 #include <QTest>
 
 #include "sim/sensor_profile.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;
@@ -51,8 +52,8 @@ class TestDrkfScenarios : public QObject {
     // every phase - GPS, Loran-C, dead reckoning in both speedlog modes, GPS back - lies inside the
     // two-sided 95% bounds for 11 states (9.74 to 12.34).
     const auto& mc = test::monteCarlo("matched-model", kRuns);
-    QVERIFY(std::abs(mc.summary.bounds.lower - 9.74) < 0.01 &&
-            std::abs(mc.summary.bounds.upper - 12.34) < 0.01);
+    RK_COMPARE_NEAR(mc.summary.bounds.lower, 9.74, 0.01);
+    RK_COMPARE_NEAR(mc.summary.bounds.upper, 12.34, 0.01);
     QCOMPARE(mc.summary.phases.size(), std::size_t(5));
     for (const auto& p : mc.summary.phases) {
       qInfo("matched-model phase %d %-30s mean NEES %.2f (max %.2f, %.0f%% of steps inside)",

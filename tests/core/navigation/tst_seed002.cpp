@@ -9,6 +9,7 @@
 #include "navigation/geodetic_kf.h"
 #include "navigation/lsq_fusion.h"
 #include "studies/own_ship_filters.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;
@@ -21,10 +22,10 @@ class TestSeed002 : public QObject {
     // M(0) = a (1 - e^2), N(0) = a, and at the pole both are a / sqrt(1 - e^2).
     const double a = GeographicLib::Constants::WGS84_a(), f = GeographicLib::Constants::WGS84_f();
     const double e2 = f * (2 - f);
-    QVERIFY(std::abs(gd::meridianRadius(0.0) - a * (1 - e2)) < 1e-6);
-    QVERIFY(std::abs(gd::primeVerticalRadius(0.0) - a) < 1e-6);
-    QVERIFY(std::abs(gd::meridianRadius(M_PI / 2) - a / std::sqrt(1 - e2)) < 1e-6);
-    QVERIFY(std::abs(gd::primeVerticalRadius(M_PI / 2) - a / std::sqrt(1 - e2)) < 1e-6);
+    RK_COMPARE_NEAR(gd::meridianRadius(0.0), a * (1 - e2), 1e-6);
+    RK_COMPARE_NEAR(gd::primeVerticalRadius(0.0), a, 1e-6);
+    RK_COMPARE_NEAR(gd::meridianRadius(kPi / 2), a / std::sqrt(1 - e2), 1e-6);
+    RK_COMPARE_NEAR(gd::primeVerticalRadius(kPi / 2), a / std::sqrt(1 - e2), 1e-6);
   }
 
   void transitionJacobianMatchesNumeric_data() {
@@ -57,9 +58,10 @@ class TestSeed002 : public QObject {
       Fn.col(j) = d / (2 * h[j]);
     }
     for (int i = 0; i < gd::kStateDim; ++i)
-      for (int j = 0; j < gd::kStateDim; ++j)
-        QVERIFY2(std::abs(F(i, j) - Fn(i, j)) <= 1e-6 * std::max(1.0, std::abs(Fn(i, j))),
-                 qPrintable(QString("F(%1,%2) = %3, numeric %4").arg(i).arg(j).arg(F(i, j)).arg(Fn(i, j))));
+      for (int j = 0; j < gd::kStateDim; ++j) {
+        const test::NearContext at(QString("F(%1,%2)").arg(i).arg(j));
+        RK_COMPARE_NEAR(F(i, j), Fn(i, j), 1e-6 * std::max(1.0, std::abs(Fn(i, j))));
+      }
   }
 
   void oneDegreeOfLatitudeIsTheMeridianArc() {
@@ -67,7 +69,7 @@ class TestSeed002 : public QObject {
     gd::State x;
     x << degToRad(45.0), 0.0, 0.0, 10.0, 0.0, 10.0;
     const gd::State y = gd::transition(x, 3600.0, 0.5);
-    QVERIFY(std::abs((y[gd::kLat] - x[gd::kLat]) * gd::meridianRadius(degToRad(45.0)) - 36000.0) < 1e-6);
+    RK_COMPARE_NEAR((y[gd::kLat] - x[gd::kLat]) * gd::meridianRadius(degToRad(45.0)), 36000.0, 1e-6);
     QCOMPARE(y[gd::kLon], 0.0);
   }
 

@@ -11,6 +11,7 @@
 #include "radar/coastline.h"
 #include "radar/land_mask.h"
 #include "radar/radar_image.h"
+#include "support/compare_near.h"
 #include "support/radar_fixtures.h"
 #include "tracking/track_manager.h"
 
@@ -39,15 +40,16 @@ class TestRadarMatching : public QObject {
     const radar::Coastline c(s, 30.0);
     const auto n = c.nearest({90.0, 10.0}, 50.0);
     QVERIFY(n);
-    QVERIFY(std::abs(n->distanceM - 10.0) < 1e-9 && (n->point - est::Vec<2>(100.0, 10.0)).norm() < 1e-9);
-    QVERIFY(std::abs(std::abs(n->normal[0]) - 1.0) < 1e-12);
+    RK_COMPARE_NEAR(n->distanceM, 10.0, 1e-9);
+    QVERIFY((n->point - est::Vec<2>(100.0, 10.0)).norm() < 1e-9);
+    RK_COMPARE_NEAR(std::abs(n->normal[0]), 1.0, 1e-12);
     QVERIFY(!c.nearest({0.0, 0.0}, 50.0));  // 100 m from every side
     // From inside, a ray due east meets x = 100; one at 45 deg meets the corner region at 141 m.
-    QVERIFY(std::abs(*c.firstHit({0.0, 0.0}, degToRad(90.0), 500.0) - 100.0) < 1e-9);
-    QVERIFY(std::abs(*c.firstHit({0.0, 0.0}, degToRad(45.0), 500.0) - 100.0 * std::sqrt(2.0)) < 1e-6);
-    QVERIFY(!c.firstHit({0.0, 0.0}, degToRad(90.0), 50.0));                                // beyond the range
-    QVERIFY(std::abs(*c.firstHit({-300.0, 0.0}, degToRad(90.0), 1000.0) - 200.0) < 1e-9);  // from outside
-    QVERIFY(!c.firstHit({-300.0, 0.0}, degToRad(270.0), 1000.0));                          // away from it
+    RK_COMPARE_NEAR(*c.firstHit({0.0, 0.0}, degToRad(90.0), 500.0), 100.0, 1e-9);
+    RK_COMPARE_NEAR(*c.firstHit({0.0, 0.0}, degToRad(45.0), 500.0), 100.0 * std::sqrt(2.0), 1e-6);
+    QVERIFY(!c.firstHit({0.0, 0.0}, degToRad(90.0), 50.0));                            // beyond the range
+    RK_COMPARE_NEAR(*c.firstHit({-300.0, 0.0}, degToRad(90.0), 1000.0), 200.0, 1e-9);  // from outside
+    QVERIFY(!c.firstHit({-300.0, 0.0}, degToRad(270.0), 1000.0));                      // away from it
   }
 
   void landMaskIsEvenOdd() {
@@ -202,10 +204,10 @@ class TestRadarMatching : public QObject {
     qInfo("end-of-sweep error %.2f m %.2f m %.4f deg; predicted by S %.2f m %.2f m %.4f deg",
           err[0] - base[0], err[1] - base[1], radToDeg(err[2] - base[2]), predicted[0], predicted[1],
           radToDeg(predicted[2]));
-    QVERIFY(std::abs(radToDeg(predicted[2])) > 1.0);  // the effect is large: about T/2 times 1.3 deg/s
+    QCOMPARE_GT(std::abs(radToDeg(predicted[2])), 1.0);  // the effect is large: about T/2 times 1.3 deg/s
     const est::Vec<3> miss = err - base - predicted;
     QVERIFY(miss.head<2>().norm() < 0.1 * predicted.head<2>().norm() + 0.5);
-    QVERIFY(std::abs(miss[2]) < 0.1 * std::abs(predicted[2]));
+    RK_COMPARE_NEAR(miss[2], 0.0, 0.1 * std::abs(predicted[2]));
   }
 
   void shipsAndClutterAreRejected() {

@@ -4,6 +4,7 @@
 
 #include "common/angles.h"
 #include "sensors/own_ship_simulators.h"
+#include "support/compare_near.h"
 
 using namespace reckoner;
 using namespace reckoner::sensors;
@@ -30,20 +31,20 @@ class TestOwnShipSensors : public QObject {
       QCOMPARE(s.positionVarM2, 100.0);
       QVERIFY(s.hasVelocity);
     }
-    QVERIFY(std::abs(sx / n) < 0.3);
-    QVERIFY(std::abs(sxx / n - 100.0) < 4.0);
+    RK_COMPARE_NEAR(sx / n, 0.0, 0.3);
+    RK_COMPARE_NEAR(sxx / n, 100.0, 4.0);
     // True bearing = grid bearing + convergence: 2 deg east of north; true length = grid / scale.
     const double speed = 5.0 / 0.9996;
-    QVERIFY(std::abs(se / n - speed * std::sin(degToRad(2.0))) < 0.005);
-    QVERIFY(std::abs(sn / n - speed * std::cos(degToRad(2.0))) < 0.005);
-    QVERIFY(std::abs(see / n - (se / n) * (se / n) - 0.04) < 0.002);
+    RK_COMPARE_NEAR(se / n, speed * std::sin(degToRad(2.0)), 0.005);
+    RK_COMPARE_NEAR(sn / n, speed * std::cos(degToRad(2.0)), 0.005);
+    RK_COMPARE_NEAR(see / n - (se / n) * (se / n), 0.04, 0.002);
   }
   void gyroReportsTrueHeading() {
     GyroSpec spec;
     spec.sdRad = degToRad(0.001);
     GyroSimulator gyro(spec, Rng(2, kStreamGyro), 0, Rng(2, kStreamGyroBias));
     const auto s = gyro.measure(0, degToRad(359.5), {degToRad(1.0), 1.0});
-    QVERIFY(std::abs(angleDiff(s.headingRad, degToRad(0.5))) < degToRad(0.01));
+    RK_COMPARE_NEAR(angleDiff(s.headingRad, degToRad(0.5)), 0.0, degToRad(0.01));
     QVERIFY(s.headingRad >= 0.0 && s.headingRad < kTwoPi);
   }
   void loranErrorIsGaussMarkov() {
@@ -64,9 +65,9 @@ class TestOwnShipSensors : public QObject {
       lag1 += e[k] * e[k + 1];
       lag4 += e[k] * e[k + 4];
     }
-    QVERIFY2(std::abs(var / n - 400.0) < 20.0, qPrintable(QString::number(var / n)));
-    QVERIFY(std::abs(lag1 / var - std::exp(-0.25)) < 0.02);
-    QVERIFY(std::abs(lag4 / var - std::exp(-1.0)) < 0.03);
+    RK_COMPARE_NEAR(var / n, 400.0, 20.0);
+    RK_COMPARE_NEAR(lag1 / var, std::exp(-0.25), 0.02);
+    RK_COMPARE_NEAR(lag4 / var, std::exp(-1.0), 0.03);
   }
   void speedlogModes() {
     SpeedlogSpec spec;
@@ -75,10 +76,10 @@ class TestOwnShipSensors : public QObject {
     SpeedlogSimulator log(spec, Rng(4, kStreamSpeedlog), 0, Rng(4, kStreamLogScale));
     const auto g = log.measure(5, 7.0, 6.0, SpeedlogMode::GroundLock, {0.0, 0.9996});
     QCOMPARE(g.mode, SpeedlogMode::GroundLock);
-    QVERIFY(std::abs(g.speedMps - 7.0 / 0.9996) < 1e-5);
+    RK_COMPARE_NEAR(g.speedMps, 7.0 / 0.9996, 1e-5);
     const auto b = log.measure(10, 7.0, 6.0, SpeedlogMode::BottomLock, {0.0, 0.9996});
     QCOMPARE(b.mode, SpeedlogMode::BottomLock);
-    QVERIFY(std::abs(b.speedMps - 6.0 / 0.9996) < 1e-5);
+    RK_COMPARE_NEAR(b.speedMps, 6.0 / 0.9996, 1e-5);
   }
   void gaussMarkovSignalAdvancesOnlyForward() {
     Rng rng(5, 5);

@@ -2,6 +2,7 @@
 
 #include "common/angles.h"
 #include "sensors/radar.h"
+#include "support/compare_near.h"
 
 using namespace reckoner;
 using namespace reckoner::sensors;
@@ -34,10 +35,10 @@ class TestRadar : public QObject {
       sb += eb;
       sbb += eb * eb;
     }
-    QVERIFY(std::abs(sr / n) < 0.3);
-    QVERIFY(std::abs(std::sqrt(srr / n) - 10.0) < 0.2);
-    QVERIFY(std::abs(sb / n) < degToRad(0.03));
-    QVERIFY(std::abs(std::sqrt(sbb / n) - degToRad(1.0)) < degToRad(0.02));
+    RK_COMPARE_NEAR(sr / n, 0.0, 0.3);
+    RK_COMPARE_NEAR(std::sqrt(srr / n), 10.0, 0.2);
+    RK_COMPARE_NEAR(sb / n, 0.0, degToRad(0.03));
+    RK_COMPARE_NEAR(std::sqrt(sbb / n), degToRad(1.0), degToRad(0.02));
   }
   void detectionProbabilityAndRange() {
     RadarSpec spec;
@@ -46,7 +47,7 @@ class TestRadar : public QObject {
     RadarSimulator radar(spec, Rng(3, kStreamRadar), Rng(3, kStreamClutter));
     int seen = 0;
     for (int i = 0; i < 10000; ++i) seen += radar.measure(i, 0.0, 5000.0, {0.0, 1.0}).has_value();
-    QVERIFY2(std::abs(seen / 10000.0 - 0.9) < 0.01, qPrintable(QString::number(seen)));
+    RK_COMPARE_NEAR(seen / 10000.0, 0.9, 0.01);
     QVERIFY(!radar.measure(0, 0.0, 10001.0, {0.0, 1.0}).has_value());
   }
   void a823ErrorBudgetHasItsBiasSpreadAndSteps() {
@@ -72,9 +73,9 @@ class TestRadar : public QObject {
       QVERIFY(p.has_value());
       // THEN every plot lies on the quantisation grid
       const double steps = p->rangeM / spec.rangeQuantumM;
-      QVERIFY(std::abs(steps - std::round(steps)) < 1e-9);
+      RK_COMPARE_NEAR(steps, std::round(steps), 1e-9);
       const double bsteps = p->bearingRad / spec.bearingQuantumRad;
-      QVERIFY(std::abs(bsteps - std::round(bsteps)) < 1e-6);
+      RK_COMPARE_NEAR(bsteps, std::round(bsteps), 1e-6);
       const double eb = angleDiff(p->bearingRad, b0), er = p->rangeM - r0;
       sb += eb;
       sbb += eb * eb;
@@ -83,18 +84,16 @@ class TestRadar : public QObject {
     }
     // AND the bearing error has the calibration error as its mean and the summed variances as spread
     const double mb = sb / n, vb = sbb / n - mb * mb;
-    QVERIFY2(std::abs(radToDeg(mb) - 0.5) < 0.005, qPrintable(QString::number(radToDeg(mb))));
-    QVERIFY2(std::abs(vb / spec.plotBearingVarRad2() - 1.0) < 0.04,
-             qPrintable(QString::number(vb / spec.plotBearingVarRad2())));
+    RK_COMPARE_NEAR(radToDeg(mb), 0.5, 0.005);
+    RK_COMPARE_NEAR(vb / spec.plotBearingVarRad2(), 1.0, 0.04);
     const double mr = sr / n, vr = srr / n - mr * mr;
-    QVERIFY(std::abs(mr) < 0.5);
-    QVERIFY2(std::abs(vr / spec.plotRangeVarM2() - 1.0) < 0.04,
-             qPrintable(QString::number(vr / spec.plotRangeVarM2())));
+    RK_COMPARE_NEAR(mr, 0.0, 0.5);
+    RK_COMPARE_NEAR(vr / spec.plotRangeVarM2(), 1.0, 0.04);
     // AND the assumed variances add up the zero-mean terms only
     const double expectB = std::pow(degToRad(0.05), 2) + std::pow(degToRad(0.03), 2) +
                            std::pow(degToRad(0.05), 2) / 3 + std::pow(degToRad(0.2), 2) / 12 +
                            std::pow(degToRad(0.12), 2);
-    QVERIFY(std::abs(spec.plotBearingVarRad2() / expectB - 1.0) < 1e-12);
+    RK_COMPARE_NEAR(spec.plotBearingVarRad2() / expectB, 1.0, 1e-12);
   }
   void clutterIsPoissonAndUniformInArea() {
     RadarSpec spec;
@@ -121,10 +120,10 @@ class TestRadar : public QObject {
       }
     }
     const double mean = n1 / sweeps, var = n2 / sweeps - mean * mean, expect = 2.0 * area;
-    QVERIFY2(std::abs(mean / expect - 1.0) < 0.01, qPrintable(QString::number(mean)));
-    QVERIFY2(std::abs(var / expect - 1.0) < 0.06, qPrintable(QString::number(var)));  // Poisson
+    RK_COMPARE_NEAR(mean / expect, 1.0, 0.01);
+    RK_COMPARE_NEAR(var / expect, 1.0, 0.06);  // Poisson
     // uniform in area: E[r^2] = (rmin^2 + rmax^2) / 2
-    QVERIFY(std::abs(r2 / total / ((100.0 * 100.0 + 3000.0 * 3000.0) / 2.0) - 1.0) < 0.01);
+    RK_COMPARE_NEAR(r2 / total / ((100.0 * 100.0 + 3000.0 * 3000.0) / 2.0), 1.0, 0.01);
   }
   void poissonHasItsMeanForLargeMeans() {
     Rng rng(6, 1);
@@ -135,8 +134,8 @@ class TestRadar : public QObject {
       s += k;
       ss += k * k;
     }
-    QVERIFY(std::abs(s / n - 700.0) < 2.0);
-    QVERIFY(std::abs((ss / n - (s / n) * (s / n)) / 700.0 - 1.0) < 0.1);
+    RK_COMPARE_NEAR(s / n, 700.0, 2.0);
+    RK_COMPARE_NEAR((ss / n - (s / n) * (s / n)) / 700.0, 1.0, 0.1);
     QCOMPARE(poisson(rng, 0.0), 0);
   }
   void invalidSpecsAreNamed() {

@@ -10,6 +10,7 @@
 #include "metrics/track_stats.h"
 #include "sim/nmea_export.h"
 #include "sim/replay.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;
@@ -25,9 +26,9 @@ class TestReplay : public QObject {
     const auto& r = std::get<nm::Rmc>(rmc.sentence->body);
     QCOMPARE(rmc.sentence->talker, std::string("GP"));
     QVERIFY(r.valid);
-    QVERIFY(std::abs(r.timeOfDayS - (12 * 3600 + 35 * 60 + 19.5)) < 1e-9);
-    QVERIFY(std::abs(r.latDeg - (48 + 7.038 / 60)) < 1e-12);
-    QVERIFY(std::abs(r.lonDeg + (11 + 31.0 / 60)) < 1e-12);
+    RK_COMPARE_NEAR(r.timeOfDayS, 12 * 3600 + 35 * 60 + 19.5, 1e-9);
+    RK_COMPARE_NEAR(r.latDeg, 48 + 7.038 / 60, 1e-12);
+    RK_COMPARE_NEAR(r.lonDeg, -(11 + 31.0 / 60), 1e-12);
     QCOMPARE(*r.sogKn, 22.4);
     QCOMPARE(r.date->year, 1994);
     QCOMPARE(r.date->month, 3);
@@ -39,9 +40,9 @@ class TestReplay : public QObject {
     QVERIFY(nm::parse(nm::withChecksum("GPVTG,054.7,T,034.4,M,005.5,N,010.2,K")).sentence);
     const auto gll = nm::parse(nm::withChecksum("LCGLL,4916.45,N,12311.12,W,225444,A"));
     QCOMPARE(gll.sentence->talker, std::string("LC"));
-    QVERIFY(
-        std::abs(std::get<nm::Hdt>(nm::parse(nm::withChecksum("HEHDT,274.07,T")).sentence->body).headingDeg -
-                 274.07) < 1e-12);
+    RK_COMPARE_NEAR(
+        std::get<nm::Hdt>(nm::parse(nm::withChecksum("HEHDT,274.07,T")).sentence->body).headingDeg, 274.07,
+        1e-12);
     QCOMPARE(
         std::get<nm::Vhw>(nm::parse(nm::withChecksum("VWVHW,,T,,M,6.5,N,12.0,K")).sentence->body).speedKn,
         6.5);

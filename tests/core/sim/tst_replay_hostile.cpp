@@ -18,6 +18,7 @@
 #include "io/nmea.h"
 #include "sim/nmea_export.h"
 #include "sim/replay.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 #include "support/resource_limits.h"
 
@@ -260,7 +261,7 @@ class TestReplayHostile : public QObject {
     const auto r = sim::replay(run_.nmea, "run.nmea", nullptr, "", o);
     QCOMPARE(r.warnings.size(), std::size_t(1));
     QVERIFY2(r.warnings[0].rfind("ttkf-matched.json: origin: ", 0) == 0, r.warnings[0].c_str());
-    QVERIFY(std::abs(r.origin.latDeg - scenario_.origin.latDeg) < 1.0);
+    RK_COMPARE_NEAR(r.origin.latDeg, scenario_.origin.latDeg, 1.0);
     QVERIFY(finiteRows(r));
   }
 

@@ -18,6 +18,7 @@
 #include "sim/nmea_export.h"
 #include "sim/replay.h"
 #include "sim/replay_input.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 #include "support/resource_limits.h"
 
@@ -336,7 +337,7 @@ class TestReplaySources : public QObject {
     QVERIFY(gn && gp);
     qInfo("GN:GGA clock %+.2f s (+- %.2f), corrected %d; GP used %ld, GN used %ld standby %ld",
           gn->clockOffsetS, gn->clockResolutionS, gn->clockCorrected, gp->used, gn->used, gn->standby);
-    QVERIFY(std::abs(gn->clockOffsetS - 3.0) <= gn->clockResolutionS + 0.05);
+    RK_COMPARE_NEAR(gn->clockOffsetS, 3.0, gn->clockResolutionS + 0.05);
     QVERIFY(gn->clockCorrected);
     QCOMPARE(gn->used, 0L);
     QVERIFY(worstError(r) < 30.0);
@@ -414,7 +415,7 @@ class TestReplaySources : public QObject {
     std::sort(plots.begin(), plots.end(), [](const Plot& a, const Plot& b) { return a.utc < b.utc; });
     const auto period = sim::replay_input::rotationPeriodS(plots);
     QVERIFY(period);
-    QVERIFY2(std::abs(*period - 2.5) < 0.05, qPrintable(QString::number(*period)));
+    RK_COMPARE_NEAR(*period, 2.5, 0.05);
     plots.resize(12);
     QVERIFY(!sim::replay_input::rotationPeriodS(plots));
   }

@@ -12,6 +12,7 @@
 #include "resources/embedded.h"
 #include "sim/run_rows.h"
 #include "sim/scenario_run.h"
+#include "support/compare_near.h"
 
 using namespace reckoner;
 using namespace reckoner::sim;
@@ -21,12 +22,6 @@ Scenario builtin(const char* name) {
   const auto* f = resources::findScenario(name);
   if (!f) qFatal("no built-in scenario %s", name);
   return io::parseScenario(f->text, std::string("builtin:") + name);
-}
-
-bool near(double a, double b, double tol) {
-  const bool ok = std::abs(a - b) <= tol;
-  if (!ok) qWarning("%.12g and %.12g differ by more than %g", a, b, tol);
-  return ok;
 }
 
 /// e^T P^-1 e by an explicit inverse (not the LDLT the builder uses).
@@ -57,18 +52,18 @@ class TestRunRows : public QObject {
       const auto& t = f.trueState;
       QCOMPARE(r.timeUs, f.timeUs);
       QCOMPARE(r.trueXM, f.truth.position.xM);
-      QVERIFY(near(r.trueVxMps, t[kVelX] + t[kCurX], 1e-12));
-      QVERIFY(near(r.estVyMps, x[kVelY] + x[kCurY], 1e-12));
-      QVERIFY(near(r.sdXM, std::sqrt(P(kPosX, kPosX)), 1e-12));
-      QVERIFY(near(r.sdVxMps,
-                   std::sqrt(P(kVelX, kVelX) + P(kCurX, kCurX) + P(kVelX, kCurX) + P(kCurX, kVelX)), 1e-9));
+      RK_COMPARE_NEAR(r.trueVxMps, t[kVelX] + t[kCurX], 1e-12);
+      RK_COMPARE_NEAR(r.estVyMps, x[kVelY] + x[kCurY], 1e-12);
+      RK_COMPARE_NEAR(r.sdXM, std::sqrt(P(kPosX, kPosX)), 1e-12);
+      RK_COMPARE_NEAR(r.sdVxMps,
+                      std::sqrt(P(kVelX, kVelX) + P(kCurX, kCurX) + P(kVelX, kCurX) + P(kCurX, kVelX)), 1e-9);
       QCOMPARE(r.nees, nav::drkfNees(t - x, P, process));
       int rows = 0;
       for (const auto& u : f.updates) rows += u.dim;
       QCOMPARE(r.rowsApplied, rows);
       QCOMPARE(d.estCurrentXMps, x[kCurX]);
       QCOMPARE(d.trueLoranYM, t[kLoranY]);
-      QVERIFY(near(d.sdLogBiasMps, std::sqrt(P(kLogBias, kLogBias)), 1e-15));
+      RK_COMPARE_NEAR(d.sdLogBiasMps, std::sqrt(P(kLogBias, kLogBias)), 1e-15);
       QCOMPARE(d.error95M, nav::positionError95M(f.estimate));
     }
   }
@@ -108,15 +103,15 @@ class TestRunRows : public QObject {
           while (e.scenario().targets[i].id != t.targetId) ++i;
           const VesselTruth& v = sw.targets[i];
           const est::Vec<tk::kStateDim> e12 = trueTrackState(sw.ownTruth, v) - t.estimate.x;
-          QVERIFY(near(r.nees, neesByInverse<tk::kStateDim>(e12, t.estimate.P), 1e-6 * (1.0 + r.nees)));
+          RK_COMPARE_NEAR(r.nees, neesByInverse<tk::kStateDim>(e12, t.estimate.P), 1e-6 * (1.0 + r.nees));
           const est::Vec<4> e4(v.position.xM - r.estXM, v.position.yM - r.estYM, v.groundVxMps() - r.estVxMps,
                                v.groundVyMps() - r.estVyMps);
           est::Mat<4> P4;
           const int idx[4] = {tk::kTgtX, tk::kTgtY, tk::kTgtVx, tk::kTgtVy};
           for (int a = 0; a < 4; ++a)
             for (int b = 0; b < 4; ++b) P4(a, b) = t.estimate.P(idx[a], idx[b]);
-          QVERIFY(near(r.positionVelocityNees4, neesByInverse<4>(e4, P4),
-                       1e-6 * (1.0 + r.positionVelocityNees4)));
+          RK_COMPARE_NEAR(r.positionVelocityNees4, neesByInverse<4>(e4, P4),
+                          1e-6 * (1.0 + r.positionVelocityNees4));
         }
       }
       QCOMPARE(k, csv.size());
@@ -143,10 +138,10 @@ class TestRunRows : public QObject {
     r.update.dim = 3;
     const RadarFixRow row = radarFixRow(r, f);
     QVERIFY(row.applied);
-    QVERIFY(near(radToDeg(row.trueHeadingRad), 361.0, 1e-9));
-    QVERIFY(near(row.sdXM, 4.0, 1e-12));
-    QVERIFY(near(radToDeg(row.sdHeadingRad), 1.0, 1e-12));
-    QVERIFY(near(row.nees, 6.25 + 1.0 + 4.0, 1e-9));
+    RK_COMPARE_NEAR(radToDeg(row.trueHeadingRad), 361.0, 1e-9);
+    RK_COMPARE_NEAR(row.sdXM, 4.0, 1e-12);
+    RK_COMPARE_NEAR(radToDeg(row.sdHeadingRad), 1.0, 1e-12);
+    RK_COMPARE_NEAR(row.nees, 6.25 + 1.0 + 4.0, 1e-9);
     QCOMPARE(row.nis, 1.5);
     QCOMPARE(row.dim, 3);
   }
@@ -166,9 +161,9 @@ class TestRunRows : public QObject {
     const auto placed = plotPositionsFromEstimate(f, geo);
     QCOMPARE(placed.size(), std::size_t{1});
     const double gamma = geo.gridInfo({1000.0, 0.0}).convergenceRad;
-    QVERIFY(std::abs(gamma) > 1e-4);
-    QVERIFY(near(placed[0].xM, 1000.0 + 2000.0 * std::cos(gamma), 1e-6));
-    QVERIFY(near(placed[0].yM, 2000.0 * std::sin(gamma), 1e-6));
+    QCOMPARE_GT(std::abs(gamma), 1e-4);
+    RK_COMPARE_NEAR(placed[0].xM, 1000.0 + 2000.0 * std::cos(gamma), 1e-6);
+    RK_COMPARE_NEAR(placed[0].yM, 2000.0 * std::sin(gamma), 1e-6);
   }
 
   void theEngineFlagsDeadReckoningByTheWindowsRule() {

@@ -2,6 +2,7 @@
 
 #include "common/angles.h"
 #include "sim/vessel_motion.h"
+#include "support/compare_near.h"
 
 using namespace reckoner;
 using namespace reckoner::sim;
@@ -21,15 +22,15 @@ class TestVesselTruth : public QObject {
     spec.schedule.push_back({80 * kMicrosPerSecond, std::nullopt, degToRad(4.01), std::nullopt});
     VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(80 * kMicrosPerSecond);
-    QVERIFY(std::abs(m.state().position.xM - 560.0) < 1e-6);  // straight at 7 m/s for 80 s
-    QVERIFY(std::abs(m.state().headingRad - degToRad(45.0)) < 1e-12);
+    RK_COMPARE_NEAR(m.state().position.xM, 560.0, 1e-6);  // straight at 7 m/s for 80 s
+    RK_COMPARE_NEAR(m.state().headingRad, degToRad(45.0), 1e-12);
     m.advanceTo(90 * kMicrosPerSecond);
     const auto& s = m.state();
-    QVERIFY(std::abs(std::hypot(s.waterVxMps, s.waterVyMps) - std::hypot(7.0, 7.0)) < 1e-9);
-    QVERIFY(std::abs(angleDiff(s.headingRad, degToRad(45.0 + 40.1))) < 1e-9);
+    RK_COMPARE_NEAR(std::hypot(s.waterVxMps, s.waterVyMps), std::hypot(7.0, 7.0), 1e-9);
+    RK_COMPARE_NEAR(angleDiff(s.headingRad, degToRad(45.0 + 40.1)), 0.0, 1e-9);
     // Centripetal acceleration |v| w, perpendicular to the velocity.
-    QVERIFY(std::abs(std::hypot(s.accelXMps2, s.accelYMps2) - std::hypot(7.0, 7.0) * degToRad(4.01)) < 1e-9);
-    QVERIFY(std::abs(s.accelXMps2 * s.waterVxMps + s.accelYMps2 * s.waterVyMps) < 1e-9);
+    RK_COMPARE_NEAR(std::hypot(s.accelXMps2, s.accelYMps2), std::hypot(7.0, 7.0) * degToRad(4.01), 1e-9);
+    RK_COMPARE_NEAR(s.accelXMps2 * s.waterVxMps + s.accelYMps2 * s.waterVyMps, 0.0, 1e-9);
     // A full circle returns to the start of the turn (trapezoidal integration: centimetres).
     const double period = 360.0 / 4.01;
     m.advanceTo(fromSeconds(80.0 + period));
@@ -44,8 +45,8 @@ class TestVesselTruth : public QObject {
     VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(kMicrosPerSecond);
     const double c = std::cos(0.05), s = std::sin(0.05);
-    QVERIFY(std::abs(m.state().waterVxMps - (c * 3.0 + s * -2.0)) < 1e-12);
-    QVERIFY(std::abs(m.state().waterVyMps - (c * -2.0 - s * 3.0)) < 1e-12);
+    RK_COMPARE_NEAR(m.state().waterVxMps, c * 3.0 + s * -2.0, 1e-12);
+    RK_COMPARE_NEAR(m.state().waterVyMps, c * -2.0 - s * 3.0, 1e-12);
   }
   void velocityRampAtMaximumAcceleration() {
     VesselMotionSpec spec;
@@ -56,12 +57,12 @@ class TestVesselTruth : public QObject {
     VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(104 * kMicrosPerSecond);
     QCOMPARE(m.state().waterVxMps, 0.0);
-    QVERIFY(std::abs(m.state().headingRad - degToRad(45.0)) < 1e-12);  // held while stopped
+    RK_COMPARE_NEAR(m.state().headingRad, degToRad(45.0), 1e-12);  // held while stopped
     m.advanceTo(110 * kMicrosPerSecond);
-    QVERIFY(std::abs(std::hypot(m.state().waterVxMps, m.state().waterVyMps) - 3.0) < 1e-9);
-    QVERIFY(std::abs(std::hypot(m.state().accelXMps2, m.state().accelYMps2) - 0.5) < 1e-9);
+    RK_COMPARE_NEAR(std::hypot(m.state().waterVxMps, m.state().waterVyMps), 3.0, 1e-9);
+    RK_COMPARE_NEAR(std::hypot(m.state().accelXMps2, m.state().accelYMps2), 0.5, 1e-9);
     m.advanceTo(120 * kMicrosPerSecond);
-    QVERIFY(std::abs(m.state().waterVxMps - 5.0) < 1e-12);
+    RK_COMPARE_NEAR(m.state().waterVxMps, 5.0, 1e-12);
     QCOMPARE(m.state().accelXMps2, 0.0);
   }
   void helmOrderTurnsAtTheRateLimitAndRampsTheSpeed() {
@@ -81,16 +82,15 @@ class TestVesselTruth : public QObject {
     QVERIFY(m.order().has_value());
     m.advanceTo(50 * kMicrosPerSecond);
     const auto& s = m.state();
-    QVERIFY2(std::abs(radToDeg(s.headingRad) - 20.0) < 1e-6,
-             qPrintable(QString::number(radToDeg(s.headingRad))));
-    QVERIFY(std::abs(std::hypot(s.waterVxMps, s.waterVyMps) - 7.0) < 1e-9);
+    RK_COMPARE_NEAR(radToDeg(s.headingRad), 20.0, 1e-6);
+    RK_COMPARE_NEAR(std::hypot(s.waterVxMps, s.waterVyMps), 7.0, 1e-9);
     const double vx = s.waterVxMps, vy = s.waterVyMps;
     m.advanceTo(fromSeconds(50.1));
-    QVERIFY(std::abs((m.state().waterVxMps - vx) / 0.1 - m.state().accelXMps2) < 1e-9);
-    QVERIFY(std::abs((m.state().waterVyMps - vy) / 0.1 - m.state().accelYMps2) < 1e-9);
+    RK_COMPARE_NEAR((m.state().waterVxMps - vx) / 0.1, m.state().accelXMps2, 1e-9);
+    RK_COMPARE_NEAR((m.state().waterVyMps - vy) / 0.1, m.state().accelYMps2, 1e-9);
     m.advanceTo(200 * kMicrosPerSecond);  // 180 s of turning needs 180 s; speed settled after 60 s
-    QVERIFY(std::abs(angleDiff(m.state().headingRad, degToRad(90.0))) < 1e-9);
-    QVERIFY(std::abs(m.state().waterVxMps - 8.0) < 1e-9);
+    RK_COMPARE_NEAR(angleDiff(m.state().headingRad, degToRad(90.0)), 0.0, 1e-9);
+    RK_COMPARE_NEAR(m.state().waterVxMps, 8.0, 1e-9);
     QCOMPARE(m.state().accelXMps2, 0.0);
   }
   void helmOrderTakesTheShorterWayRound() {
@@ -103,9 +103,9 @@ class TestVesselTruth : public QObject {
     spec.schedule.push_back(e);
     VesselMotionModel m(spec, kNoCurrent, Rng(1, kStreamTruth));
     m.advanceTo(5 * kMicrosPerSecond);
-    QVERIFY(std::abs(angleDiff(m.state().headingRad, degToRad(355.0))) < 1e-9);
+    RK_COMPARE_NEAR(angleDiff(m.state().headingRad, degToRad(355.0)), 0.0, 1e-9);
     m.advanceTo(15 * kMicrosPerSecond);
-    QVERIFY(std::abs(angleDiff(m.state().headingRad, degToRad(5.0))) < 1e-9);
+    RK_COMPARE_NEAR(angleDiff(m.state().headingRad, degToRad(5.0)), 0.0, 1e-9);
   }
   void operatorOverrideReplacesTheRestOfTheScript() {
     VesselMotionSpec spec;
@@ -120,8 +120,8 @@ class TestVesselTruth : public QObject {
     e.order = HelmOrder{0.0, 3.0};
     QVERIFY(m.overrideFrom(e));
     m.advanceTo(150 * kMicrosPerSecond);
-    QVERIFY(std::abs(m.state().headingRad) < 1e-9);  // the scripted turn at 100 s is gone
-    QVERIFY(std::abs(m.state().waterVyMps - 3.0) < 1e-9);
+    RK_COMPARE_NEAR(m.state().headingRad, 0.0, 1e-9);  // the scripted turn at 100 s is gone
+    RK_COMPARE_NEAR(m.state().waterVyMps, 3.0, 1e-9);
   }
   void instantaneousWhenNoLimit() {
     VesselMotionSpec spec;
@@ -149,9 +149,9 @@ class TestVesselTruth : public QObject {
       // Position integrates the current: the ship has no water velocity.
       QCOMPARE(m.state().waterVxMps, 0.0);
     }
-    QVERIFY(std::abs(v0 / n - 0.25) < 0.02);
-    QVERIFY(std::abs(v1 / n - 0.25) < 0.02);
-    QVERIFY(std::abs(c01 / v0 - std::exp(-0.5)) < 0.04);
+    RK_COMPARE_NEAR(v0 / n, 0.25, 0.02);
+    RK_COMPARE_NEAR(v1 / n, 0.25, 0.02);
+    RK_COMPARE_NEAR(c01 / v0, std::exp(-0.5), 0.04);
   }
   void sameSeedSameTruth() {
     VesselMotionSpec spec;

@@ -9,6 +9,7 @@
 #include "common/rng.h"
 #include "estimation/gaussian.h"
 #include "studies/seed003.h"
+#include "support/compare_near.h"
 #include "tracking/alpha_beta_gamma.h"
 
 using namespace reckoner;
@@ -35,13 +36,9 @@ class TestAlphaBetaGamma : public QObject {
       }
       const double alpha = K[0], beta = K[1] * T, gamma = K[2] * T * T / 2.0;
       const auto [b, g] = track::abgGainsFromAlpha(alpha);
-      QVERIFY2(std::abs(b - beta) < 1e-9 && std::abs(g - gamma) < 1e-9,
-               qPrintable(QString("alpha %1: beta %2 vs %3, gamma %4 vs %5")
-                              .arg(alpha)
-                              .arg(b)
-                              .arg(beta)
-                              .arg(g)
-                              .arg(gamma)));
+      const test::NearContext at(QString("alpha %1").arg(alpha));
+      RK_COMPARE_NEAR(b, beta, 1e-9);
+      RK_COMPARE_NEAR(g, gamma, 1e-9);
     }
   }
 
@@ -80,16 +77,10 @@ class TestAlphaBetaGamma : public QObject {
           b(k) = zs[static_cast<std::size_t>(k)];
         }
         const Eigen::Vector3d ls = A.colPivHouseholderQr().solve(b);
-        QVERIFY2(std::abs(e.smoothedPos[0] - ls[0]) < 1e-6 && std::abs(e.smoothedVel[0] - ls[1]) < 1e-6 &&
-                     std::abs(e.smoothedAcc[0] - ls[2]) < 1e-6,
-                 qPrintable(QString("n %1: %2 %3 %4 vs %5 %6 %7")
-                                .arg(n)
-                                .arg(e.smoothedPos[0])
-                                .arg(e.smoothedVel[0])
-                                .arg(e.smoothedAcc[0])
-                                .arg(ls[0])
-                                .arg(ls[1])
-                                .arg(ls[2])));
+        const test::NearContext at(QString("n %1").arg(n));
+        RK_COMPARE_NEAR(e.smoothedPos[0], ls[0], 1e-6);
+        RK_COMPARE_NEAR(e.smoothedVel[0], ls[1], 1e-6);
+        RK_COMPARE_NEAR(e.smoothedAcc[0], ls[2], 1e-6);
       } else {
         fixedSeen = true;
         QCOMPARE(e.alpha, cfg.alpha);
@@ -113,11 +104,11 @@ class TestAlphaBetaGamma : public QObject {
       f.update(fromSeconds(t), truth(t)[0], truth(t)[1]);
     }
     const double t = 2.5 * 399;
-    QVERIFY(std::abs(f.estimate().smoothedPos[0] - truth(t)[0]) < 1e-6);
-    QVERIFY(std::abs(f.estimate().smoothedVel[1] - (-3.0 - 0.04 * t)) < 1e-6);
-    QVERIFY(std::abs(f.estimate().smoothedAcc[0] - 0.02) < 1e-6);
+    RK_COMPARE_NEAR(f.estimate().smoothedPos[0], truth(t)[0], 1e-6);
+    RK_COMPARE_NEAR(f.estimate().smoothedVel[1], -3.0 - 0.04 * t, 1e-6);
+    RK_COMPARE_NEAR(f.estimate().smoothedAcc[0], 0.02, 1e-6);
     const auto p = f.predict(fromSeconds(t + 2.5));
-    QVERIFY(std::abs(p[1] - truth(t + 2.5)[1]) < 1e-6);
+    RK_COMPARE_NEAR(p[1], truth(t + 2.5)[1], 1e-6);
   }
 
   void smoothingReducesTheErrorOfThePlots() {
@@ -128,7 +119,7 @@ class TestAlphaBetaGamma : public QObject {
     sim::Seed003Setup setup;
     for (const auto c : {sim::Seed003Case::VaryingCourse, sim::Seed003Case::VaryingCourseAndSpeed}) {
       const auto r = sim::runSeed003(c, setup, cfg, 7);
-      QVERIFY(std::abs(r.observed2drmsM - 2.0 * std::sqrt(2.0) * setup.plotSdM) < 5.0);
+      RK_COMPARE_NEAR(r.observed2drmsM, 2.0 * std::sqrt(2.0) * setup.plotSdM, 5.0);
       QVERIFY2(r.smoothed2drmsM < 0.8 * r.observed2drmsM && r.smoothed2drmsM < r.predicted2drmsM,
                qPrintable(QString("%1: %2 %3 %4")
                               .arg(sim::seed003CaseName(c))

@@ -9,6 +9,7 @@
 #include "estimation/chi_square.h"
 #include "estimation/ekf.h"
 #include "studies/seed001.h"
+#include "support/compare_near.h"
 #include "support/numeric_jacobian.h"
 #include "tracking/input_estimation.h"
 
@@ -53,7 +54,7 @@ class TestInputEstimation : public QObject {
       QVERIFY2(err < 1e-6, qPrintable(QString("Jacobian error %1").arg(err)));
     }
     // The bearing residual wraps: 359 deg measured against 1 deg predicted is -2 deg.
-    QVERIFY(std::abs(m.residual({degToRad(359.0), 0.0}, {degToRad(1.0), 0.0})[0] - degToRad(-2.0)) < 1e-12);
+    RK_COMPARE_NEAR(m.residual({degToRad(359.0), 0.0}, {degToRad(1.0), 0.0})[0], degToRad(-2.0), 1e-12);
   }
 
   void noiseFreeStraightLineIsFollowedExactly() {
@@ -73,10 +74,10 @@ class TestInputEstimation : public QObject {
     }
     const auto& x = f.belief().x;
     const double t = 420.0;
-    QVERIFY2(std::abs(x[rp::kVx] - tvx) < 1e-6 && std::abs(x[rp::kVy] - tvy) < 1e-6,
-             qPrintable(QString("v = (%1, %2)").arg(x[rp::kVx]).arg(x[rp::kVy])));
-    QVERIFY(std::abs(x[rp::kRx] - (2000.0 + tvx * t - ovx * t)) < 1e-3);
-    QVERIFY(std::abs(x[rp::kRy] - (25000.0 + tvy * t - ovy * t)) < 1e-3);
+    RK_COMPARE_NEAR(x[rp::kVx], tvx, 1e-6);
+    RK_COMPARE_NEAR(x[rp::kVy], tvy, 1e-6);
+    RK_COMPARE_NEAR(x[rp::kRx], 2000.0 + tvx * t - ovx * t, 1e-3);
+    RK_COMPARE_NEAR(x[rp::kRy], 25000.0 + tvy * t - ovy * t, 1e-3);
     QVERIFY(!f.manoeuvring());
   }
 

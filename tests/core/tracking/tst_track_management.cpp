@@ -8,6 +8,7 @@
 
 #include "common/angles.h"
 #include "common/rng.h"
+#include "support/compare_near.h"
 #include "support/numeric_jacobian.h"
 #include "tracking/assignment.h"
 #include "tracking/coupled_drttkf.h"
@@ -85,18 +86,18 @@ class TestTrackManagement : public QObject {
     const est::Mat<4> P = est::Mat<4>::Identity();
     Cpa c = cpaOf(est::Vec<4>(0.0, 1852.0, 5.0, 0.0), P);
     QVERIFY(c.defined);
-    QVERIFY(std::abs(c.tcpaS) < 1e-9);
-    QVERIFY(std::abs(c.cpaM - 1852.0) < 1e-9);
+    RK_COMPARE_NEAR(c.tcpaS, 0.0, 1e-9);
+    RK_COMPARE_NEAR(c.cpaM, 1852.0, 1e-9);
     c = cpaOf(est::Vec<4>(4000.0, 1000.0, -4.0, 0.0), P);
-    QVERIFY(std::abs(c.tcpaS - 1000.0) < 1e-9);
-    QVERIFY(std::abs(c.cpaM - 1000.0) < 1e-9);
+    RK_COMPARE_NEAR(c.tcpaS, 1000.0, 1e-9);
+    RK_COMPARE_NEAR(c.cpaM, 1000.0, 1e-9);
     // Opening target: negative TCPA (the closest approach is past).
     QVERIFY(cpaOf(est::Vec<4>(4000.0, 1000.0, 4.0, 0.0), P).tcpaS < 0.0);
     // No relative motion: CPA is the present range, undefined TCPA.
     c = cpaOf(est::Vec<4>(300.0, 400.0, 0.0, 0.0), P);
     QVERIFY(!c.defined);
     QCOMPARE(c.cpaM, 500.0);
-    QVERIFY(std::abs(c.sdCpaM - 1.0) < 1e-12);
+    RK_COMPARE_NEAR(c.sdCpaM, 1.0, 1e-12);
   }
   void cpaJacobianMatchesNumeric() {
     for (const est::Vec<4>& rel :
@@ -133,8 +134,8 @@ class TestTrackManagement : public QObject {
       t2 += d.tcpaS * d.tcpaS;
     }
     const double sdC = std::sqrt(s2 / n - std::pow(s1 / n, 2)), sdT = std::sqrt(t2 / n - std::pow(t1 / n, 2));
-    QVERIFY2(std::abs(sdC / c.sdCpaM - 1.0) < 0.05, qPrintable(QString("%1 vs %2").arg(sdC).arg(c.sdCpaM)));
-    QVERIFY2(std::abs(sdT / c.sdTcpaS - 1.0) < 0.05, qPrintable(QString("%1 vs %2").arg(sdT).arg(c.sdTcpaS)));
+    RK_COMPARE_NEAR(sdC / c.sdCpaM, 1.0, 0.05);
+    RK_COMPARE_NEAR(sdT / c.sdTcpaS, 1.0, 0.05);
   }
   void cpaSpreadOnACollisionCourse() {
     // GIVEN a head-on geometry (CPA 0) WHEN the CPA of draws from the covariance is taken THEN the
@@ -153,8 +154,7 @@ class TestTrackManagement : public QObject {
       for (int k = 0; k < 4; ++k) z[k] = rng.normal();
       s2 += std::pow(cpaOf(rel + L * z, P).cpaM, 2);
     }
-    QVERIFY2(std::abs(std::sqrt(s2 / n) / c.sdCpaM - 1.0) < 0.05,
-             qPrintable(QString("%1 vs %2").arg(std::sqrt(s2 / n)).arg(c.sdCpaM)));
+    RK_COMPARE_NEAR(std::sqrt(s2 / n) / c.sdCpaM, 1.0, 0.05);
   }
   void kinematicsInTrueTerms() {
     tk::Belief b;
@@ -164,12 +164,12 @@ class TestTrackManagement : public QObject {
     b.x[tk::kTgtVx] = 5.0;  // target east at 5 m/s, own north at 5 m/s
     b.P = tk::Covariance::Identity() * 0.01;
     const auto k = kinematicsOf(b, degToRad(1.0));
-    QVERIFY(std::abs(radToDeg(k.trueCourseRad) - 91.0) < 1e-9);
-    QVERIFY(std::abs(k.speedMps - 5.0) < 1e-12);
-    QVERIFY(std::abs(radToDeg(k.relativeCourseRad) - 136.0) < 1e-9);  // (5, -5) relative: 135 + 1
-    QVERIFY(std::abs(k.relativeSpeedMps - std::sqrt(50.0)) < 1e-12);
-    QVERIFY(std::abs(radToDeg(k.trueBearingRad) - 91.0) < 1e-9);
-    QVERIFY(std::abs(k.sdSpeedMps - 0.1) < 1e-12);
+    RK_COMPARE_NEAR(radToDeg(k.trueCourseRad), 91.0, 1e-9);
+    RK_COMPARE_NEAR(k.speedMps, 5.0, 1e-12);
+    RK_COMPARE_NEAR(radToDeg(k.relativeCourseRad), 136.0, 1e-9);  // (5, -5) relative: 135 + 1
+    RK_COMPARE_NEAR(k.relativeSpeedMps, std::sqrt(50.0), 1e-12);
+    RK_COMPARE_NEAR(radToDeg(k.trueBearingRad), 91.0, 1e-9);
+    RK_COMPARE_NEAR(k.sdSpeedMps, 0.1, 1e-12);
   }
 
   // ---- coupled filter
@@ -205,9 +205,9 @@ class TestTrackManagement : public QObject {
     QCOMPARE(c.updateRadar(7, p).status, est::UpdateStatus::Accepted);
     QCOMPARE(c.dim(), est::drkf::kStateDim + 6);  // 13 own-ship states (11 of seed 000, 2 calibration)
     QCOMPARE(c.indexOf(7), 0);
-    QVERIFY(std::abs(c.target(0)[1] - (d.belief().x[est::drkf::kPosY] + 1000.0)) < 1e-9);
+    RK_COMPARE_NEAR(c.target(0)[1], d.belief().x[est::drkf::kPosY] + 1000.0, 1e-9);
     const double expectVarX = d.belief().P(est::drkf::kPosX, est::drkf::kPosX) + 1e-4 * 1000.0 * 1000.0;
-    QVERIFY(std::abs(c.targetCovariance(0)(0, 0) - expectVarX) < 1e-6);
+    RK_COMPARE_NEAR(c.targetCovariance(0)(0, 0), expectVarX, 1e-6);
     // A second plot updates it and shrinks its position variance.
     const double before = c.targetCovariance(0)(1, 1);
     QCOMPARE(c.updateRadar(7, {7 * kMicrosPerSecond, 1000.0 - 10.0, 0.0, 100.0, 1e-4}).status,
@@ -269,13 +269,13 @@ class TestTrackManagement : public QObject {
         QVERIFY(!taken[static_cast<std::size_t>(j)]);
         taken[static_cast<std::size_t>(j)] = true;
       }
-      QVERIFY2(std::abs(total(sol) - best) < 1e-9,
-               qPrintable(QString("trial %1: %2 vs %3").arg(trial).arg(total(sol)).arg(best)));
+      const test::NearContext at(QString("trial %1").arg(trial));
+      RK_COMPARE_NEAR(total(sol), best, 1e-9);
       // The sparse clustered solver gives the same total.
       GnnProblem g(rows, cols, miss);
       for (std::size_t i = 0; i < rows; ++i)
         for (std::size_t j = 0; j < cols; ++j) g.addPair(i, j, cost[i * cols + j]);
-      QVERIFY(std::abs(total(g.solve()) - best) < 1e-9);
+      RK_COMPARE_NEAR(total(g.solve()), best, 1e-9);
     }
   }
 
@@ -328,7 +328,7 @@ class TestTrackManagement : public QObject {
     QCOMPARE(countEvents(ev, TrackEvent::Kind::Lost), 1);
     const auto last = m.beliefAt(m.tracks().front(), 40'000'000);
     QCOMPARE(last.x, m.tracks().front().lastUpdate.x);  // last position kept, not coasted on
-    QVERIFY(std::abs(last.x[tk::kTgtY] - (1000.0 + 5.0 * 19.5)) < 20.0);
+    RK_COMPARE_NEAR(last.x[tk::kTgtY], 1000.0 + 5.0 * 19.5, 20.0);
     drive(
         m, 5, targets, [](int, std::size_t) { return false; }, 16);
     QVERIFY(m.tracks().empty());

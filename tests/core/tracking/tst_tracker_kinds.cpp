@@ -8,6 +8,7 @@
 #include "estimation/chi_square.h"
 #include "estimation/ekf.h"
 #include "sim/simulation_engine.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 #include "tracking/track_filter.h"
 #include "tracking/track_manager.h"
@@ -158,8 +159,9 @@ class TestTrackerKinds : public QObject {
     // Both show the same kind of belief: the target where the plot was, own ship from the DRKF.
     const tk::Belief b = m.beliefAt(*m.find(*second), 1'000'000);
     qInfo("IMM track at (%.2f, %.2f)", b.x[tk::kTgtX], b.x[tk::kTgtY]);
-    QVERIFY(std::abs(b.x[tk::kTgtX] + 4000.0) < 5.0 && std::abs(b.x[tk::kTgtY] - 2000.0) < 5.0);
-    QVERIFY(std::abs(b.x[tk::kOwnY] - 5.0) < 1e-9);
+    RK_COMPARE_NEAR(b.x[tk::kTgtX], -4000.0, 5.0);
+    RK_COMPARE_NEAR(b.x[tk::kTgtY], 2000.0, 5.0);
+    RK_COMPARE_NEAR(b.x[tk::kOwnY], 5.0, 1e-9);
   }
 
   void badKindParametersAreRefused() {

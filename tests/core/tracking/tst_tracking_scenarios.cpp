@@ -9,6 +9,7 @@
 #include "sim/simulation_engine.h"
 #include "studies/comparison.h"
 #include "studies/imo_accuracy.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 
 using namespace reckoner;
@@ -179,13 +180,13 @@ class TestTrackingScenarios : public QObject {
           r.coupledRmseVelocityMps, r.decoupledMeanNees, r.coupledMeanNees, r.propagationRatio(),
           r.eq10Ratio);
       QCOMPARE(r.coupledDim, est::drkf::kStateDim + 6 * r.targets);
-      QVERIFY(std::abs(r.coupledRmsePositionM / r.decoupledRmsePositionM - 1.0) < 0.03);
-      QVERIFY(std::abs(r.coupledRmseVelocityMps / r.decoupledRmseVelocityMps - 1.0) < 0.03);
+      RK_COMPARE_NEAR(r.coupledRmsePositionM / r.decoupledRmsePositionM, 1.0, 0.03);
+      RK_COMPARE_NEAR(r.coupledRmseVelocityMps / r.decoupledRmseVelocityMps, 1.0, 0.03);
       QVERIFY(r.coupledMeanNees > 3.0 && r.coupledMeanNees < 5.5);
       QVERIFY(r.decoupledMeanNees > 3.0 && r.decoupledMeanNees < 5.5);
       QVERIFY(r.coupledUsPerCycle > r.decoupledUsPerCycle);  // measured, not asserted against a figure
     }
-    QVERIFY(std::abs(rows[0].eq10Ratio - 17.0 * 17 * 17 / (1331.0 + 1728.0)) < 1e-9);
+    RK_COMPARE_NEAR(rows[0].eq10Ratio, 17.0 * 17 * 17 / (1331.0 + 1728.0), 1e-9);
     // withTargetCount copies targets turned about own ship, with fresh ids.
     const sim::Scenario s12 = sim::withTargetCount(s, 12);
     QCOMPARE(s12.targets.size(), std::size_t(12));

@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "common/angles.h"
+#include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 #include "tracking/track_manager.h"
 
@@ -93,17 +94,16 @@ class TestTtkf : public QObject {
     const Ttkf f = Ttkf::initiate(context(), own, plot);
     const auto& b = f.belief();
     QCOMPARE(f.timeUs(), TimeUs{600'000});
-    QVERIFY(std::abs(b.x[tk::kOwnY] - (200.0 + 3.0)) < 1e-6);
-    QVERIFY(std::abs(b.x[tk::kTgtX] - (100.0 + 2500.0)) < 1e-6);
-    QVERIFY(std::abs(b.x[tk::kTgtY] - (203.0 + 5000.0 * std::cos(degToRad(30.0)))) < 1e-6);
+    RK_COMPARE_NEAR(b.x[tk::kOwnY], 200.0 + 3.0, 1e-6);
+    RK_COMPARE_NEAR(b.x[tk::kTgtX], 100.0 + 2500.0, 1e-6);
+    RK_COMPARE_NEAR(b.x[tk::kTgtY], 203.0 + 5000.0 * std::cos(degToRad(30.0)), 1e-6);
     QCOMPARE(b.x[tk::kTgtVx], 0.0);
-    QVERIFY(std::abs(b.P(tk::kTgtVx, tk::kTgtVx) - 100.0) < 1e-12);
-    QVERIFY(std::abs(b.P(tk::kTgtX, tk::kOwnX) - b.P(tk::kOwnX, tk::kOwnX)) < 1e-12);
+    RK_COMPARE_NEAR(b.P(tk::kTgtVx, tk::kTgtVx), 100.0, 1e-12);
+    RK_COMPARE_NEAR(b.P(tk::kTgtX, tk::kOwnX), b.P(tk::kOwnX, tk::kOwnX), 1e-12);
     // Cross-range sd ~ 5000 m * 1 deg = 87 m on top of own ship's 5 m.
     const double crossRange = std::sqrt(b.P(tk::kTgtX, tk::kTgtX) * 0.75 + b.P(tk::kTgtY, tk::kTgtY) * 0.25 -
                                         2 * std::sqrt(0.75 * 0.25) * b.P(tk::kTgtX, tk::kTgtY));
-    QVERIFY2(std::abs(crossRange - std::hypot(5000.0 * degToRad(1.0), 5.0)) < 1.0,
-             qPrintable(QString::number(crossRange)));
+    RK_COMPARE_NEAR(crossRange, std::hypot(5000.0 * degToRad(1.0), 5.0), 1.0);
   }
   void radarUpdatesAndGates() {
     OwnShipInput own;
@@ -133,9 +133,9 @@ class TestTtkf : public QObject {
   void gridConversionOfPlots() {
     const sensors::RadarPlot p{5, 1000.0, degToRad(1.0), 100.0, 1e-4};
     const GridPlot g = toGrid(p, {degToRad(2.0), 0.9996});
-    QVERIFY(std::abs(g.bearingRad - degToRad(359.0)) < 1e-12);
-    QVERIFY(std::abs(g.rangeM - 999.6) < 1e-9);
-    QVERIFY(std::abs(g.rangeVarM2 - 100.0 * 0.9996 * 0.9996) < 1e-9);
+    RK_COMPARE_NEAR(g.bearingRad, degToRad(359.0), 1e-12);
+    RK_COMPARE_NEAR(g.rangeM, 999.6, 1e-9);
+    RK_COMPARE_NEAR(g.rangeVarM2, 100.0 * 0.9996 * 0.9996, 1e-9);
   }
   void bankHoldsAThousandTracks() {
     // GIVEN a bank of capacity 1000 with known association WHEN 1001 targets are seen THEN 1000

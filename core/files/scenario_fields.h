@@ -118,8 +118,6 @@ class Fields {
   std::vector<bool> used_;
 };
 
-/// A time of the run, in seconds in [0, duration_s] (compared in seconds: 1e13 s does not fit the
-
 /// One enumeration's spellings in scenario files, with what each means (for the error message).
 template <typename E>
 struct NamedValue {
@@ -162,6 +160,8 @@ inline constexpr std::array<NamedValue<track::Association>, 2> kAssociations{{
     {track::Association::Known, "known", "seed 000: plots carry their target"},
 }};
 
+/// A time of the run, in seconds in [0, duration_s] (compared in seconds: 1e13 s does not fit the
+/// microsecond clock).
 TimeUs timeField(Fields& f, std::string_view key, TimeUs durationUs);
 int lineOfPath(const JsonValue& root, std::string_view path);
 est::GaussMarkov gaussMarkov(Fields& f, std::string_view varianceKey, std::string_view sigmaKey);

@@ -4,6 +4,7 @@
 #include "files/scenario_json.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -23,116 +24,168 @@
 namespace reckoner::io {
 namespace scenario_detail {
 
+namespace {
+
+// One reader per sensor: f is the sensor's object (the caller finishes f).
+
+void readGps(Fields& f, sim::Scenario& s) {
+  s.gps.fitted = true;
+  s.gps.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
+  s.gps.positionVarM2 = f.number("position_variance_m2", Fields::Check::Positive);
+  s.gps.velocityVarM2PerS2 = f.number("velocity_variance_m2_s2", Fields::Check::Positive);
+  readPowerSchedule(f, s.gps.power, s.durationUs);
+}
+
+void readLoran(Fields& f, sim::Scenario& s) {
+  s.loran.fitted = true;
+  s.loran.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
+  const double var = f.number("markov_variance_m2", Fields::Check::NonNegative);
+  s.loran.error = {std::sqrt(var), f.number("markov_beta_per_s", Fields::Check::Positive)};
+  s.loran.whiteVarM2 = f.number("white_variance_m2", Fields::Check::Positive);
+  readPowerSchedule(f, s.loran.power, s.durationUs);
+}
+
+void readSpeedlog(Fields& f, sim::Scenario& s) {
+  s.speedlog.fitted = true;
+  s.speedlog.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
+  const double var = f.number("markov_variance_m2_s2", Fields::Check::NonNegative);
+  s.speedlog.error = {std::sqrt(var), f.number("markov_beta_per_s", Fields::Check::Positive)};
+  s.speedlog.whiteVarM2PerS2 = f.number("white_variance_m2_s2", Fields::Check::Positive);
+  if (const JsonValue* k = f.get("scale_error")) {  // not in the paper: none
+    Fields g(f.file(), *k, f.pathOf("scale_error"));
+    s.speedlog.scaleError = {g.number("sigma", Fields::Check::NonNegative),
+                             g.number("beta_per_s", Fields::Check::Positive)};
+    g.finish();
+  }
+  SpeedlogMode initial = SpeedlogMode::GroundLock;
+  if (const JsonValue* m = f.get("mode")) initial = speedlogMode(f, *m, f.pathOf("mode"));
+  s.speedlog.mode = StepSchedule<SpeedlogMode>(initial);
+  readPowerSchedule(f, s.speedlog.power, s.durationUs, [&](Fields& e, TimeUs t) {
+    s.speedlog.mode.addChange(t, speedlogMode(e, *e.get("mode"), e.pathOf("mode")));
+  });
+}
+
+void readGyro(Fields& f, sim::Scenario& s) {
+  s.gyro.fitted = true;
+  s.gyro.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
+  s.gyro.sdRad = degToRad(f.number("sd_deg", Fields::Check::Positive));
+  if (const JsonValue* b = f.get("bias")) {  // not in the paper: none
+    Fields g(f.file(), *b, f.pathOf("bias"));
+    // Their limits are checkScenario's (sim/scenario_limits.h), as every other field's.
+    s.gyro.bias = {degToRad(g.number("sigma_deg", Fields::Check::NonNegative)),
+                   g.number("beta_per_s", Fields::Check::Positive)};
+    g.finish();
+  }
+  readPowerSchedule(f, s.gyro.power, s.durationUs);
+}
+
+/// Whether the radar's "error_budget" asks for IMO A.823(19)'s sensor errors (the only budget known).
+bool a823ErrorBudget(Fields& f) {
+  const JsonValue* budget = f.get("error_budget");
+  if (!budget) return false;
+  if (!budget->isString() || budget->string != "a823")
+    f.fail(*budget, f.pathOf("error_budget"), "must be \"a823\" (IMO A.823(19) sensor errors)");
+  return true;
+}
+
+/// IMO A.823(19)'s radar and gyro errors: the defaults of the fields that follow.
+void setA823Errors(sensors::RadarSpec& r) {
+  r.rangeSdM = 20.0;                                  // pulse shape
+  r.bearingSdRad = degToRad(std::hypot(0.05, 0.03));  // beam shape and encoder
+  r.bearingBacklashRad = degToRad(0.05);
+  r.rangeQuantumM = nmToMetres(0.02);   // +-0.01 NM
+  r.bearingQuantumRad = degToRad(0.2);  // +-0.1 deg
+  r.gyroCalibrationRad = degToRad(0.5);
+  r.gyroScatterSdRad = degToRad(0.12);
+}
+
+/// The radar's measurement errors (with the A.823 budget every one has a default).
+void readRadarErrors(Fields& f, sensors::RadarSpec& r, bool a823) {
+  const auto P = Fields::Check::Positive;
+  const auto NN = Fields::Check::NonNegative;
+  r.rangeSdM = a823 ? f.numberOr("range_sd_m", r.rangeSdM, P) : f.number("range_sd_m", P);
+  r.bearingSdRad = a823 ? degToRad(f.numberOr("bearing_sd_deg", radToDeg(r.bearingSdRad), P))
+                        : degToRad(f.number("bearing_sd_deg", P));
+  r.bearingBacklashRad = degToRad(f.numberOr("bearing_backlash_deg", radToDeg(r.bearingBacklashRad), NN));
+  r.rangeQuantumM = f.numberOr("range_quantum_m", r.rangeQuantumM, NN);
+  r.bearingQuantumRad = degToRad(f.numberOr("bearing_quantum_deg", radToDeg(r.bearingQuantumRad), NN));
+  r.gyroCalibrationRad =
+      degToRad(f.numberOr("gyro_calibration_deg", radToDeg(r.gyroCalibrationRad), Fields::Check::Any));
+  r.gyroScatterSdRad = degToRad(f.numberOr("gyro_scatter_sd_deg", radToDeg(r.gyroScatterSdRad), NN));
+}
+
+/// The radar's coverage: ranges, detection probability and clutter.
+void readRadarCoverage(Fields& f, sensors::RadarSpec& r) {
+  const auto P = Fields::Check::Positive;
+  const auto NN = Fields::Check::NonNegative;
+  r.maxRangeM = nmToMetres(f.numberOr("max_range_nm", metresToNm(r.maxRangeM), P));
+  r.minRangeM = f.numberOr("min_range_m", r.minRangeM, NN);
+  if (r.minRangeM >= r.maxRangeM)
+    f.fail(*f.get("min_range_m"), f.pathOf("min_range_m"), "must be below max_range_nm");
+  if (const JsonValue* pd = f.get("detection_probability")) {
+    r.detectionProbability = f.checkedNumber(*pd, f.pathOf("detection_probability"), NN);
+    if (r.detectionProbability > 1.0) f.fail(*pd, f.pathOf("detection_probability"), "must lie in [0, 1]");
+  }
+  r.clutterPerKm2 = f.numberOr("clutter_per_km2", 0.0, NN);
+  r.clutterMaxRangeM = nmToMetres(f.numberOr("clutter_max_range_nm", 0.0, NN));
+}
+
+void readRadar(Fields& f, sim::Scenario& s) {
+  auto& r = s.radar;
+  r.fitted = true;
+  r.sweepPeriodS = f.numberOr("sweep_period_s", r.sweepPeriodS, Fields::Check::Positive);
+  const bool a823 = a823ErrorBudget(f);
+  if (a823) setA823Errors(r);
+  readRadarErrors(f, r, a823);
+  readRadarCoverage(f, r);
+  readPowerSchedule(f, r.power, s.durationUs);
+}
+
+/// The sensors a scenario may fit, in the order they are read, each with its reader.
+struct SensorSection {
+  std::string_view key;
+  void (*read)(Fields&, sim::Scenario&);
+};
+constexpr std::array<SensorSection, 5> kSensorSections{{
+    {"gps", readGps},
+    {"loran_c", readLoran},
+    {"speedlog", readSpeedlog},
+    {"gyro", readGyro},
+    {"radar", readRadar},
+}};
+
+bool isSensorKey(std::string_view key) {
+  return std::any_of(kSensorSections.begin(), kSensorSections.end(),
+                     [key](const SensorSection& section) { return section.key == key; });
+}
+
+/// "gps, loran_c, speedlog, gyro, radar".
+std::string sensorKeys() {
+  std::string keys;
+  for (const SensorSection& section : kSensorSections) {
+    if (!keys.empty()) keys += ", ";
+    keys += section.key;
+  }
+  return keys;
+}
+
+}  // namespace
+
 void readSensors(Fields& top, sim::Scenario& s) {
   const JsonValue& sensorsJson = top.require("sensors");
   Fields sensorsF(top.file(), sensorsJson, "sensors");
   s.gps.fitted = s.loran.fitted = s.speedlog.fitted = s.gyro.fitted = false;
-  const TimeUs dur = s.durationUs;
-
-  if (const JsonValue* v = sensorsF.get("gps")) {
-    Fields f(top.file(), *v, "sensors.gps");
-    s.gps.fitted = true;
-    s.gps.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
-    s.gps.positionVarM2 = f.number("position_variance_m2", Fields::Check::Positive);
-    s.gps.velocityVarM2PerS2 = f.number("velocity_variance_m2_s2", Fields::Check::Positive);
-    readPowerSchedule(f, s.gps.power, dur);
-    f.finish();
-  }
-  if (const JsonValue* v = sensorsF.get("loran_c")) {
-    Fields f(top.file(), *v, "sensors.loran_c");
-    s.loran.fitted = true;
-    s.loran.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
-    const double var = f.number("markov_variance_m2", Fields::Check::NonNegative);
-    s.loran.error = {std::sqrt(var), f.number("markov_beta_per_s", Fields::Check::Positive)};
-    s.loran.whiteVarM2 = f.number("white_variance_m2", Fields::Check::Positive);
-    readPowerSchedule(f, s.loran.power, dur);
-    f.finish();
-  }
-  if (const JsonValue* v = sensorsF.get("speedlog")) {
-    Fields f(top.file(), *v, "sensors.speedlog");
-    s.speedlog.fitted = true;
-    s.speedlog.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
-    const double var = f.number("markov_variance_m2_s2", Fields::Check::NonNegative);
-    s.speedlog.error = {std::sqrt(var), f.number("markov_beta_per_s", Fields::Check::Positive)};
-    s.speedlog.whiteVarM2PerS2 = f.number("white_variance_m2_s2", Fields::Check::Positive);
-    if (const JsonValue* k = f.get("scale_error")) {  // not in the paper: none
-      Fields g(top.file(), *k, "sensors.speedlog.scale_error");
-      s.speedlog.scaleError = {g.number("sigma", Fields::Check::NonNegative),
-                               g.number("beta_per_s", Fields::Check::Positive)};
-      g.finish();
+  for (const SensorSection& section : kSensorSections) {
+    if (const JsonValue* v = sensorsF.get(section.key)) {
+      Fields f(top.file(), *v, sensorsF.pathOf(section.key));
+      section.read(f, s);
+      f.finish();
     }
-    SpeedlogMode initial = SpeedlogMode::GroundLock;
-    if (const JsonValue* m = f.get("mode")) initial = speedlogMode(f, *m, f.pathOf("mode"));
-    s.speedlog.mode = StepSchedule<SpeedlogMode>(initial);
-    readPowerSchedule(f, s.speedlog.power, dur, [&](Fields& e, TimeUs t) {
-      s.speedlog.mode.addChange(t, speedlogMode(e, *e.get("mode"), e.pathOf("mode")));
-    });
-    f.finish();
-  }
-  if (const JsonValue* v = sensorsF.get("gyro")) {
-    Fields f(top.file(), *v, "sensors.gyro");
-    s.gyro.fitted = true;
-    s.gyro.rateHz = f.numberOr("rate_hz", 1.0, Fields::Check::Positive);
-    s.gyro.sdRad = degToRad(f.number("sd_deg", Fields::Check::Positive));
-    if (const JsonValue* b = f.get("bias")) {  // not in the paper: none
-      Fields g(top.file(), *b, "sensors.gyro.bias");
-      // Their limits are checkScenario's (sim/scenario_limits.h), as every other field's.
-      s.gyro.bias = {degToRad(g.number("sigma_deg", Fields::Check::NonNegative)),
-                     g.number("beta_per_s", Fields::Check::Positive)};
-      g.finish();
-    }
-    readPowerSchedule(f, s.gyro.power, dur);
-    f.finish();
-  }
-  if (const JsonValue* v = sensorsF.get("radar")) {
-    Fields f(top.file(), *v, "sensors.radar");
-    auto& r = s.radar;
-    r.fitted = true;
-    r.sweepPeriodS = f.numberOr("sweep_period_s", r.sweepPeriodS, Fields::Check::Positive);
-    const bool a823 = [&] {
-      const JsonValue* budget = f.get("error_budget");
-      if (!budget) return false;
-      if (!budget->isString() || budget->string != "a823")
-        f.fail(*budget, f.pathOf("error_budget"), "must be \"a823\" (IMO A.823(19) sensor errors)");
-      return true;
-    }();
-    if (a823) {
-      r.rangeSdM = 20.0;                                  // pulse shape
-      r.bearingSdRad = degToRad(std::hypot(0.05, 0.03));  // beam shape and encoder
-      r.bearingBacklashRad = degToRad(0.05);
-      r.rangeQuantumM = nmToMetres(0.02);   // +-0.01 NM
-      r.bearingQuantumRad = degToRad(0.2);  // +-0.1 deg
-      r.gyroCalibrationRad = degToRad(0.5);
-      r.gyroScatterSdRad = degToRad(0.12);
-    }
-    const auto P = Fields::Check::Positive;
-    const auto NN = Fields::Check::NonNegative;
-    r.rangeSdM = a823 ? f.numberOr("range_sd_m", r.rangeSdM, P) : f.number("range_sd_m", P);
-    r.bearingSdRad = a823 ? degToRad(f.numberOr("bearing_sd_deg", radToDeg(r.bearingSdRad), P))
-                          : degToRad(f.number("bearing_sd_deg", P));
-    r.bearingBacklashRad = degToRad(f.numberOr("bearing_backlash_deg", radToDeg(r.bearingBacklashRad), NN));
-    r.rangeQuantumM = f.numberOr("range_quantum_m", r.rangeQuantumM, NN);
-    r.bearingQuantumRad = degToRad(f.numberOr("bearing_quantum_deg", radToDeg(r.bearingQuantumRad), NN));
-    r.gyroCalibrationRad =
-        degToRad(f.numberOr("gyro_calibration_deg", radToDeg(r.gyroCalibrationRad), Fields::Check::Any));
-    r.gyroScatterSdRad = degToRad(f.numberOr("gyro_scatter_sd_deg", radToDeg(r.gyroScatterSdRad), NN));
-    r.maxRangeM = nmToMetres(f.numberOr("max_range_nm", metresToNm(r.maxRangeM), P));
-    r.minRangeM = f.numberOr("min_range_m", r.minRangeM, NN);
-    if (r.minRangeM >= r.maxRangeM)
-      f.fail(*f.get("min_range_m"), f.pathOf("min_range_m"), "must be below max_range_nm");
-    if (const JsonValue* pd = f.get("detection_probability")) {
-      r.detectionProbability = f.checkedNumber(*pd, f.pathOf("detection_probability"), NN);
-      if (r.detectionProbability > 1.0) f.fail(*pd, f.pathOf("detection_probability"), "must lie in [0, 1]");
-    }
-    r.clutterPerKm2 = f.numberOr("clutter_per_km2", 0.0, NN);
-    r.clutterMaxRangeM = nmToMetres(f.numberOr("clutter_max_range_nm", 0.0, NN));
-    readPowerSchedule(f, r.power, dur);
-    f.finish();
   }
   for (const auto& [key, value] : sensorsJson.object) {
-    if (key != "gps" && key != "loran_c" && key != "speedlog" && key != "gyro" && key != "radar")
+    if (!isSensorKey(key))
       sensorsF.fail(value, "sensors." + key,
-                    "unknown sensor " + io::quoted(key) + " (known: gps, loran_c, speedlog, gyro, radar)");
+                    "unknown sensor " + io::quoted(key) + " (known: " + sensorKeys() + ")");
   }
 }
 

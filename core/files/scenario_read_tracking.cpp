@@ -45,23 +45,29 @@ void readRadarMatching(Fields& top, sim::Scenario& s) {
   f.finish();
 }
 
-void readTracker(Fields& top, sim::Scenario& s) {
-  const JsonValue* v = top.get("tracker");
-  if (!v) return;
-  Fields f(top.file(), *v, "tracker");
-  auto& tr = s.tracker;
+namespace {
+
+// The groups of the "tracker" section, in the order they are read (f is the section; the caller
+// finishes it).
+
+/// The accelerations the track filters model, and how own ship's estimate feeds them.
+void readTrackerModels(Fields& f, sim::TrackerSpec& tr) {
   if (const JsonValue* a = f.get("own_acceleration")) {
-    Fields g(top.file(), *a, "tracker.own_acceleration");
+    Fields g(f.file(), *a, f.pathOf("own_acceleration"));
     tr.ownAcceleration = gaussMarkov(g, "variance_m2_s4", "sigma_mps2");
     g.finish();
   }
   if (const JsonValue* a = f.get("target_acceleration")) {
-    Fields g(top.file(), *a, "tracker.target_acceleration");
+    Fields g(f.file(), *a, f.pathOf("target_acceleration"));
     tr.targetAcceleration = gaussMarkov(g, "variance_m2_s4", "sigma_mps2");
     g.finish();
   }
   if (const JsonValue* feed = f.get("own_ship_feed"))
-    tr.feed = valueOf(kOwnShipFeeds, f, *feed, "tracker.own_ship_feed");
+    tr.feed = valueOf(kOwnShipFeeds, f, *feed, f.pathOf("own_ship_feed"));
+}
+
+/// The gate, a new track's speed sd, the bank's capacity and how plots are associated.
+void readTrackerAssociation(Fields& f, sim::TrackerSpec& tr) {
   if (const JsonValue* g = f.get("gate_probability")) {
     tr.gateProbability = f.checkedNumber(*g, f.pathOf("gate_probability"), Fields::Check::NonNegative);
     if (!(tr.gateProbability < 1.0))
@@ -71,56 +77,76 @@ void readTracker(Fields& top, sim::Scenario& s) {
   tr.capacity = static_cast<std::size_t>(f.integerOr("capacity", 1, 1000000, static_cast<int>(tr.capacity)));
   if (const JsonValue* a = f.get("association"))
     tr.association = valueOf(kAssociations, f, *a, f.pathOf("association"));
-  // {"hits": M, "of_sweeps": N} with integers 1 <= M <= N <= 32.
-  const auto mOfN = [&](std::string_view key, int& hits, int& sweeps) {
-    const JsonValue* c = f.get(key);
-    if (!c) return;
-    Fields g(top.file(), *c, f.pathOf(key));
-    const double m = g.number("hits", Fields::Check::Positive);
-    const double n = g.number("of_sweeps", Fields::Check::Positive);
-    if (m != std::floor(m) || n != std::floor(n) || m > n || n > 32)
-      g.fail(*c, f.pathOf(key), "needs integers 1 <= hits <= of_sweeps <= 32");
-    g.finish();
-    hits = static_cast<int>(m);
-    sweeps = static_cast<int>(n);
-  };
-  mOfN("confirm", tr.confirmHits, tr.confirmSweeps);
-  mOfN("keep", tr.keepHits, tr.keepSweeps);
+}
+
+struct MOfN {
+  int hits = 0, sweeps = 0;
+};
+
+/// {"hits": M, "of_sweeps": N} with integers 1 <= M <= N <= 32, when the key is given.
+std::optional<MOfN> readMOfN(Fields& f, std::string_view key) {
+  const JsonValue* c = f.get(key);
+  if (!c) return std::nullopt;
+  Fields g(f.file(), *c, f.pathOf(key));
+  const double m = g.number("hits", Fields::Check::Positive);
+  const double n = g.number("of_sweeps", Fields::Check::Positive);
+  if (m != std::floor(m) || n != std::floor(n) || m > n || n > 32)
+    g.fail(*c, f.pathOf(key), "needs integers 1 <= hits <= of_sweeps <= 32");
+  g.finish();
+  return MOfN{static_cast<int>(m), static_cast<int>(n)};
+}
+
+/// A track's life: confirmation and keeping (M of N), the hold when lost, automatic acquisition.
+void readTrackLife(Fields& f, sim::TrackerSpec& tr) {
+  if (const auto confirm = readMOfN(f, "confirm")) {
+    tr.confirmHits = confirm->hits;
+    tr.confirmSweeps = confirm->sweeps;
+  }
+  if (const auto keep = readMOfN(f, "keep")) {
+    tr.keepHits = keep->hits;
+    tr.keepSweeps = keep->sweeps;
+  }
   tr.lostHoldS = f.numberOr("lost_hold_s", tr.lostHoldS, Fields::Check::NonNegative);
   if (const JsonValue* a = f.get("auto_acquire")) tr.autoAcquire = f.boolean(*a, f.pathOf("auto_acquire"));
-  if (const JsonValue* z = f.get("acquisition_zones")) {
-    if (!z->isArray()) f.fail(*z, f.pathOf("acquisition_zones"), "must be an array of zones");
-    for (std::size_t i = 0; i < z->array.size(); ++i) {
-      Fields g(top.file(), z->array[i], "tracker.acquisition_zones[" + std::to_string(i) + "]");
-      track::AcquisitionZone zone;
-      zone.minRangeM = nmToMetres(g.numberOr("min_range_nm", 0.0, Fields::Check::NonNegative));
-      zone.maxRangeM = nmToMetres(g.number("max_range_nm", Fields::Check::Positive));
-      if (zone.maxRangeM <= zone.minRangeM)
-        g.fail(*g.get("max_range_nm"), g.pathOf("max_range_nm"), "must exceed min_range_nm");
-      zone.fromBearingRad = degToRad(g.numberOr("from_bearing_deg", 0.0));
-      zone.toBearingRad = degToRad(g.numberOr("to_bearing_deg", 0.0));
-      g.finish();
-      tr.zones.push_back(zone);
-    }
-  }
-  tr.dangerCpaM =
-      nmToMetres(f.numberOr("danger_cpa_nm", metresToNm(tr.dangerCpaM), Fields::Check::NonNegative));
-  tr.dangerTcpaS = 60.0 * f.numberOr("danger_tcpa_min", tr.dangerTcpaS / 60.0, Fields::Check::NonNegative);
-  if (const JsonValue* ie = f.get("input_estimation")) {
-    Fields g(top.file(), *ie, f.pathOf("input_estimation"));
-    const JsonValue& w = g.require("window");
-    if (!w.isNumber() || w.number < 1 || w.number > 100 || std::floor(w.number) != w.number)
-      g.fail(w, g.pathOf("window"), "must be an integer in [1, 100] (radar updates)");
-    tr.inputEstimationWindow = static_cast<int>(w.number);
-    if (const JsonValue* p = g.get("false_alarm_probability")) {
-      tr.inputEstimationPfa =
-          g.checkedNumber(*p, g.pathOf("false_alarm_probability"), Fields::Check::Positive);
-      if (!(tr.inputEstimationPfa < 1.0))
-        g.fail(*p, g.pathOf("false_alarm_probability"), "must lie in (0, 1)");
-    }
+}
+
+void readAcquisitionZones(Fields& f, sim::TrackerSpec& tr) {
+  const JsonValue* z = f.get("acquisition_zones");
+  if (!z) return;
+  if (!z->isArray()) f.fail(*z, f.pathOf("acquisition_zones"), "must be an array of zones");
+  for (std::size_t i = 0; i < z->array.size(); ++i) {
+    Fields g(f.file(), z->array[i], f.pathOf("acquisition_zones") + "[" + std::to_string(i) + "]");
+    track::AcquisitionZone zone;
+    zone.minRangeM = nmToMetres(g.numberOr("min_range_nm", 0.0, Fields::Check::NonNegative));
+    zone.maxRangeM = nmToMetres(g.number("max_range_nm", Fields::Check::Positive));
+    if (zone.maxRangeM <= zone.minRangeM)
+      g.fail(*g.get("max_range_nm"), g.pathOf("max_range_nm"), "must exceed min_range_nm");
+    zone.fromBearingRad = degToRad(g.numberOr("from_bearing_deg", 0.0));
+    zone.toBearingRad = degToRad(g.numberOr("to_bearing_deg", 0.0));
     g.finish();
-    tr.kind = track::TrackerKind::EkfInputEstimation;  // unless "filter" says otherwise
+    tr.zones.push_back(zone);
   }
+}
+
+/// seed 001's input estimation: its window and false-alarm probability; it makes the filter ekf-ie.
+void readInputEstimation(Fields& f, sim::TrackerSpec& tr) {
+  const JsonValue* ie = f.get("input_estimation");
+  if (!ie) return;
+  Fields g(f.file(), *ie, f.pathOf("input_estimation"));
+  const JsonValue& w = g.require("window");
+  if (!w.isNumber() || w.number < 1 || w.number > 100 || std::floor(w.number) != w.number)
+    g.fail(w, g.pathOf("window"), "must be an integer in [1, 100] (radar updates)");
+  tr.inputEstimationWindow = static_cast<int>(w.number);
+  if (const JsonValue* p = g.get("false_alarm_probability")) {
+    tr.inputEstimationPfa = g.checkedNumber(*p, g.pathOf("false_alarm_probability"), Fields::Check::Positive);
+    if (!(tr.inputEstimationPfa < 1.0)) g.fail(*p, g.pathOf("false_alarm_probability"), "must lie in (0, 1)");
+  }
+  g.finish();
+  tr.kind = track::TrackerKind::EkfInputEstimation;  // unless "filter" says otherwise
+}
+
+/// The track filter ("filter") and its later changes ("filter_changes").
+void readFilterKind(Fields& f, sim::TrackerSpec& tr, TimeUs durationUs) {
   if (const JsonValue* k = f.get("filter")) {
     const auto kind = k->isString() ? track::trackerKindFromName(k->string) : std::nullopt;
     if (!kind)
@@ -128,49 +154,74 @@ void readTracker(Fields& top, sim::Scenario& s) {
              "must be \"ekf\", \"ekf-ie\" (with input estimation), \"abg\" (alpha-beta-gamma) or \"imm\"");
     tr.kind = *kind;
   }
-  if (const JsonValue* ch = f.get("filter_changes")) {
-    if (!ch->isArray()) f.fail(*ch, f.pathOf("filter_changes"), "must be an array of {\"t_s\", \"filter\"}");
-    for (std::size_t i = 0; i < ch->array.size(); ++i) {
-      Fields g(top.file(), ch->array[i], "tracker.filter_changes[" + std::to_string(i) + "]");
-      const TimeUs t = timeField(g, "t_s", s.durationUs);
-      if (!tr.kindChanges.empty() && t <= tr.kindChanges.back().first)
-        g.fail(*g.get("t_s"), g.pathOf("t_s"), "must increase from change to change");
-      const JsonValue& k = g.require("filter");
-      const auto kind = k.isString() ? track::trackerKindFromName(k.string) : std::nullopt;
-      if (!kind) g.fail(k, g.pathOf("filter"), "must be \"ekf\", \"ekf-ie\", \"abg\" or \"imm\"");
-      g.finish();
-      tr.kindChanges.emplace_back(t, *kind);
-    }
-  }
-  if (const JsonValue* a = f.get("alpha_beta_gamma")) {
-    Fields g(top.file(), *a, f.pathOf("alpha_beta_gamma"));
-    if (const JsonValue* al = g.get("alpha")) {
-      tr.abg.alpha = g.checkedNumber(*al, g.pathOf("alpha"), Fields::Check::Positive);
-      if (!(tr.abg.alpha <= 0.6)) g.fail(*al, g.pathOf("alpha"), "must lie in (0, 0.6] (seed 003's bound)");
-    }
-    if (const JsonValue* es = g.get("expanding_start"))
-      tr.abg.expandingStart = g.boolean(*es, g.pathOf("expanding_start"));
+  const JsonValue* ch = f.get("filter_changes");
+  if (!ch) return;
+  if (!ch->isArray()) f.fail(*ch, f.pathOf("filter_changes"), "must be an array of {\"t_s\", \"filter\"}");
+  for (std::size_t i = 0; i < ch->array.size(); ++i) {
+    Fields g(f.file(), ch->array[i], f.pathOf("filter_changes") + "[" + std::to_string(i) + "]");
+    const TimeUs t = timeField(g, "t_s", durationUs);
+    if (!tr.kindChanges.empty() && t <= tr.kindChanges.back().first)
+      g.fail(*g.get("t_s"), g.pathOf("t_s"), "must increase from change to change");
+    const JsonValue& k = g.require("filter");
+    const auto kind = k.isString() ? track::trackerKindFromName(k.string) : std::nullopt;
+    if (!kind) g.fail(k, g.pathOf("filter"), "must be \"ekf\", \"ekf-ie\", \"abg\" or \"imm\"");
     g.finish();
+    tr.kindChanges.emplace_back(t, *kind);
   }
-  if (const JsonValue* m = f.get("imm")) {
-    Fields g(top.file(), *m, f.pathOf("imm"));
-    auto& c = tr.imm;
-    c.cvAccelQ = g.numberOr("cv_accel_q", c.cvAccelQ, Fields::Check::Positive);
-    c.ctAccelQ = g.numberOr("ct_accel_q", c.ctAccelQ, Fields::Check::Positive);
-    c.ctTurnQ = degToRad(
-        degToRad(g.numberOr("ct_turn_q_deg2", radToDeg(radToDeg(c.ctTurnQ)), Fields::Check::NonNegative)));
-    c.cvSojournS = g.numberOr("cv_sojourn_s", c.cvSojournS, Fields::Check::Positive);
-    c.ctSojournS = g.numberOr("ct_sojourn_s", c.ctSojournS, Fields::Check::Positive);
-    c.initialTurnSdRadPerS = degToRad(
-        g.numberOr("initial_turn_sd_dps", radToDeg(c.initialTurnSdRadPerS), Fields::Check::Positive));
-    if (const JsonValue* mp = g.get("manoeuvre_probability")) {
-      c.manoeuvreProbability =
-          g.checkedNumber(*mp, g.pathOf("manoeuvre_probability"), Fields::Check::Positive);
-      if (!(c.manoeuvreProbability < 1.0))
-        g.fail(*mp, g.pathOf("manoeuvre_probability"), "must lie in (0, 1)");
-    }
-    g.finish();
+}
+
+/// seed 003's alpha-beta-gamma filter.
+void readAlphaBetaGamma(Fields& f, track::AbgConfig& abg) {
+  const JsonValue* a = f.get("alpha_beta_gamma");
+  if (!a) return;
+  Fields g(f.file(), *a, f.pathOf("alpha_beta_gamma"));
+  if (const JsonValue* al = g.get("alpha")) {
+    abg.alpha = g.checkedNumber(*al, g.pathOf("alpha"), Fields::Check::Positive);
+    if (!(abg.alpha <= 0.6)) g.fail(*al, g.pathOf("alpha"), "must lie in (0, 0.6] (seed 003's bound)");
   }
+  if (const JsonValue* es = g.get("expanding_start"))
+    abg.expandingStart = g.boolean(*es, g.pathOf("expanding_start"));
+  g.finish();
+}
+
+/// The IMM's two models (constant velocity, coordinated turn) and their switching.
+void readImm(Fields& f, track::ImmConfig& c) {
+  const JsonValue* m = f.get("imm");
+  if (!m) return;
+  Fields g(f.file(), *m, f.pathOf("imm"));
+  c.cvAccelQ = g.numberOr("cv_accel_q", c.cvAccelQ, Fields::Check::Positive);
+  c.ctAccelQ = g.numberOr("ct_accel_q", c.ctAccelQ, Fields::Check::Positive);
+  c.ctTurnQ = degToRad(
+      degToRad(g.numberOr("ct_turn_q_deg2", radToDeg(radToDeg(c.ctTurnQ)), Fields::Check::NonNegative)));
+  c.cvSojournS = g.numberOr("cv_sojourn_s", c.cvSojournS, Fields::Check::Positive);
+  c.ctSojournS = g.numberOr("ct_sojourn_s", c.ctSojournS, Fields::Check::Positive);
+  c.initialTurnSdRadPerS =
+      degToRad(g.numberOr("initial_turn_sd_dps", radToDeg(c.initialTurnSdRadPerS), Fields::Check::Positive));
+  if (const JsonValue* mp = g.get("manoeuvre_probability")) {
+    c.manoeuvreProbability = g.checkedNumber(*mp, g.pathOf("manoeuvre_probability"), Fields::Check::Positive);
+    if (!(c.manoeuvreProbability < 1.0)) g.fail(*mp, g.pathOf("manoeuvre_probability"), "must lie in (0, 1)");
+  }
+  g.finish();
+}
+
+}  // namespace
+
+void readTracker(Fields& top, sim::Scenario& s) {
+  const JsonValue* v = top.get("tracker");
+  if (!v) return;
+  Fields f(top.file(), *v, "tracker");
+  auto& tr = s.tracker;
+  readTrackerModels(f, tr);
+  readTrackerAssociation(f, tr);
+  readTrackLife(f, tr);
+  readAcquisitionZones(f, tr);
+  tr.dangerCpaM =
+      nmToMetres(f.numberOr("danger_cpa_nm", metresToNm(tr.dangerCpaM), Fields::Check::NonNegative));
+  tr.dangerTcpaS = 60.0 * f.numberOr("danger_tcpa_min", tr.dangerTcpaS / 60.0, Fields::Check::NonNegative);
+  readInputEstimation(f, tr);
+  readFilterKind(f, tr, s.durationUs);
+  readAlphaBetaGamma(f, tr.abg);
+  readImm(f, tr.imm);
   f.finish();
 }
 

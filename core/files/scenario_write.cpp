@@ -107,109 +107,105 @@ void writeMotion(JsonWriter& w, const sim::VesselMotionSpec& m) {
   w.endArray();
 }
 
-}  // namespace
+// One writer per sensor: the sensor's object, key included, in the order parseScenario() reads them.
 
-std::string writeScenario(const sim::Scenario& s) {
-  JsonWriter w;
-  w.beginObject();
-  w.key("format").value(kScenarioFormat);
-  w.key("name").value(s.name);
-  if (!s.description.empty()) w.key("description").value(s.description);
-  w.key("origin").beginObject();
-  w.key("lat_deg").value(s.origin.latDeg, kExact).key("lon_deg").value(s.origin.lonDeg, kExact);
+void writeGps(JsonWriter& w, const sensors::GpsSpec& g) {
+  w.key("gps").beginObject();
+  w.key("rate_hz").value(g.rateHz, kExact);
+  w.key("position_variance_m2").value(g.positionVarM2, kExact);
+  w.key("velocity_variance_m2_s2").value(g.velocityVarM2PerS2, kExact);
+  writeSchedule(w, g.power, nullptr);
   w.endObject();
-  writeTime(w, "duration_s", s.durationUs);
-  writeTime(w, "step_s", s.stepUs);
-  w.key("seed").value(s.seed);
-  w.key("current");
-  writeGaussMarkov(w, s.current, "sigma_mps");
+}
 
-  w.key("own_ship").beginObject();
-  writeMotion(w, s.ownShip);
+void writeLoran(JsonWriter& w, const sensors::LoranSpec& l) {
+  w.key("loran_c").beginObject();
+  w.key("rate_hz").value(l.rateHz, kExact);
+  w.key("markov_variance_m2").value(l.error.sigma * l.error.sigma, kExact);
+  w.key("markov_beta_per_s").value(l.error.betaPerS, kExact);
+  w.key("white_variance_m2").value(l.whiteVarM2, kExact);
+  writeSchedule(w, l.power, nullptr);
   w.endObject();
+}
 
+void writeSpeedlog(JsonWriter& w, const sensors::SpeedlogSpec& l) {
+  w.key("speedlog").beginObject();
+  w.key("rate_hz").value(l.rateHz, kExact);
+  w.key("markov_variance_m2_s2").value(l.error.sigma * l.error.sigma, kExact);
+  w.key("markov_beta_per_s").value(l.error.betaPerS, kExact);
+  w.key("white_variance_m2_s2").value(l.whiteVarM2PerS2, kExact);
+  if (l.scaleError.sigma > 0.0) {
+    w.key("scale_error").beginObject();
+    w.key("sigma").value(l.scaleError.sigma, kExact);
+    w.key("beta_per_s").value(l.scaleError.betaPerS, kExact);
+    w.endObject();
+  }
+  w.key("mode").value(scenario_detail::nameOf(scenario_detail::kSpeedlogModes, l.mode.initial()));
+  writeSchedule(w, l.power, &l.mode);
+  w.endObject();
+}
+
+void writeGyro(JsonWriter& w, const sensors::GyroSpec& g) {
+  w.key("gyro").beginObject();
+  w.key("rate_hz").value(g.rateHz, kExact);
+  w.key("sd_deg").value(radToDeg(g.sdRad), kExact);
+  if (g.bias.sigma > 0.0) {
+    w.key("bias").beginObject();
+    w.key("sigma_deg").value(radToDeg(g.bias.sigma), kExact);
+    w.key("beta_per_s").value(g.bias.betaPerS, kExact);
+    w.endObject();
+  }
+  writeSchedule(w, g.power, nullptr);
+  w.endObject();
+}
+
+void writeRadar(JsonWriter& w, const sensors::RadarSpec& r) {
+  w.key("radar").beginObject();
+  w.key("sweep_period_s").value(r.sweepPeriodS, kExact);
+  w.key("range_sd_m").value(r.rangeSdM, kExact);
+  w.key("bearing_sd_deg").value(radToDeg(r.bearingSdRad), kExact);
+  w.key("bearing_backlash_deg").value(radToDeg(r.bearingBacklashRad), kExact);
+  w.key("range_quantum_m").value(r.rangeQuantumM, kExact);
+  w.key("bearing_quantum_deg").value(radToDeg(r.bearingQuantumRad), kExact);
+  w.key("gyro_calibration_deg").value(radToDeg(r.gyroCalibrationRad), kExact);
+  w.key("gyro_scatter_sd_deg").value(radToDeg(r.gyroScatterSdRad), kExact);
+  w.key("max_range_nm").value(metresToNm(r.maxRangeM), kExact);
+  w.key("min_range_m").value(r.minRangeM, kExact);
+  w.key("detection_probability").value(r.detectionProbability, kExact);
+  w.key("clutter_per_km2").value(r.clutterPerKm2, kExact);
+  w.key("clutter_max_range_nm").value(metresToNm(r.clutterMaxRangeM), kExact);
+  writeSchedule(w, r.power, nullptr);
+  w.endObject();
+}
+
+/// "sensors": the fitted ones.
+void writeSensors(JsonWriter& w, const sim::Scenario& s) {
   w.key("sensors").beginObject();
-  if (s.gps.fitted) {
-    w.key("gps").beginObject();
-    w.key("rate_hz").value(s.gps.rateHz, kExact);
-    w.key("position_variance_m2").value(s.gps.positionVarM2, kExact);
-    w.key("velocity_variance_m2_s2").value(s.gps.velocityVarM2PerS2, kExact);
-    writeSchedule(w, s.gps.power, nullptr);
-    w.endObject();
-  }
-  if (s.loran.fitted) {
-    w.key("loran_c").beginObject();
-    w.key("rate_hz").value(s.loran.rateHz, kExact);
-    w.key("markov_variance_m2").value(s.loran.error.sigma * s.loran.error.sigma, kExact);
-    w.key("markov_beta_per_s").value(s.loran.error.betaPerS, kExact);
-    w.key("white_variance_m2").value(s.loran.whiteVarM2, kExact);
-    writeSchedule(w, s.loran.power, nullptr);
-    w.endObject();
-  }
-  if (s.speedlog.fitted) {
-    w.key("speedlog").beginObject();
-    w.key("rate_hz").value(s.speedlog.rateHz, kExact);
-    w.key("markov_variance_m2_s2").value(s.speedlog.error.sigma * s.speedlog.error.sigma, kExact);
-    w.key("markov_beta_per_s").value(s.speedlog.error.betaPerS, kExact);
-    w.key("white_variance_m2_s2").value(s.speedlog.whiteVarM2PerS2, kExact);
-    if (s.speedlog.scaleError.sigma > 0.0) {
-      w.key("scale_error").beginObject();
-      w.key("sigma").value(s.speedlog.scaleError.sigma, kExact);
-      w.key("beta_per_s").value(s.speedlog.scaleError.betaPerS, kExact);
-      w.endObject();
-    }
-    w.key("mode").value(scenario_detail::nameOf(scenario_detail::kSpeedlogModes, s.speedlog.mode.initial()));
-    writeSchedule(w, s.speedlog.power, &s.speedlog.mode);
-    w.endObject();
-  }
-  if (s.gyro.fitted) {
-    w.key("gyro").beginObject();
-    w.key("rate_hz").value(s.gyro.rateHz, kExact);
-    w.key("sd_deg").value(radToDeg(s.gyro.sdRad), kExact);
-    if (s.gyro.bias.sigma > 0.0) {
-      w.key("bias").beginObject();
-      w.key("sigma_deg").value(radToDeg(s.gyro.bias.sigma), kExact);
-      w.key("beta_per_s").value(s.gyro.bias.betaPerS, kExact);
-      w.endObject();
-    }
-    writeSchedule(w, s.gyro.power, nullptr);
-    w.endObject();
-  }
-  if (s.radar.fitted) {
-    const auto& r = s.radar;
-    w.key("radar").beginObject();
-    w.key("sweep_period_s").value(r.sweepPeriodS, kExact);
-    w.key("range_sd_m").value(r.rangeSdM, kExact);
-    w.key("bearing_sd_deg").value(radToDeg(r.bearingSdRad), kExact);
-    w.key("bearing_backlash_deg").value(radToDeg(r.bearingBacklashRad), kExact);
-    w.key("range_quantum_m").value(r.rangeQuantumM, kExact);
-    w.key("bearing_quantum_deg").value(radToDeg(r.bearingQuantumRad), kExact);
-    w.key("gyro_calibration_deg").value(radToDeg(r.gyroCalibrationRad), kExact);
-    w.key("gyro_scatter_sd_deg").value(radToDeg(r.gyroScatterSdRad), kExact);
-    w.key("max_range_nm").value(metresToNm(r.maxRangeM), kExact);
-    w.key("min_range_m").value(r.minRangeM, kExact);
-    w.key("detection_probability").value(r.detectionProbability, kExact);
-    w.key("clutter_per_km2").value(r.clutterPerKm2, kExact);
-    w.key("clutter_max_range_nm").value(metresToNm(r.clutterMaxRangeM), kExact);
-    writeSchedule(w, r.power, nullptr);
-    w.endObject();
-  }
+  if (s.gps.fitted) writeGps(w, s.gps);
+  if (s.loran.fitted) writeLoran(w, s.loran);
+  if (s.speedlog.fitted) writeSpeedlog(w, s.speedlog);
+  if (s.gyro.fitted) writeGyro(w, s.gyro);
+  if (s.radar.fitted) writeRadar(w, s.radar);
   w.endObject();
+}
 
-  if (!s.targets.empty()) {
-    w.key("targets").beginArray();
-    for (const auto& t : s.targets) {
-      w.beginObject();
-      w.key("id").value(t.id);
-      w.key("name").value(t.name);
-      if (t.appearUs > 0) writeTime(w, "appear_s", t.appearUs);
-      writeMotion(w, t.motion);
-      w.endObject();
-    }
-    w.endArray();
+/// "targets", when there are any.
+void writeTargets(JsonWriter& w, const std::vector<sim::TargetSpec>& targets) {
+  if (targets.empty()) return;
+  w.key("targets").beginArray();
+  for (const auto& t : targets) {
+    w.beginObject();
+    w.key("id").value(t.id);
+    w.key("name").value(t.name);
+    if (t.appearUs > 0) writeTime(w, "appear_s", t.appearUs);
+    writeMotion(w, t.motion);
+    w.endObject();
   }
+  w.endArray();
+}
 
-  const auto& f = s.filter;
+/// "filter": own ship's DRKF.
+void writeFilter(JsonWriter& w, const sim::FilterSpec& f) {
   w.key("filter").beginObject();
   w.key("acceleration");
   writeGaussMarkov(w, f.acceleration, "sigma_mps2");
@@ -235,25 +231,33 @@ std::string writeScenario(const sim::Scenario& s) {
     w.endObject();
   }
   w.endObject();
+}
 
-  const auto& t = s.tracker;
-  if (s.radarMatching.active.initial() || !s.radarMatching.active.changes().empty()) {
-    const auto& m = s.radarMatching;
-    w.key("radar_matching").beginObject();
-    w.key("enabled").value(m.active.initial());
-    if (!m.active.changes().empty()) writeSchedule(w, m.active, nullptr);
-    w.key("azimuths").value(m.azimuths);
-    w.key("range_bins").value(m.rangeBins);
-    w.key("every_sweeps").value(m.everySweeps);
-    w.key("max_range_nm").value(metresToNm(m.maxRangeM), kExact);
-    w.key("reject_distance_m").value(m.rejectDistanceM, kExact);
-    w.key("beam_width_deg").value(m.beamWidthDeg, kExact);
-    w.key("max_fix_sd_m").value(m.maxFixSdM, kExact);
-    w.key("max_fix_heading_sd_deg").value(m.maxFixHeadingSdDeg, kExact);
-    w.key("error_correlation").value(m.errorCorrelation, kExact);
-    w.endObject();
-  }
-  w.key("tracker").beginObject();
+/// "radar_matching", when it is on at some time.
+void writeRadarMatching(JsonWriter& w, const sim::RadarMatchingSpec& m) {
+  if (!m.active.initial() && m.active.changes().empty()) return;
+  w.key("radar_matching").beginObject();
+  w.key("enabled").value(m.active.initial());
+  if (!m.active.changes().empty()) writeSchedule(w, m.active, nullptr);
+  w.key("azimuths").value(m.azimuths);
+  w.key("range_bins").value(m.rangeBins);
+  w.key("every_sweeps").value(m.everySweeps);
+  w.key("max_range_nm").value(metresToNm(m.maxRangeM), kExact);
+  w.key("reject_distance_m").value(m.rejectDistanceM, kExact);
+  w.key("beam_width_deg").value(m.beamWidthDeg, kExact);
+  w.key("max_fix_sd_m").value(m.maxFixSdM, kExact);
+  w.key("max_fix_heading_sd_deg").value(m.maxFixHeadingSdDeg, kExact);
+  w.key("error_correlation").value(m.errorCorrelation, kExact);
+  w.endObject();
+}
+
+/// {"hits": M, "of_sweeps": N} under key.
+void writeMOfN(JsonWriter& w, std::string_view key, int hits, int sweeps) {
+  w.key(key).beginObject().key("hits").value(hits).key("of_sweeps").value(sweeps).endObject();
+}
+
+/// The tracker's track management: models, association, M of N, zones and the danger limits.
+void writeTrackManagement(JsonWriter& w, const sim::TrackerSpec& t) {
   w.key("own_acceleration");
   writeGaussMarkov(w, t.ownAcceleration, "sigma_mps2");
   w.key("target_acceleration");
@@ -263,14 +267,8 @@ std::string writeScenario(const sim::Scenario& s) {
   w.key("initial_speed_sd_mps").value(t.initialSpeedSdMps, kExact);
   w.key("capacity").value(static_cast<std::uint64_t>(t.capacity));
   w.key("association").value(scenario_detail::nameOf(scenario_detail::kAssociations, t.association));
-  w.key("confirm")
-      .beginObject()
-      .key("hits")
-      .value(t.confirmHits)
-      .key("of_sweeps")
-      .value(t.confirmSweeps)
-      .endObject();
-  w.key("keep").beginObject().key("hits").value(t.keepHits).key("of_sweeps").value(t.keepSweeps).endObject();
+  writeMOfN(w, "confirm", t.confirmHits, t.confirmSweeps);
+  writeMOfN(w, "keep", t.keepHits, t.keepSweeps);
   w.key("lost_hold_s").value(t.lostHoldS, kExact);
   w.key("auto_acquire").value(t.autoAcquire);
   if (!t.zones.empty()) {
@@ -287,6 +285,10 @@ std::string writeScenario(const sim::Scenario& s) {
   }
   w.key("danger_cpa_nm").value(metresToNm(t.dangerCpaM), kExact);
   w.key("danger_tcpa_min").value(t.dangerTcpaS / 60.0, kExact);
+}
+
+/// The tracker's filters: the kind, its changes and each kind's parameters.
+void writeTrackFilters(JsonWriter& w, const sim::TrackerSpec& t) {
   w.key("filter").value(track::trackerKindName(t.kind));
   if (!t.kindChanges.empty()) {
     w.key("filter_changes").beginArray();
@@ -316,6 +318,35 @@ std::string writeScenario(const sim::Scenario& s) {
   w.key("initial_turn_sd_dps").value(radToDeg(t.imm.initialTurnSdRadPerS), kExact);
   w.key("manoeuvre_probability").value(t.imm.manoeuvreProbability, kExact);
   w.endObject();
+}
+
+}  // namespace
+
+std::string writeScenario(const sim::Scenario& s) {
+  JsonWriter w;
+  w.beginObject();
+  w.key("format").value(kScenarioFormat);
+  w.key("name").value(s.name);
+  if (!s.description.empty()) w.key("description").value(s.description);
+  w.key("origin").beginObject();
+  w.key("lat_deg").value(s.origin.latDeg, kExact).key("lon_deg").value(s.origin.lonDeg, kExact);
+  w.endObject();
+  writeTime(w, "duration_s", s.durationUs);
+  writeTime(w, "step_s", s.stepUs);
+  w.key("seed").value(s.seed);
+  w.key("current");
+  writeGaussMarkov(w, s.current, "sigma_mps");
+
+  w.key("own_ship").beginObject();
+  writeMotion(w, s.ownShip);
+  w.endObject();
+  writeSensors(w, s);
+  writeTargets(w, s.targets);
+  writeFilter(w, s.filter);
+  writeRadarMatching(w, s.radarMatching);
+  w.key("tracker").beginObject();
+  writeTrackManagement(w, s.tracker);
+  writeTrackFilters(w, s.tracker);
   w.endObject();
   w.endObject();
   return w.str() + "\n";

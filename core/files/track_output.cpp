@@ -1,10 +1,12 @@
 #include "files/track_output.h"
 #include "io/iso8601.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
+#include "common/angles.h"
 #include "files/own_ship_output.h"
 
 namespace reckoner::io {
@@ -73,7 +75,6 @@ void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) 
       "sd_current_y_mps,heading_bias_deg,sd_heading_bias_deg,log_scale_pct,sd_log_scale_pct,log_offset_mps,"
       "sd_log_offset_mps\n";
   char buf[768];
-  constexpr double kDeg = 180.0 / 3.14159265358979323846;
   for (const auto& o : r.own) {
     const sim::CalibrationEstimate& c = o.calibration;
     std::snprintf(
@@ -83,8 +84,8 @@ void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) 
         toSeconds(o.timeUs), io::formatIso8601(o.utcUs).c_str(), o.estimate.xM, o.estimate.yM,
         o.estimate.vxMps, o.estimate.vyMps, o.estimate.sdXM, o.estimate.sdYM, o.estimate.sdVxMps,
         o.estimate.sdVyMps, o.estimate.latDeg, o.estimate.lonDeg, o.sensors.c_str(), o.rowsApplied,
-        c.currentXMps, c.currentYMps, c.sdCurrentXMps, c.sdCurrentYMps, c.headingBiasRad * kDeg,
-        c.sdHeadingBiasRad * kDeg, 100.0 * c.logScale, 100.0 * c.sdLogScale, c.logOffsetMps,
+        c.currentXMps, c.currentYMps, c.sdCurrentXMps, c.sdCurrentYMps, radToDeg(c.headingBiasRad),
+        radToDeg(c.sdHeadingBiasRad), 100.0 * c.logScale, 100.0 * c.sdLogScale, c.logOffsetMps,
         c.sdLogOffsetMps);
     text.append(buf);
   }
@@ -127,59 +128,66 @@ void writeReplayTargetsCsv(const std::string& path, const sim::ReplayResult& r) 
   writeTextFile(path, text);
 }
 
-std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nmeaName) {
-  JsonWriter w;
-  const auto& s = r.stats;
-  const auto n = [&w](const char* k, long v) { w.key(k).value(static_cast<std::int64_t>(v)); };
-  w.beginObject();
-  w.key("nmea_file").value(nmeaName);
-  w.key("utc_start").value(io::formatIso8601(r.utc0));
-  w.key("origin").beginArray().value(r.origin.latDeg).value(r.origin.lonDeg).endArray();
+namespace {
+/// "key": count.
+void writeCount(JsonWriter& w, const char* key, long v) {
+  w.key(key).value(static_cast<std::int64_t>(v));
+}
+
+/// The "nmea" block: what became of the recording's lines.
+void writeNmeaCounts(JsonWriter& w, const sim::ReplayStats& s) {
   w.key("nmea").beginObject();
-  n("lines", s.nmeaLines);
-  n("sentences_used", s.sentencesUsed);
-  n("skipped", s.nmeaSkipped());
-  n("comments", s.comments);
-  n("bad_checksum", s.badChecksum);
-  n("unknown", s.unknownSentences);
-  n("proprietary", s.proprietary);
-  n("malformed", s.malformed);
-  n("untimed", s.untimed);
-  n("time_jumps", s.timeJumps);
-  n("unusable", s.unusable);
-  n("not_gnss", s.notGnss);
-  n("implausible", s.implausible);
-  n("no_variation", s.noVariation);
-  n("standby", s.standby);
-  n("repeated", s.repeated);
-  n("not_used", s.notUsed);
-  n("reordered", s.reordered);
-  n("outside_frame", s.outsideFrame);
-  n("epochs", s.epochs);
-  n("epochs_before_fix", s.epochsBeforeFix);
-  n("epochs_awaiting_fix", s.epochsAwaitingFix);
-  n("epochs_time_only", s.epochsTimeOnly);
+  writeCount(w, "lines", s.nmeaLines);
+  writeCount(w, "sentences_used", s.sentencesUsed);
+  writeCount(w, "skipped", s.nmeaSkipped());
+  writeCount(w, "comments", s.comments);
+  writeCount(w, "bad_checksum", s.badChecksum);
+  writeCount(w, "unknown", s.unknownSentences);
+  writeCount(w, "proprietary", s.proprietary);
+  writeCount(w, "malformed", s.malformed);
+  writeCount(w, "untimed", s.untimed);
+  writeCount(w, "time_jumps", s.timeJumps);
+  writeCount(w, "unusable", s.unusable);
+  writeCount(w, "not_gnss", s.notGnss);
+  writeCount(w, "implausible", s.implausible);
+  writeCount(w, "no_variation", s.noVariation);
+  writeCount(w, "standby", s.standby);
+  writeCount(w, "repeated", s.repeated);
+  writeCount(w, "not_used", s.notUsed);
+  writeCount(w, "reordered", s.reordered);
+  writeCount(w, "outside_frame", s.outsideFrame);
+  writeCount(w, "epochs", s.epochs);
+  writeCount(w, "epochs_before_fix", s.epochsBeforeFix);
+  writeCount(w, "epochs_awaiting_fix", s.epochsAwaitingFix);
+  writeCount(w, "epochs_time_only", s.epochsTimeOnly);
   w.endObject();
+}
+
+/// One DRKF measurement block's updates (key included): accepted, gated, failed and its NIS windows.
+void writeBlockUpdates(JsonWriter& w, nav::DrkfBlock block, const sim::SensorUpdateCounts& c) {
+  w.key(nav::blockName(block)).beginObject();
+  writeCount(w, "accepted", c.accepted);
+  writeCount(w, "gated", c.gated);
+  writeCount(w, "failed", c.failed);
+  w.key("nis").beginObject();
+  writeCount(w, "windows", c.nis.windows);
+  writeCount(w, "above", c.nis.above);
+  writeCount(w, "below", c.nis.below);
+  if (c.nis.dof > 0) w.key("mean_per_dof").value(c.nis.meanPerDof(), 4);
+  w.endObject();
+  w.endObject();
+}
+
+/// The "own_ship_filter" block: updates per measurement block, restarts, the GNSS noise scale.
+void writeOwnShipFilter(JsonWriter& w, const sim::ReplayResult& r) {
   w.key("own_ship_filter").beginObject();
   w.key("updates").beginObject();
-  for (int b = 0; b < nav::kDrkfBlockCount; ++b) {
-    const sim::SensorUpdateCounts& c = r.updates[static_cast<std::size_t>(b)];
-    w.key(nav::blockName(static_cast<nav::DrkfBlock>(b))).beginObject();
-    n("accepted", c.accepted);
-    n("gated", c.gated);
-    n("failed", c.failed);
-    w.key("nis").beginObject();
-    n("windows", c.nis.windows);
-    n("above", c.nis.above);
-    n("below", c.nis.below);
-    if (c.nis.dof > 0) w.key("mean_per_dof").value(c.nis.meanPerDof(), 4);
-    w.endObject();
-    w.endObject();
-  }
+  for (int b = 0; b < nav::kDrkfBlockCount; ++b)
+    writeBlockUpdates(w, static_cast<nav::DrkfBlock>(b), r.updates[static_cast<std::size_t>(b)]);
   w.endObject();
   w.key("restarts").beginObject();
-  n("after_gap", s.restartsAfterGap);
-  n("after_failure", s.restartsAfterFailure);
+  writeCount(w, "after_gap", r.stats.restartsAfterGap);
+  writeCount(w, "after_failure", r.stats.restartsAfterFailure);
   w.endObject();
   if (r.gnssNoiseScale)
     w.key("gnss_noise_scale")
@@ -188,43 +196,63 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
         .value((*r.gnssNoiseScale)[1], 4)
         .endArray();
   w.endObject();
-  w.key("sources").beginArray();
-  const double span = r.own.empty() ? 0.0 : toSeconds(r.own.back().timeUs - r.own.front().timeUs);
-  for (const sim::SourceStats& src : r.sources) {
-    w.beginObject();
-    w.key("source").value(src.source);
-    w.key("quantity").value(src.quantity);
-    n("sentences", src.sentences);
-    n("used", src.used);
-    n("standby", src.standby);
-    n("repeated", src.repeated);
-    w.key("skipped").beginObject();
-    n("unusable", src.unusable);
-    n("not_measured", src.notMeasured);
-    n("implausible", src.implausible);
-    n("time_jumps", src.timeJumps);
-    w.endObject();
-    w.key("clock_offset_s").value(src.clockOffsetS, 4);
-    w.key("clock_resolution_s").value(src.clockResolutionS, 4);
-    w.key("clock_corrected").value(src.clockCorrected);
-    w.key("active_share").value(span > 0.0 ? std::min(1.0, src.activeS / span) : 0.0, 4);
-    w.endObject();
-  }
-  w.endArray();
+}
+
+/// One source's object of the "sources" array; spanS: the replay's own-ship time span, seconds.
+void writeSource(JsonWriter& w, const sim::SourceStats& src, double spanS) {
+  w.beginObject();
+  w.key("source").value(src.source);
+  w.key("quantity").value(src.quantity);
+  writeCount(w, "sentences", src.sentences);
+  writeCount(w, "used", src.used);
+  writeCount(w, "standby", src.standby);
+  writeCount(w, "repeated", src.repeated);
+  w.key("skipped").beginObject();
+  writeCount(w, "unusable", src.unusable);
+  writeCount(w, "not_measured", src.notMeasured);
+  writeCount(w, "implausible", src.implausible);
+  writeCount(w, "time_jumps", src.timeJumps);
+  w.endObject();
+  w.key("clock_offset_s").value(src.clockOffsetS, 4);
+  w.key("clock_resolution_s").value(src.clockResolutionS, 4);
+  w.key("clock_corrected").value(src.clockCorrected);
+  w.key("active_share").value(spanS > 0.0 ? std::min(1.0, src.activeS / spanS) : 0.0, 4);
+  w.endObject();
+}
+
+/// The "radar" block: what became of the plots, the sweep period and the track counts.
+void writeRadarCounts(JsonWriter& w, const sim::ReplayResult& r) {
+  const auto& s = r.stats;
   w.key("radar").beginObject();
-  n("lines", s.radarLines);
-  n("plots", s.radarPlots);
-  n("bad", s.radarBad);
-  n("duplicates", s.radarDuplicates);
-  n("time_jumps", s.radarTimeJumps);
-  n("reordered", s.radarReordered);
-  n("before_fix", s.radarBeforeFix);
+  writeCount(w, "lines", s.radarLines);
+  writeCount(w, "plots", s.radarPlots);
+  writeCount(w, "bad", s.radarBad);
+  writeCount(w, "duplicates", s.radarDuplicates);
+  writeCount(w, "time_jumps", s.radarTimeJumps);
+  writeCount(w, "reordered", s.radarReordered);
+  writeCount(w, "before_fix", s.radarBeforeFix);
   w.key("sweep_period_s").value(r.sweepPeriodS, 6);
   w.key("sweep_period_from").value(r.sweepFromPlots ? "plots" : "settings");
-  n("tracks_started", r.tracking.tracksStarted);
-  n("tracks_confirmed", r.tracking.tracksConfirmed);
-  n("tracks_lost", r.tracking.tracksLost);
+  writeCount(w, "tracks_started", r.tracking.tracksStarted);
+  writeCount(w, "tracks_confirmed", r.tracking.tracksConfirmed);
+  writeCount(w, "tracks_lost", r.tracking.tracksLost);
   w.endObject();
+}
+}  // namespace
+
+std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nmeaName) {
+  JsonWriter w;
+  w.beginObject();
+  w.key("nmea_file").value(nmeaName);
+  w.key("utc_start").value(io::formatIso8601(r.utc0));
+  w.key("origin").beginArray().value(r.origin.latDeg).value(r.origin.lonDeg).endArray();
+  writeNmeaCounts(w, r.stats);
+  writeOwnShipFilter(w, r);
+  w.key("sources").beginArray();
+  const double span = r.own.empty() ? 0.0 : toSeconds(r.own.back().timeUs - r.own.front().timeUs);
+  for (const sim::SourceStats& src : r.sources) writeSource(w, src, span);
+  w.endArray();
+  writeRadarCounts(w, r);
   w.key("warnings").beginArray();
   for (const auto& warning : r.warnings) w.value(warning);
   w.endArray();

@@ -15,8 +15,11 @@ struct Bad {
   std::string reason;
 };
 
-std::vector<std::string_view> split(std::string_view s) {
-  std::vector<std::string_view> out;
+/// A sentence's comma-separated fields.
+using Fields = std::vector<std::string_view>;
+
+Fields split(std::string_view s) {
+  Fields out;
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = s.find(',', start);
@@ -35,7 +38,7 @@ std::optional<double> number(std::string_view f) {
   return v;
 }
 
-double required(const std::vector<std::string_view>& f, std::size_t i, const char* what) {
+double required(const Fields& f, std::size_t i, const char* what) {
   if (i >= f.size()) throw Bad{std::string(what) + ": field missing"};
   const auto v = number(f[i]);
   if (!v) throw Bad{std::string(what) + ": not a number " + quoted(f[i], 40)};
@@ -43,7 +46,7 @@ double required(const std::vector<std::string_view>& f, std::size_t i, const cha
 }
 
 /// An integer field in [lo, hi] (checked before any conversion: a cast of 1e300 to int is undefined).
-int integer(const std::vector<std::string_view>& f, std::size_t i, const char* what, int lo, int hi) {
+int integer(const Fields& f, std::size_t i, const char* what, int lo, int hi) {
   const double v = required(f, i, what);
   if (v < lo || v > hi || v != std::floor(v))
     throw Bad{std::string(what) + ": must be an integer in [" + std::to_string(lo) + ", " +
@@ -53,7 +56,7 @@ int integer(const std::vector<std::string_view>& f, std::size_t i, const char* w
 
 /// The FAA mode indicator of NMEA 2.3 and later (RMC, GLL, VTG, GNS): one letter, absent in older
 /// talkers.
-std::optional<char> modeIndicator(const std::vector<std::string_view>& f, std::size_t i, const char* what) {
+std::optional<char> modeIndicator(const Fields& f, std::size_t i, const char* what) {
   if (i >= f.size() || f[i].empty()) return std::nullopt;
   const std::string_view m = f[i];
   if (m.size() != 1 || std::string_view("ADEFMNPRS").find(m[0]) == std::string_view::npos)
@@ -61,8 +64,7 @@ std::optional<char> modeIndicator(const std::vector<std::string_view>& f, std::s
   return m[0];
 }
 
-std::optional<double> optionalNumber(const std::vector<std::string_view>& f, std::size_t i,
-                                     const char* what) {
+std::optional<double> optionalNumber(const Fields& f, std::size_t i, const char* what) {
   if (i >= f.size() || f[i].empty()) return std::nullopt;
   const auto v = number(f[i]);
   if (!v) throw Bad{std::string(what) + ": not a number " + quoted(f[i], 40)};
@@ -70,8 +72,7 @@ std::optional<double> optionalNumber(const std::vector<std::string_view>& f, std
 }
 
 /// ddmm.mmmm / dddmm.mmmm with hemisphere.
-double angle(const std::vector<std::string_view>& f, std::size_t i, int degreeDigits, char pos, char neg,
-             const char* what) {
+double angle(const Fields& f, std::size_t i, int degreeDigits, char pos, char neg, const char* what) {
   if (i + 1 >= f.size() || f[i].size() < static_cast<std::size_t>(degreeDigits + 2))
     throw Bad{std::string(what) + ": missing or too short"};
   const auto deg = number(f[i].substr(0, static_cast<std::size_t>(degreeDigits)));
@@ -85,7 +86,7 @@ double angle(const std::vector<std::string_view>& f, std::size_t i, int degreeDi
   throw Bad{std::string(what) + ": hemisphere must be " + pos + " or " + neg};
 }
 
-double time(const std::vector<std::string_view>& f, std::size_t i) {
+double time(const Fields& f, std::size_t i) {
   if (i >= f.size()) throw Bad{"time: field missing"};
   const auto t = parseTimeOfDay(f[i]);
   if (!t) throw Bad{"time: malformed " + quoted(f[i], 40)};
@@ -99,14 +100,14 @@ Date checkedDate(int y, int m, int d) {
 }
 
 /// An optional heading field in [0, 360].
-std::optional<double> heading(const std::vector<std::string_view>& f, std::size_t i, const char* what) {
+std::optional<double> heading(const Fields& f, std::size_t i, const char* what) {
   const auto h = optionalNumber(f, i, what);
   if (h && (*h < 0.0 || *h > 360.0)) throw Bad{std::string(what) + ": out of range " + quoted(f[i], 40)};
   return h;
 }
 
 /// An optional signed angle with its E/W letter in the next field (east positive).
-std::optional<double> eastWest(const std::vector<std::string_view>& f, std::size_t i, const char* what) {
+std::optional<double> eastWest(const Fields& f, std::size_t i, const char* what) {
   const auto v = optionalNumber(f, i, what);
   if (!v) return std::nullopt;
   if (*v < 0.0 || *v > 180.0) throw Bad{std::string(what) + ": out of range " + quoted(f[i], 40)};
@@ -116,181 +117,205 @@ std::optional<double> eastWest(const std::vector<std::string_view>& f, std::size
   throw Bad{std::string(what) + ": needs E or W, got " + quoted(side, 8)};
 }
 
-/// THS, HDG, HDM, ROT, GNS, GST and DTM.
-Body parseMore(std::string_view type, const std::vector<std::string_view>& f) {
-  if (type == "THS") {
-    Ths t;
-    t.headingDeg = required(f, 1, "THS heading");
-    if (t.headingDeg < 0.0 || t.headingDeg > 360.0) throw Bad{"THS heading: out of range"};
-    if (f.size() < 3 || f[2].size() != 1 || std::string_view("AEMSV").find(f[2][0]) == std::string_view::npos)
-      throw Bad{"THS mode: must be A, E, M, S or V"};
-    t.mode = f[2][0];
-    return t;
+// One parser per sentence type. Each takes the fields with f[0] the address field (data fields start
+// at f[1]) and throws Bad with the field it could not read.
+
+/// RMC's ddmmyy date field.
+Date rmcDate(std::string_view ddmmyy) {
+  if (ddmmyy.size() != 6) throw Bad{"RMC date: must be ddmmyy"};
+  int dmy[3] = {0, 0, 0};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const char a = ddmmyy[2 * k], b = ddmmyy[2 * k + 1];
+    if (a < '0' || a > '9' || b < '0' || b > '9') throw Bad{"RMC date: malformed " + quoted(ddmmyy, 40)};
+    dmy[k] = (a - '0') * 10 + (b - '0');
   }
-  if (type == "HDG") {
-    Hdg h;
-    h.sensorDeg = required(f, 1, "HDG heading");
-    if (h.sensorDeg < 0.0 || h.sensorDeg > 360.0) throw Bad{"HDG heading: out of range"};
-    h.deviationDeg = eastWest(f, 2, "HDG deviation");
-    h.variationDeg = eastWest(f, 4, "HDG variation");
-    return h;
-  }
-  if (type == "HDM") {
-    const double h = required(f, 1, "HDM heading");
-    if (h < 0.0 || h > 360.0) throw Bad{"HDM heading: out of range"};
-    return Hdm{h};
-  }
-  if (type == "ROT") {
-    Rot r;
-    r.degPerMin = required(f, 1, "ROT rate");
-    if (std::abs(r.degPerMin) > 3600.0) throw Bad{"ROT rate: beyond 3600 deg/min"};
-    r.valid = f.size() > 2 && f[2] == "A";
-    return r;
-  }
-  if (type == "GNS") {
-    Gns g;
-    g.timeOfDayS = time(f, 1);
-    if (f.size() < 9) throw Bad{"GNS: needs at least 8 fields"};
-    g.modes = std::string(f[6]);
-    if (g.modes.empty() || g.modes.size() > 8 || g.modes.find_first_not_of("ADEFMNPRS") != std::string::npos)
-      throw Bad{"GNS mode: letters of ADEFMNPRS, got " + quoted(f[6], 16)};
-    g.hasPosition = !f[2].empty();
-    if (g.hasPosition) {
-      g.latDeg = angle(f, 2, 2, 'N', 'S', "GNS latitude");
-      g.lonDeg = angle(f, 4, 3, 'E', 'W', "GNS longitude");
-    }
-    if (!f[7].empty()) g.satellites = integer(f, 7, "GNS satellites", 0, 999);
-    g.hdop = optionalNumber(f, 8, "GNS hdop");
-    return g;
-  }
-  if (type == "GST") {
-    Gst g;
-    g.timeOfDayS = time(f, 1);
-    if (f.size() < 8) throw Bad{"GST: needs at least 7 fields"};
-    const auto sd = [&](std::size_t i, const char* what) {
-      const auto v = optionalNumber(f, i, what);
-      if (v && *v < 0.0) throw Bad{std::string(what) + ": negative"};
-      return v;
-    };
-    g.rmsM = sd(2, "GST rms");
-    g.majorSdM = sd(3, "GST semi-major sd");
-    g.minorSdM = sd(4, "GST semi-minor sd");
-    g.majorOrientationDeg = optionalNumber(f, 5, "GST orientation");
-    g.latSdM = sd(6, "GST latitude sd");
-    g.lonSdM = sd(7, "GST longitude sd");
-    return g;
-  }
-  if (type == "DTM") {
-    Dtm d;
-    if (f.size() < 2 || f[1].empty()) throw Bad{"DTM: no local datum"};
-    d.localDatum = std::string(f[1].substr(0, std::min<std::size_t>(f[1].size(), 8)));
-    if (f.size() > 8) d.referenceDatum = std::string(f[8].substr(0, std::min<std::size_t>(f[8].size(), 8)));
-    return d;
-  }
-  throw Bad{"unknown"};  // not reached: the caller checks the type
+  return checkedDate(dmy[2] < 80 ? 2000 + dmy[2] : 1900 + dmy[2], dmy[1], dmy[0]);
 }
 
-Body parseBody(std::string_view type, const std::vector<std::string_view>& f) {
-  // f[0] is the address field; data fields start at f[1].
-  if (type == "RMC") {
-    Rmc r;
-    r.timeOfDayS = time(f, 1);
-    if (f.size() < 10) throw Bad{"RMC: needs at least 9 fields"};
-    r.valid = f[2] == "A";
-    if (!r.valid && f[2] != "V") throw Bad{"RMC status: must be A or V"};
-    if (r.valid) {
-      r.latDeg = angle(f, 3, 2, 'N', 'S', "RMC latitude");
-      r.lonDeg = angle(f, 5, 3, 'E', 'W', "RMC longitude");
-    }
-    r.sogKn = optionalNumber(f, 7, "RMC speed");
-    r.cogTrueDeg = optionalNumber(f, 8, "RMC course");
-    if (!f[9].empty()) {
-      if (f[9].size() != 6) throw Bad{"RMC date: must be ddmmyy"};
-      int dmy[3] = {0, 0, 0};
-      for (std::size_t k = 0; k < 3; ++k) {
-        const char a = f[9][2 * k], b = f[9][2 * k + 1];
-        if (a < '0' || a > '9' || b < '0' || b > '9') throw Bad{"RMC date: malformed " + quoted(f[9], 40)};
-        dmy[k] = (a - '0') * 10 + (b - '0');
-      }
-      r.date = checkedDate(dmy[2] < 80 ? 2000 + dmy[2] : 1900 + dmy[2], dmy[1], dmy[0]);
-    }
-    if (f.size() > 11) r.variationDeg = eastWest(f, 10, "RMC magnetic variation");
-    r.mode = modeIndicator(f, 12, "RMC mode");
-    return r;
+Body parseRmc(const Fields& f) {
+  Rmc r;
+  r.timeOfDayS = time(f, 1);
+  if (f.size() < 10) throw Bad{"RMC: needs at least 9 fields"};
+  r.valid = f[2] == "A";
+  if (!r.valid && f[2] != "V") throw Bad{"RMC status: must be A or V"};
+  if (r.valid) {
+    r.latDeg = angle(f, 3, 2, 'N', 'S', "RMC latitude");
+    r.lonDeg = angle(f, 5, 3, 'E', 'W', "RMC longitude");
   }
-  if (type == "GGA") {
-    Gga g;
-    g.timeOfDayS = time(f, 1);
-    if (f.size() < 9) throw Bad{"GGA: needs at least 8 fields"};
-    g.quality = integer(f, 6, "GGA quality", 0, 9);
-    if (g.quality > 0) {
-      g.latDeg = angle(f, 2, 2, 'N', 'S', "GGA latitude");
-      g.lonDeg = angle(f, 4, 3, 'E', 'W', "GGA longitude");
-    }
-    g.hdop = optionalNumber(f, 8, "GGA hdop");
-    return g;
-  }
-  if (type == "VTG") {
-    Vtg v;
-    if (f.size() < 8) throw Bad{"VTG: needs at least 7 fields"};
-    v.cogTrueDeg = optionalNumber(f, 1, "VTG course");
-    v.sogKn = required(f, 5, "VTG speed");
-    if (v.sogKn < 0.0) throw Bad{"VTG speed: negative"};
-    v.mode = modeIndicator(f, 9, "VTG mode");
-    return v;
-  }
-  if (type == "GLL") {
-    Gll g;
-    g.latDeg = angle(f, 1, 2, 'N', 'S', "GLL latitude");
-    g.lonDeg = angle(f, 3, 3, 'E', 'W', "GLL longitude");
-    if (f.size() > 5 && !f[5].empty()) g.timeOfDayS = time(f, 5);
-    if (f.size() > 6) g.valid = f[6] == "A";
-    g.mode = modeIndicator(f, 7, "GLL mode");
-    return g;
-  }
-  if (type == "HDT") {
-    const double h = required(f, 1, "HDT heading");
-    if (h < 0.0 || h > 360.0) throw Bad{"HDT heading: out of range"};
-    return Hdt{h};
-  }
-  if (type == "VHW") {
-    Vhw v;
-    v.headingTrueDeg = heading(f, 1, "VHW true heading");
-    v.headingMagneticDeg = heading(f, 3, "VHW magnetic heading");
-    if (f.size() < 6) throw Bad{"VHW: needs at least 5 fields"};
-    v.speedKn = required(f, 5, "VHW speed");
-    return v;
-  }
-  if (type == "VBW") {
-    Vbw v;
-    if (f.size() < 7) throw Bad{"VBW: needs at least 6 fields"};
-    if (f[3] == "A") {
-      v.longWaterKn = required(f, 1, "VBW water speed");
-      v.transWaterKn = required(f, 2, "VBW water speed");
-    }
-    if (f[6] == "A") {
-      v.longGroundKn = required(f, 4, "VBW ground speed");
-      v.transGroundKn = required(f, 5, "VBW ground speed");
-    }
-    return v;
-  }
-  if (type == "ZDA") {
-    Zda z;
-    z.timeOfDayS = time(f, 1);
-    const bool undated = f.size() < 5 || (f[2].empty() && f[3].empty() && f[4].empty());
-    if (!undated)
-      z.date = checkedDate(integer(f, 4, "ZDA year", 1980, 2200), integer(f, 3, "ZDA month", 1, 12),
-                           integer(f, 2, "ZDA day", 1, 31));
-    return z;
-  }
-  return parseMore(type, f);
+  r.sogKn = optionalNumber(f, 7, "RMC speed");
+  r.cogTrueDeg = optionalNumber(f, 8, "RMC course");
+  if (!f[9].empty()) r.date = rmcDate(f[9]);
+  if (f.size() > 11) r.variationDeg = eastWest(f, 10, "RMC magnetic variation");
+  r.mode = modeIndicator(f, 12, "RMC mode");
+  return r;
 }
 
-bool known(std::string_view type) {
-  for (const char* k : {"RMC", "GGA", "VTG", "GLL", "HDT", "VHW", "VBW", "ZDA", "THS", "HDG", "HDM", "ROT",
-                        "GNS", "GST", "DTM"})
-    if (type == k) return true;
-  return false;
+Body parseGga(const Fields& f) {
+  Gga g;
+  g.timeOfDayS = time(f, 1);
+  if (f.size() < 9) throw Bad{"GGA: needs at least 8 fields"};
+  g.quality = integer(f, 6, "GGA quality", 0, 9);
+  if (g.quality > 0) {
+    g.latDeg = angle(f, 2, 2, 'N', 'S', "GGA latitude");
+    g.lonDeg = angle(f, 4, 3, 'E', 'W', "GGA longitude");
+  }
+  g.hdop = optionalNumber(f, 8, "GGA hdop");
+  return g;
+}
+
+Body parseVtg(const Fields& f) {
+  Vtg v;
+  if (f.size() < 8) throw Bad{"VTG: needs at least 7 fields"};
+  v.cogTrueDeg = optionalNumber(f, 1, "VTG course");
+  v.sogKn = required(f, 5, "VTG speed");
+  if (v.sogKn < 0.0) throw Bad{"VTG speed: negative"};
+  v.mode = modeIndicator(f, 9, "VTG mode");
+  return v;
+}
+
+Body parseGll(const Fields& f) {
+  Gll g;
+  g.latDeg = angle(f, 1, 2, 'N', 'S', "GLL latitude");
+  g.lonDeg = angle(f, 3, 3, 'E', 'W', "GLL longitude");
+  if (f.size() > 5 && !f[5].empty()) g.timeOfDayS = time(f, 5);
+  if (f.size() > 6) g.valid = f[6] == "A";
+  g.mode = modeIndicator(f, 7, "GLL mode");
+  return g;
+}
+
+Body parseHdt(const Fields& f) {
+  const double h = required(f, 1, "HDT heading");
+  if (h < 0.0 || h > 360.0) throw Bad{"HDT heading: out of range"};
+  return Hdt{h};
+}
+
+Body parseVhw(const Fields& f) {
+  Vhw v;
+  v.headingTrueDeg = heading(f, 1, "VHW true heading");
+  v.headingMagneticDeg = heading(f, 3, "VHW magnetic heading");
+  if (f.size() < 6) throw Bad{"VHW: needs at least 5 fields"};
+  v.speedKn = required(f, 5, "VHW speed");
+  return v;
+}
+
+Body parseVbw(const Fields& f) {
+  Vbw v;
+  if (f.size() < 7) throw Bad{"VBW: needs at least 6 fields"};
+  if (f[3] == "A") {
+    v.longWaterKn = required(f, 1, "VBW water speed");
+    v.transWaterKn = required(f, 2, "VBW water speed");
+  }
+  if (f[6] == "A") {
+    v.longGroundKn = required(f, 4, "VBW ground speed");
+    v.transGroundKn = required(f, 5, "VBW ground speed");
+  }
+  return v;
+}
+
+Body parseZda(const Fields& f) {
+  Zda z;
+  z.timeOfDayS = time(f, 1);
+  const bool undated = f.size() < 5 || (f[2].empty() && f[3].empty() && f[4].empty());
+  if (!undated)
+    z.date = checkedDate(integer(f, 4, "ZDA year", 1980, 2200), integer(f, 3, "ZDA month", 1, 12),
+                         integer(f, 2, "ZDA day", 1, 31));
+  return z;
+}
+
+Body parseThs(const Fields& f) {
+  Ths t;
+  t.headingDeg = required(f, 1, "THS heading");
+  if (t.headingDeg < 0.0 || t.headingDeg > 360.0) throw Bad{"THS heading: out of range"};
+  if (f.size() < 3 || f[2].size() != 1 || std::string_view("AEMSV").find(f[2][0]) == std::string_view::npos)
+    throw Bad{"THS mode: must be A, E, M, S or V"};
+  t.mode = f[2][0];
+  return t;
+}
+
+Body parseHdg(const Fields& f) {
+  Hdg h;
+  h.sensorDeg = required(f, 1, "HDG heading");
+  if (h.sensorDeg < 0.0 || h.sensorDeg > 360.0) throw Bad{"HDG heading: out of range"};
+  h.deviationDeg = eastWest(f, 2, "HDG deviation");
+  h.variationDeg = eastWest(f, 4, "HDG variation");
+  return h;
+}
+
+Body parseHdm(const Fields& f) {
+  const double h = required(f, 1, "HDM heading");
+  if (h < 0.0 || h > 360.0) throw Bad{"HDM heading: out of range"};
+  return Hdm{h};
+}
+
+Body parseRot(const Fields& f) {
+  Rot r;
+  r.degPerMin = required(f, 1, "ROT rate");
+  if (std::abs(r.degPerMin) > 3600.0) throw Bad{"ROT rate: beyond 3600 deg/min"};
+  r.valid = f.size() > 2 && f[2] == "A";
+  return r;
+}
+
+Body parseGns(const Fields& f) {
+  Gns g;
+  g.timeOfDayS = time(f, 1);
+  if (f.size() < 9) throw Bad{"GNS: needs at least 8 fields"};
+  g.modes = std::string(f[6]);
+  if (g.modes.empty() || g.modes.size() > 8 || g.modes.find_first_not_of("ADEFMNPRS") != std::string::npos)
+    throw Bad{"GNS mode: letters of ADEFMNPRS, got " + quoted(f[6], 16)};
+  g.hasPosition = !f[2].empty();
+  if (g.hasPosition) {
+    g.latDeg = angle(f, 2, 2, 'N', 'S', "GNS latitude");
+    g.lonDeg = angle(f, 4, 3, 'E', 'W', "GNS longitude");
+  }
+  if (!f[7].empty()) g.satellites = integer(f, 7, "GNS satellites", 0, 999);
+  g.hdop = optionalNumber(f, 8, "GNS hdop");
+  return g;
+}
+
+/// An optional standard deviation field (not negative).
+std::optional<double> sdField(const Fields& f, std::size_t i, const char* what) {
+  const auto v = optionalNumber(f, i, what);
+  if (v && *v < 0.0) throw Bad{std::string(what) + ": negative"};
+  return v;
+}
+
+Body parseGst(const Fields& f) {
+  Gst g;
+  g.timeOfDayS = time(f, 1);
+  if (f.size() < 8) throw Bad{"GST: needs at least 7 fields"};
+  g.rmsM = sdField(f, 2, "GST rms");
+  g.majorSdM = sdField(f, 3, "GST semi-major sd");
+  g.minorSdM = sdField(f, 4, "GST semi-minor sd");
+  g.majorOrientationDeg = optionalNumber(f, 5, "GST orientation");
+  g.latSdM = sdField(f, 6, "GST latitude sd");
+  g.lonSdM = sdField(f, 7, "GST longitude sd");
+  return g;
+}
+
+Body parseDtm(const Fields& f) {
+  Dtm d;
+  if (f.size() < 2 || f[1].empty()) throw Bad{"DTM: no local datum"};
+  d.localDatum = std::string(f[1].substr(0, std::min<std::size_t>(f[1].size(), 8)));
+  if (f.size() > 8) d.referenceDatum = std::string(f[8].substr(0, std::min<std::size_t>(f[8].size(), 8)));
+  return d;
+}
+
+/// The sentence types Reckoner reads, each with its parser.
+struct SentenceParser {
+  std::string_view type;
+  Body (*parse)(const Fields&);
+};
+constexpr SentenceParser kParsers[] = {
+    {"RMC", parseRmc}, {"GGA", parseGga}, {"VTG", parseVtg}, {"GLL", parseGll}, {"HDT", parseHdt},
+    {"VHW", parseVhw}, {"VBW", parseVbw}, {"ZDA", parseZda}, {"THS", parseThs}, {"HDG", parseHdg},
+    {"HDM", parseHdm}, {"ROT", parseRot}, {"GNS", parseGns}, {"GST", parseGst}, {"DTM", parseDtm},
+};
+
+/// The parser of a sentence type, or nullptr for a type Reckoner does not read.
+const SentenceParser* parserOf(std::string_view type) {
+  for (const SentenceParser& p : kParsers)
+    if (p.type == type) return &p;
+  return nullptr;
 }
 
 int hexValue(char c) {
@@ -399,13 +424,14 @@ ParseResult parse(std::string_view line) {
     return r;
   }
   const std::string_view type = address.substr(2);
-  if (!known(type)) {
+  const SentenceParser* parser = parserOf(type);
+  if (!parser) {
     r.error = Error::Unknown;
     r.reason = std::string(type);
     return r;
   }
   try {
-    r.sentence = Sentence{std::string(address.substr(0, 2)), parseBody(type, fields)};
+    r.sentence = Sentence{std::string(address.substr(0, 2)), parser->parse(fields)};
   } catch (const Bad& b) {
     r.error = Error::Malformed;
     r.reason = b.reason;

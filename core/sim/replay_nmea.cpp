@@ -1,6 +1,6 @@
 // Reading an NMEA 0183 recording into own-ship epochs (sim/replay_input.h): sentences, their sources,
-// their times (dates, midnight, week roll-overs, each source's clock), the stream-time policy, and the
-// active source of each quantity (sim/replay_sources.h).
+// their times (dates, midnight, week roll-overs, each source's clock) and the stream-time policy; the
+// epochs with the active source of each quantity are replay_nmea_epochs.cpp's.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,22 +15,18 @@
 #include "io/iso8601.h"
 #include "io/nmea.h"
 #include "sim/replay_input.h"
+#include "sim/replay_nmea_detail.h"
 #include "sim/replay_sources.h"
 
 namespace reckoner::sim::replay_input {
 namespace {
 namespace nm = io::nmea;
+using detail::Parsed;
+using detail::TimedGroups;
 using sources::Kind;
 using sources::Quantity;
 /// 1024 GPS weeks: the date a receiver with a week-number roll-over bug reports is this far back.
 constexpr std::int64_t kRolloverUs = 1024LL * 7 * kUsPerDay;
-
-struct Parsed {
-  int line;
-  nm::Sentence sentence;
-  sources::SourceId source;  ///< "GP:GGA"
-  Kind kind;
-};
 
 const char* typeName(const nm::Body& b) {
   static constexpr const char* kNames[] = {"RMC", "GGA", "VTG", "GLL", "HDT", "VHW", "VBW", "ZDA",
@@ -259,252 +255,6 @@ void correctClocks(const std::vector<Parsed>& ps, std::vector<std::optional<UtcU
   }
 }
 
-bool plausibleSpeedKn(double kn) {
-  return std::isfinite(kn) && std::abs(kn) <= kMaxPlausibleSpeedKn;
-}
-
-/// A value one sentence offers its epoch; several sources may offer one quantity.
-struct Candidate {
-  sources::Offer offer;  ///< offer.index: the sentence (index into the parsed sentences)
-  geo::GeoPoint position;
-  std::optional<double> hdop;
-  double aMps = 0.0, bRad = 0.0;  ///< velocity: sog, cog; heading: -, heading
-  bool magnetic = false;
-  sensors::SpeedlogMode mode = sensors::SpeedlogMode::BottomLock;
-};
-
-enum class Use { Valid, Unusable, NotGnss, Implausible, NoVariation };
-
-/// The latest magnetic variation known while reading (HDG's or RMC's, else the configured one).
-struct Variation {
-  std::optional<double> deg;
-};
-
-/// What one sentence offers (into `out`), and whether it was valid.
-Use offersOf(const Parsed& p, std::size_t index, Variation& var, std::vector<Candidate>& out) {
-  const auto offer = [&](Quantity q, int rank) {
-    Candidate c;
-    c.offer = {p.source, Kind{q, rank}, index};
-    return c;
-  };
-  const auto heading = [&](double trueDeg, bool magnetic, int rank) {
-    Candidate c = offer(Quantity::Heading, rank);
-    c.bRad = wrapTwoPi(degToRad(trueDeg));
-    c.magnetic = magnetic;
-    out.push_back(c);
-  };
-  return std::visit(
-      [&](const auto& b) -> Use {
-        using T = std::decay_t<decltype(b)>;
-        if constexpr (std::is_same_v<T, nm::Rmc>) {
-          if (b.variationDeg) var.deg = b.variationDeg;
-          if (!b.valid) return Use::Unusable;
-          if (!nm::gnssFix(b.mode)) return Use::NotGnss;
-          if (b.sogKn && !plausibleSpeedKn(*b.sogKn)) return Use::Implausible;
-          Candidate c = offer(Quantity::Position, 2);
-          c.position = {b.latDeg, b.lonDeg};
-          out.push_back(c);
-          if (b.sogKn && b.cogTrueDeg) {
-            Candidate v = offer(Quantity::Velocity, 0);
-            v.aMps = knotsToMps(*b.sogKn);
-            v.bRad = degToRad(*b.cogTrueDeg);
-            out.push_back(v);
-          }
-        } else if constexpr (std::is_same_v<T, nm::Gga> || std::is_same_v<T, nm::Gns>) {
-          bool fix = false;
-          if constexpr (std::is_same_v<T, nm::Gga>) {
-            if (b.quality == 0) return Use::Unusable;
-            fix = nm::gnssFix(b.quality);
-          } else {
-            if (!b.hasPosition) return Use::Unusable;
-            fix = nm::gnssFix(std::string_view(b.modes));
-          }
-          if (!fix) return Use::NotGnss;
-          Candidate c = offer(Quantity::Position, p.kind.rank);
-          c.position = {b.latDeg, b.lonDeg};
-          c.hdop = b.hdop;
-          out.push_back(c);
-        } else if constexpr (std::is_same_v<T, nm::Vtg>) {
-          if (!b.cogTrueDeg || b.mode == 'N') return Use::Unusable;
-          if (!nm::gnssFix(b.mode)) return Use::NotGnss;
-          if (!plausibleSpeedKn(b.sogKn)) return Use::Implausible;
-          Candidate v = offer(Quantity::Velocity, 1);
-          v.aMps = knotsToMps(b.sogKn);
-          v.bRad = degToRad(*b.cogTrueDeg);
-          out.push_back(v);
-        } else if constexpr (std::is_same_v<T, nm::Gll>) {
-          if (!b.valid) return Use::Unusable;
-          if (!nm::gnssFix(b.mode)) return Use::NotGnss;
-          Candidate c = offer(p.kind.quantity, p.kind.rank);
-          c.position = {b.latDeg, b.lonDeg};
-          out.push_back(c);
-        } else if constexpr (std::is_same_v<T, nm::Ths>) {
-          if (b.mode != 'A') return b.mode == 'V' ? Use::Unusable : Use::NotGnss;
-          heading(b.headingDeg, false, 0);
-        } else if constexpr (std::is_same_v<T, nm::Hdt>) {
-          heading(b.headingDeg, false, 1);
-        } else if constexpr (std::is_same_v<T, nm::Hdg>) {
-          if (b.variationDeg) var.deg = b.variationDeg;
-          if (!var.deg) return Use::NoVariation;
-          heading(b.sensorDeg + b.deviationDeg.value_or(0.0) + *var.deg, true, 2);
-        } else if constexpr (std::is_same_v<T, nm::Hdm>) {
-          if (!var.deg) return Use::NoVariation;
-          heading(b.headingDeg + *var.deg, true, 3);
-        } else if constexpr (std::is_same_v<T, nm::Vhw>) {
-          if (!plausibleSpeedKn(b.speedKn)) return Use::Implausible;
-          Candidate l = offer(Quantity::SpeedLog, 1);
-          l.aMps = knotsToMps(b.speedKn);
-          l.mode = sensors::SpeedlogMode::BottomLock;
-          out.push_back(l);
-          // Its heading fields, after every compass sentence (a plotter's copy of them).
-          if (b.headingTrueDeg)
-            heading(*b.headingTrueDeg, false, 4);
-          else if (b.headingMagneticDeg && var.deg)
-            heading(*b.headingMagneticDeg + *var.deg, true, 5);
-        } else if constexpr (std::is_same_v<T, nm::Vbw>) {
-          Candidate l = offer(Quantity::SpeedLog, 0);
-          if (b.longGroundKn) {
-            const double kn = std::hypot(*b.longGroundKn, *b.transGroundKn);
-            if (!plausibleSpeedKn(kn)) return Use::Implausible;
-            l.aMps = knotsToMps(kn);
-            l.mode = sensors::SpeedlogMode::GroundLock;
-          } else if (b.longWaterKn) {
-            const double kn = std::hypot(*b.longWaterKn, *b.transWaterKn);
-            if (!plausibleSpeedKn(kn)) return Use::Implausible;
-            l.aMps = knotsToMps(kn);
-          } else {
-            return Use::Unusable;
-          }
-          out.push_back(l);
-        }
-        // ZDA (time), GST (accuracy, taken with its fix), ROT and DTM: nothing to offer here.
-        return Use::Valid;
-      },
-      p.sentence.body);
-}
-
-/// The epochs, each with the value of the active source of each quantity; counts what each sentence
-/// became (used, standby, skipped by reason) into its source's and the file's counts.
-/// A time-only epoch at most this often (Epoch::empty()).
-constexpr UtcUs kHeartbeatUs = 900'000;
-
-std::vector<Epoch> assemble(const std::vector<Parsed>& ps, const std::vector<std::size_t>& order,
-                            const std::vector<UtcUs>& groupUtc,
-                            const std::vector<std::vector<std::size_t>>& groups, const NmeaOptions& o,
-                            ReplayStats& st, std::map<sources::SourceId, SourceStats>& stats) {
-  Variation var{o.variationDeg};
-  sources::Selector selector(static_cast<std::int64_t>(std::llround(o.holdS * 1e6)));
-  std::vector<char> used(ps.size(), 0), valid(ps.size(), 0), repeated(ps.size(), 0);
-  std::vector<Epoch> out;
-  std::map<sources::SourceId, UtcUs> activeFrom;  // per quantity's active source: since when
-  UtcUs lastT = 0;
-  bool any = false;
-  std::array<sources::SourceId, sources::kQuantityCount> previous{};
-  const auto credit = [&](UtcUs t) {  // active time of each quantity's source up to t
-    if (!any) return;
-    for (int q = 0; q < sources::kQuantityCount; ++q)
-      if (!previous[static_cast<std::size_t>(q)].empty())
-        stats[previous[static_cast<std::size_t>(q)]].activeS += 1e-6 * static_cast<double>(t - lastT);
-  };
-  for (std::size_t g = 0; g < order.size();) {
-    const UtcUs t = groupUtc[order[g]];
-    std::vector<Candidate> cands;
-    std::map<std::string, std::size_t> gstOf;  // by talker: the sentence
-    for (; g < order.size() && groupUtc[order[g]] == t; ++g) {
-      for (const std::size_t i : groups[order[g]]) {
-        SourceStats& s = stats[ps[i].source];
-        switch (offersOf(ps[i], i, var, cands)) {
-          case Use::Valid:
-            valid[i] = 1;
-            if (std::holds_alternative<nm::Gst>(ps[i].sentence.body)) gstOf[ps[i].sentence.talker] = i;
-            break;
-          case Use::Unusable:
-            ++st.unusable, ++s.unusable;
-            break;
-          case Use::NotGnss:
-            ++st.notGnss, ++s.notMeasured;
-            break;
-          case Use::Implausible:
-            ++st.implausible, ++s.implausible;
-            break;
-          case Use::NoVariation:
-            ++st.noVariation, ++s.unusable;
-            break;
-        }
-      }
-    }
-    credit(t);
-    Epoch e;
-    e.utc = t;
-    for (int qi = 0; qi < sources::kQuantityCount; ++qi) {
-      const auto q = static_cast<Quantity>(qi);
-      std::vector<const sources::Offer*> offers;
-      for (const Candidate& c : cands)
-        if (c.offer.kind.quantity == q) offers.push_back(&c.offer);
-      const sources::Offer* pick = offers.empty() ? nullptr : selector.choose(q, t, offers);
-      previous[static_cast<std::size_t>(qi)] = selector.active(q);
-      if (!pick) continue;
-      const Candidate& c =
-          *std::find_if(cands.begin(), cands.end(), [&](const Candidate& k) { return &k.offer == pick; });
-      used[c.offer.index] = 1;
-      for (const sources::Offer* other : offers)
-        if (other != pick && other->source == pick->source) repeated[other->index] = 1;
-      switch (q) {
-        case Quantity::Position: {
-          e.gps = c.position;
-          e.gpsHdop = c.hdop.value_or(1.0);
-          // The receiver's own error statistics, when it sent them for this fix: the larger axis.
-          if (const auto it = gstOf.find(ps[c.offer.index].sentence.talker); it != gstOf.end()) {
-            const auto& gst = std::get<nm::Gst>(ps[it->second].sentence.body);
-            if (gst.latSdM && gst.lonSdM) {
-              e.gpsVarM2 = std::max(*gst.latSdM * *gst.latSdM, *gst.lonSdM * *gst.lonSdM);
-              used[it->second] = 1;
-            }
-          }
-          break;
-        }
-        case Quantity::Loran:
-          e.loran = c.position;
-          break;
-        case Quantity::Velocity:
-          e.gpsVelocity = std::pair{c.aMps, c.bRad};
-          break;
-        case Quantity::Heading:
-          e.headingRad = c.bRad;
-          e.headingMagnetic = c.magnetic;
-          break;
-        case Quantity::SpeedLog:
-          e.log = std::pair{c.aMps, c.mode};
-          break;
-        default:
-          break;
-      }
-    }
-    lastT = t;
-    any = true;
-    // A second with sentences but no own-ship data (ZDA alone while the GNSS is out, say): the recorder
-    // is running, so dead reckoning goes on. Kept as a time-only epoch when no epoch was in the last
-    // 0.9 s (a ZDA stamped just after its second's fixes adds nothing).
-    if (!e.empty() || out.empty() || t - out.back().utc >= kHeartbeatUs) out.push_back(e);
-  }
-  // Each valid sentence: used (what it offered went in, or it is time or accuracy), or standby.
-  for (std::size_t i = 0; i < ps.size(); ++i) {
-    if (!valid[i]) continue;
-    SourceStats& s = stats[ps[i].source];
-    const Quantity q = ps[i].kind.quantity;
-    if (used[i] || q == Quantity::Time) {
-      ++st.sentencesUsed, ++s.used;
-    } else if (q == Quantity::Other || q == Quantity::Accuracy) {
-      ++st.notUsed;  // ROT, DTM of WGS-84, a GST whose fix was not taken
-    } else if (repeated[i]) {
-      ++st.repeated, ++s.repeated;  // its source gave the epoch's value in an earlier sentence
-    } else {
-      ++st.standby, ++s.standby;
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::vector<Epoch> readNmea(const std::string& text, const std::string& name, const NmeaOptions& o,
@@ -531,9 +281,7 @@ std::vector<Epoch> readNmea(const std::string& text, const std::string& name, co
   for (const auto& u : utc)
     if (u) stamped.push_back(*u);
   const std::vector<char> jump = isolatedTimeJumps(stamped, o.time);
-  // A group: a timed sentence and the untimed ones after it (they share its time).
-  std::vector<UtcUs> groupUtc;
-  std::vector<std::vector<std::size_t>> groups;
+  TimedGroups groups;
   std::size_t k = 0;
   for (std::size_t i = 0; i < ps.size(); ++i) {
     if (utc[i]) {
@@ -542,16 +290,15 @@ std::vector<Epoch> readNmea(const std::string& text, const std::string& name, co
         ++stats[ps[i].source].timeJumps;
         continue;
       }
-      groupUtc.push_back(*utc[i]);
-      groups.push_back({i});
-    } else if (groups.empty()) {
+      groups.utc.push_back(*utc[i]);
+      groups.sentences.push_back({i});
+    } else if (groups.sentences.empty()) {
       ++st.untimed;
     } else {
-      groups.back().push_back(i);
+      groups.sentences.back().push_back(i);
     }
   }
-  const std::vector<std::size_t> order = replayOrder(groupUtc, {}, st.reordered);
-  std::vector<Epoch> epochs = assemble(ps, order, groupUtc, groups, o, st, stats);
+  std::vector<Epoch> epochs = detail::assembleEpochs(ps, groups, o, st, stats);
   if (st.noVariation > 0)
     warnings.push_back(io::oneLine(name + ": " + std::to_string(st.noVariation) +
                                    " magnetic headings without a magnetic variation (none in HDG or RMC): "

@@ -21,6 +21,12 @@ struct Cpa {
   double sdTcpaS = 0.0;
 };
 
+/// The danger rule of a confirmed track: the closest approach within cpaLimitM, ahead (TCPA >= 0) and
+/// within tcpaLimitS.
+[[nodiscard]] inline bool withinDangerLimits(const Cpa& c, double cpaLimitM, double tcpaLimitS) {
+  return c.cpaM <= cpaLimitM && c.tcpaS >= 0.0 && c.tcpaS <= tcpaLimitS;
+}
+
 /// A with A x = [target minus own position; target minus own velocity] for a TTKF state x.
 Eigen::Matrix<double, 4, est::ttkf::kStateDim> relativeSelector();
 

@@ -53,55 +53,62 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
     step.manoeuvring = manoeuvring_;
     return step;
   }
+  const Sample sample{t, bearingRad, rangeM, observerXM, observerYM};
   if (!belief_) {
     if (!previous_ || t <= previous_->timeUs) {
-      previous_ = Sample{t, bearingRad, rangeM, observerXM, observerYM};
+      previous_ = sample;
       return step;
     }
-    // Eqs. 30 and 31: position from the second measurement, velocity from the difference of the two
-    // (divided by t, the bracket eq. 31 lacks), plus the observer's own velocity: the state holds the
-    // target's velocity over ground, and the difference of relative positions is the relative one.
-    const Sample& p = *previous_;
-    const double dt = toSeconds(t - p.timeUs);
-    const auto [r1, P1] = toCartesian(p.bearingRad, p.rangeM, config_.bearingSdRad, config_.rangeSdM);
-    const auto [r2, P2] = toCartesian(bearingRad, rangeM, config_.bearingSdRad, config_.rangeSdM);
-    est::Gaussian<rp::kStateDim> g;
-    g.x[kRx] = r2[0];
-    g.x[kRy] = r2[1];
-    g.x[kVx] = (r2[0] - r1[0] + observerXM - p.observerXM) / dt;
-    g.x[kVy] = (r2[1] - r1[1] + observerYM - p.observerYM) / dt;
-    g.P.setZero();
-    if (config_.paperInitialCovariance) {
-      // Eq. 32: each component uniform on +-its value: variance 4 x^2 / 12.
-      for (int i = 0; i < rp::kStateDim; ++i) g.P(i, i) = std::max(4.0 * g.x[i] * g.x[i] / 12.0, 1e-6);
-    } else {
-      g.P.block<2, 2>(kRx, kRx) = P2;
-      g.P.block<2, 2>(kVx, kVx) = (P1 + P2) / (dt * dt);
-      g.P.block<2, 2>(kVx, kRx) = P2 / dt;
-      g.P.block<2, 2>(kRx, kVx) = P2 / dt;
-    }
-    belief_ = g;
-    previous_ = Sample{t, bearingRad, rangeM, observerXM, observerYM};
+    belief_ = twoPointInitiation(*previous_, sample);
+    previous_ = sample;
     step.manoeuvring = manoeuvring_;
     return step;
   }
+  filterSample(step, sample);
+  step.manoeuvring = manoeuvring_;
+  return step;
+}
 
+est::Gaussian<rp::kStateDim> InputEstimationEkf::twoPointInitiation(const Sample& p, const Sample& s) const {
+  // Eqs. 30 and 31: position from the second measurement, velocity from the difference of the two
+  // (divided by t, the bracket eq. 31 lacks), plus the observer's own velocity: the state holds the
+  // target's velocity over ground, and the difference of relative positions is the relative one.
+  const double dt = toSeconds(s.timeUs - p.timeUs);
+  const auto [r1, P1] = toCartesian(p.bearingRad, p.rangeM, config_.bearingSdRad, config_.rangeSdM);
+  const auto [r2, P2] = toCartesian(s.bearingRad, s.rangeM, config_.bearingSdRad, config_.rangeSdM);
+  est::Gaussian<rp::kStateDim> g;
+  g.x[kRx] = r2[0];
+  g.x[kRy] = r2[1];
+  g.x[kVx] = (r2[0] - r1[0] + s.observerXM - p.observerXM) / dt;
+  g.x[kVy] = (r2[1] - r1[1] + s.observerYM - p.observerYM) / dt;
+  g.P.setZero();
+  if (config_.paperInitialCovariance) {
+    // Eq. 32: each component uniform on +-its value: variance 4 x^2 / 12.
+    for (int i = 0; i < rp::kStateDim; ++i) g.P(i, i) = std::max(4.0 * g.x[i] * g.x[i] / 12.0, 1e-6);
+  } else {
+    g.P.block<2, 2>(kRx, kRx) = P2;
+    g.P.block<2, 2>(kVx, kVx) = (P1 + P2) / (dt * dt);
+    g.P.block<2, 2>(kVx, kRx) = P2 / dt;
+    g.P.block<2, 2>(kRx, kVx) = P2 / dt;
+  }
+  return g;
+}
+
+void InputEstimationEkf::filterSample(InputEstimationStep& step, const Sample& to) {
   // Prediction (eqs. 2 to 4, 10) with the observer's displacement.
-  const double dt = toSeconds(t - previous_->timeUs);
+  const double dt = toSeconds(to.timeUs - previous_->timeUs);
   if (!(dt > 0.0)) {
     step.update.status = est::UpdateStatus::RejectedNumerical;  // not after the last measurement
-    step.manoeuvring = manoeuvring_;
-    return step;
+    return;
   }
   InputWindow<rp::kStateDim>::Entry entry;
   entry.Phi = rp::transition(dt);
   entry.G = rp::inputGain(dt);
-  const Sample from = *previous_, to{t, bearingRad, rangeM, observerXM, observerYM};
+  const Sample from = *previous_;
   est::Gaussian<rp::kStateDim> g = *belief_;
   if (!predict(g, from, to, std::nullopt)) {
     step.update.status = est::UpdateStatus::RejectedNumerical;
-    step.manoeuvring = manoeuvring_;
-    return step;
+    return;
   }
   previous_ = to;
 
@@ -112,14 +119,13 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
           .asDiagonal();
   entry.H = model.jacobian(g.x);
   const rp::Covariance prior = g.P;
-  step.update = est::update(g, model, est::Vec<2>(bearingRad, rangeM), R, 0.0);
+  step.update = est::update(g, model, est::Vec<2>(to.bearingRad, to.rangeM), R, 0.0);
   const est::Gaussian<rp::kStateDim> before = *belief_;
   belief_ = g;  // the prediction, updated when the update was accepted
   if (!step.update.applied()) {
     window_.clear();
     stored_.clear();
-    step.manoeuvring = manoeuvring_;
-    return step;
+    return;
   }
   entry.S = step.update.S;
   entry.innovation = step.update.innovation;
@@ -129,8 +135,6 @@ InputEstimationStep InputEstimationEkf::measure(TimeUs t, double bearingRad, dou
   stored_.push_back({from, to, before});
   while (static_cast<int>(stored_.size()) > window_.length()) stored_.pop_front();
   estimateInput(step);
-  step.manoeuvring = manoeuvring_;
-  return step;
 }
 
 void InputEstimationEkf::estimateInput(InputEstimationStep& step) {

@@ -80,6 +80,14 @@ class InputEstimationEkf {
     TimeUs timeUs;
     double bearingRad, rangeM, observerXM, observerYM;
   };
+  /// Eqs. 30 to 32: the state from two measurements (position from the second, velocity from the
+  /// difference), first before second.
+  [[nodiscard]] est::Gaussian<rp::kStateDim> twoPointInitiation(const Sample& first,
+                                                                const Sample& second) const;
+  /// Predict (eqs. 2 to 4, 10), update (eqs. 11 to 13) and input estimation with a later sample. The
+  /// belief becomes the prediction, updated when the update is accepted; a rejected update empties
+  /// the window.
+  void filterSample(InputEstimationStep& step, const Sample& to);
   void estimateInput(InputEstimationStep& step);
   /// Predicts g from one sample's time to the next's (the observer's displacement included); with a
   /// jump fraction f, a velocity jump (jumpSdMps) happens at from + f (to - from).

@@ -1,51 +1,15 @@
 #include "tracking/track_manager.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <stdexcept>
 
-#include "common/angles.h"
 #include "estimation/chi_square.h"
-#include "geo/grid_index.h"
-#include "tracking/assignment.h"
+#include "tracking/data_associator.h"
+#include "tracking/sweep_history.h"
+#include "tracking/track_predictor.h"
 
 namespace reckoner::track {
-namespace tk = est::ttkf;
-namespace {
-
-std::uint32_t lowBits(int n) {
-  return n >= 32 ? 0xFFFFFFFFu : ((1u << n) - 1u);
-}
-
-/// Cartesian covariance of a polar plot offset (range r, bearing b clockwise from north).
-est::Mat<2> polarToCartesianCov(double r, double b, double varR, double varB) {
-  const double s = std::sin(b), c = std::cos(b);
-  est::Mat<2> J;
-  J << s, r * c, c, -r * s;
-  return J * est::Vec<2>(varR, varB).asDiagonal() * J.transpose();
-}
-
-/// d^T C^-1 d and log det C for a 2x2 covariance; nullopt if C is not positive definite.
-std::optional<std::pair<double, double>> mahalanobis2(const est::Vec<2>& d, const est::Mat<2>& C) {
-  const double det = C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0);
-  if (!(C(0, 0) > 0.0) || !(det > 0.0) || !std::isfinite(det)) return std::nullopt;
-  const double q = (C(1, 1) * d[0] * d[0] - 2.0 * C(0, 1) * d[0] * d[1] + C(0, 0) * d[1] * d[1]) / det;
-  return std::make_pair(q, std::log(det));
-}
-}  // namespace
-
-const char* trackStatusName(TrackStatus s) {
-  switch (s) {
-    case TrackStatus::Tentative:
-      return "tentative";
-    case TrackStatus::Confirmed:
-      return "confirmed";
-    case TrackStatus::Lost:
-      return "lost";
-  }
-  return "?";
-}
 
 const char* trackEventName(TrackEvent::Kind k) {
   using K = TrackEvent::Kind;
@@ -74,13 +38,6 @@ const char* trackEventName(TrackEvent::Kind k) {
   return "?";
 }
 
-bool AcquisitionZone::contains(double rangeM, double trueBearingRad) const {
-  if (rangeM < minRangeM || rangeM > maxRangeM) return false;
-  const double span = wrapTwoPi(toBearingRad - fromBearingRad);
-  if (span == 0.0) return true;
-  return wrapTwoPi(trueBearingRad - fromBearingRad) <= span;
-}
-
 std::string TrackManagerConfig::check() const {
   if (capacity == 0) return "capacity must be positive";
   if (inputEstimationWindow < 1 || inputEstimationWindow > 100)
@@ -107,29 +64,16 @@ std::string TrackManagerConfig::check() const {
   return {};
 }
 
-int Track::tag() const {
-  const int n = std::min(tagCount, static_cast<int>(recentTags.size()));
-  if (n == 0) return -1;
-  int best = -1, bestCount = 0;
-  // Walk from the most recent so that ties go to the latest.
-  for (int k = 0; k < n; ++k) {
-    const int idx = (tagCount - 1 - k) % static_cast<int>(recentTags.size());
-    const int cand = recentTags[static_cast<std::size_t>(idx)];
-    int count = 0;
-    for (int m = 0; m < n; ++m) count += recentTags[static_cast<std::size_t>(m)] == cand ? 1 : 0;
-    if (count > bestCount) {
-      best = cand;
-      bestCount = count;
-    }
-  }
-  return best;
-}
-
 TrackManager::TrackManager(const TrackManagerConfig& config)
-    : config_(config), ctx_(std::make_shared<const TtkfContext>(config.filter)), assocGate_(ctx_->radarGate) {
+    : config_(config),
+      ctx_(std::make_shared<const TtkfContext>(config.filter)),
+      hypothesiser_(ctx_->radarGate, fromSeconds(0.5 * config.sweepPeriodS)),
+      filters_{ctx_, config.abg, config.imm},
+      confirmation_(config.confirmHits, config.confirmSweeps),
+      deleter_(config.keepHits, config.keepSweeps, config.lostHoldS) {
   if (const std::string problem = config.check(); !problem.empty())
     throw std::invalid_argument("track manager: " + problem);
-  inputThreshold_ = est::chiSquareQuantile(1.0 - config.inputEstimationPfa, 2.0);
+  updater_ = TrackUpdater(est::chiSquareQuantile(1.0 - config.inputEstimationPfa, 2.0));
   tracks_.reserve(std::min<std::size_t>(config.capacity, 4096));
 }
 
@@ -149,7 +93,7 @@ std::vector<TrackEvent> TrackManager::takeEvents() {
   return out;
 }
 
-tk::Belief TrackManager::beliefAt(const Track& t, TimeUs time) const {
+est::ttkf::Belief TrackManager::beliefAt(const Track& t, TimeUs time) const {
   if (t.status == TrackStatus::Lost) return t.lastUpdate;
   return t.filter.predicted(time);
 }
@@ -174,58 +118,85 @@ void TrackManager::addPlot(const GridPlot& plot, int tag) {
   pending_.push_back({plot, tag});
 }
 
-bool TrackManager::applyPlot(Track& t, const GridPlot& plot, int tag) {
-  const bool ie = t.filter.kind() == TrackerKind::EkfInputEstimation;
-  Ttkf::RadarDetail detail;
-  t.lastRadar = t.filter.updateRadar(plot, ie ? &detail : nullptr);
-  if (!t.lastRadar.applied()) return false;
-  if (ie)
-    estimateInput(t, *t.filter.ttkf(), plot.timeUs, detail);
-  else if (t.filter.kind() == TrackerKind::Imm)
-    setManoeuvring(t, t.filter.modelManoeuvring(), plot.timeUs);
-  ++t.radarUpdates;
-  ++counters_.plotsAssociated;
-  t.seenThisSweep = true;
-  t.lastPlotUs = plot.timeUs;
-  t.lastUpdate = t.filter.belief();
-  t.recentTags[static_cast<std::size_t>(t.tagCount % static_cast<int>(t.recentTags.size()))] = tag;
-  ++t.tagCount;
-  return true;
-}
-
-void TrackManager::setManoeuvring(Track& t, bool flag, TimeUs time) {
-  if (flag && !t.manoeuvring) event(TrackEvent::Kind::Manoeuvre, time, t.id);
-  t.manoeuvring = flag;
-}
-
-void TrackManager::estimateInput(Track& t, Ttkf& filter, TimeUs time, const Ttkf::RadarDetail& detail) {
-  // Seed 001's input estimation around the TTKF (docs/manoeuvres.md): one window entry per radar
-  // update. Between radar updates the own-ship feed also updates the filter; its effect on the
-  // target's response to the input is neglected (it conditions the own-ship states).
-  const TimeUs dtUs = time - t.lastRadarUs;
-  const double dt = toSeconds(dtUs);
-  t.lastRadarUs = time;
-  if (dtUs <= 0) return;
-  InputWindow<tk::kStateDim>::Entry e;
-  e.Phi = filter.transition(dtUs);
-  e.G.setZero();
-  e.G(tk::kTgtX, 0) = e.G(tk::kTgtY, 1) = 0.5 * dt * dt;
-  e.G(tk::kTgtVx, 0) = e.G(tk::kTgtVy, 1) = dt;
-  e.H = detail.H;
-  e.S = t.lastRadar.S;
-  e.innovation = t.lastRadar.innovation;
-  const Eigen::LDLT<est::Mat<2>> ldlt(e.S);
-  e.W = ldlt.solve(e.H * detail.priorP).transpose();
-  t.inputWindow.push(e);
-  const auto est = t.inputWindow.estimate();
-  if (!est.tested) return;
-  if (est.d < inputThreshold_) {
-    t.manoeuvring = false;
-    return;
+// The tracker loop, once per sweep: associate (predict, hypothesise and gate, choose, update), start
+// tracks on the plots left over, then per track record the sweep, confirm or drop (M of N), lose
+// (hits in the last sweeps) and judge the danger; remove what is over.
+void TrackManager::endSweep(TimeUs t) {
+  associatePending();
+  for (auto& tr : tracks_) {
+    if (!tr.active()) continue;
+    tr.history = recordSweep(tr.history, tr.seenThisSweep);
+    tr.seenThisSweep = false;
+    ++tr.sweeps;
+    if (tr.status == TrackStatus::Tentative)
+      judgeTentative(tr, t);
+    else if (deleter_.lost(tr.history, tr.sweeps))
+      loseTrack(tr, t);
+    if (tr.status == TrackStatus::Confirmed) updateDanger(tr, t);
   }
-  if (!filter.correct(est.M * est.u, est.M * est.L * est.M.transpose())) return;
-  t.inputWindow.clear();
-  setManoeuvring(t, true, time);
+  removeDroppedAndExpired(t);
+  ++sweep_;
+  std::erase_if(free_, [&](const FreePlot& f) { return f.sweep < sweep_ - 1; });
+  updateCapacityWarning();
+  fullThisSweep_ = false;
+}
+
+void TrackManager::associatePending() {
+  if (pending_.empty()) return;
+  std::stable_sort(pending_.begin(), pending_.end(),
+                   [](const Pending& a, const Pending& b) { return a.plot.timeUs < b.plot.timeUs; });
+  std::vector<GridPlot> plots;
+  plots.reserve(pending_.size());
+  for (const Pending& p : pending_) plots.push_back(p.plot);
+  const PlotBatch batch(plots, lastOwn_->x.segment<2>(2));
+  // Confirmed tracks choose first, so a tentative track (often started by clutter next to a target)
+  // never takes a plot that an established track can explain.
+  std::vector<char> taken(pending_.size(), 0);
+  associateRound(TrackStatus::Confirmed, batch, taken);
+  associateRound(TrackStatus::Tentative, batch, taken);
+  initiateFromUnassociated(taken);
+  pending_.clear();
+}
+
+void TrackManager::associateRound(TrackStatus status, const PlotBatch& batch, std::vector<char>& taken) {
+  const std::vector<GatedTrack> gated = predictAndAdmit(status, batch);
+  const PlotAssignment chosen = associateNearest(hypothesiser_.hypothesise(gated, batch, taken));
+  counters_.largestCluster = std::max(counters_.largestCluster, chosen.largestCluster);
+  // Apply in plot time order; a plot that the exact polar update still rejects is used by nobody.
+  for (std::size_t j = 0; j < batch.size(); ++j) {
+    const int g = chosen.trackOfPlot[j];
+    if (g < 0) continue;
+    taken[j] = 1;
+    applyPlot(tracks_[gated[static_cast<std::size_t>(g)].track], pending_[j].plot, pending_[j].tag);
+  }
+}
+
+std::vector<GatedTrack> TrackManager::predictAndAdmit(TrackStatus status, const PlotBatch& batch) const {
+  RelativePredictor predictor(*ctx_, batch.timeUs.front());
+  std::vector<GatedTrack> gated;
+  gated.reserve(tracks_.size());
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    const Track& t = tracks_[i];
+    if (t.status != status || !hypothesiser_.mayTake(t.lastPlotUs, batch.timeUs.back())) continue;
+    if (auto g = hypothesiser_.admit(i, t.lastPlotUs, predictor.predict(t.filter), batch))
+      gated.push_back(*g);
+  }
+  return gated;
+}
+
+void TrackManager::initiateFromUnassociated(const std::vector<char>& taken) {
+  const OwnShipInput& own = *lastOwn_;
+  for (std::size_t j = 0; j < pending_.size(); ++j) {
+    if (taken[j]) continue;
+    const Pending& p = pending_[j];
+    const bool land = config_.autoAcquire && plotOnLand(land_.get(), p.plot, own);
+    counters_.plotsOnLand += land ? 1 : 0;
+    if (config_.autoAcquire && inAcquisitionZones(config_.zones, p.plot, own.convergenceRad) && !land) {
+      startTrack(own, p.plot, p.tag, false);
+    } else {
+      free_.push_back({p.plot, p.tag, own, sweep_});
+    }
+  }
 }
 
 void TrackManager::associateKnown(const GridPlot& plot, int tag) {
@@ -239,20 +210,10 @@ void TrackManager::associateKnown(const GridPlot& plot, int tag) {
   startTrack(*lastOwn_, plot, tag, false);
 }
 
-bool TrackManager::inZones(const GridPlot& plot) const {
-  if (config_.zones.empty()) return true;
-  const double trueBearing = plot.bearingRad + (lastOwn_ ? lastOwn_->convergenceRad : 0.0);
-  for (const auto& z : config_.zones)
-    if (z.contains(plot.rangeM, trueBearing)) return true;
-  return false;
-}
-
-bool TrackManager::onLand(const GridPlot& plot, const OwnShipInput& own) const {
-  if (!land_) return false;
-  const double dtS = toSeconds(plot.timeUs - own.timeUs);
-  const est::Vec<2> at(own.x[0] + own.x[2] * dtS + plot.rangeM * std::sin(plot.bearingRad),
-                       own.x[1] + own.x[3] * dtS + plot.rangeM * std::cos(plot.bearingRad));
-  return land_->contains(at);
+void TrackManager::applyPlot(Track& t, const GridPlot& plot, int tag) {
+  const PlotUpdate u = updater_.apply(t, plot, tag);
+  if (u.manoeuvreDeclared) event(TrackEvent::Kind::Manoeuvre, plot.timeUs, t.id);
+  if (u.applied) ++counters_.plotsAssociated;
 }
 
 std::optional<int> TrackManager::startTrack(const OwnShipInput& own, const GridPlot& plot, int tag,
@@ -263,26 +224,11 @@ std::optional<int> TrackManager::startTrack(const OwnShipInput& own, const GridP
     fullThisSweep_ = true;
     return std::nullopt;
   }
-  std::optional<TrackFilter> filter;
-  try {
-    switch (config_.kind) {
-      case TrackerKind::Ekf:
-      case TrackerKind::EkfInputEstimation:
-        filter.emplace(config_.kind, Ttkf::initiate(ctx_, own, plot));
-        break;
-      case TrackerKind::AlphaBetaGamma:
-        filter.emplace(AbgTrackFilter(ctx_, config_.abg, own, plot));
-        break;
-      case TrackerKind::Imm:
-        filter.emplace(ImmTrackFilter(ctx_, config_.imm, own, plot));
-        break;
-    }
-  } catch (const std::invalid_argument&) {
-    return std::nullopt;  // degenerate geometry (a plot on own ship)
-  }
+  std::optional<TrackFilter> filter = filters_.start(config_.kind, own, plot);
+  if (!filter) return std::nullopt;
   Track t(nextId_++, std::move(*filter));
   if (config_.kind == TrackerKind::EkfInputEstimation)
-    t.inputWindow = InputWindow<tk::kStateDim>(config_.inputEstimationWindow);
+    t.inputWindow = InputWindow<est::ttkf::kStateDim>(config_.inputEstimationWindow);
   t.lastRadarUs = plot.timeUs;
   t.manual = manual;
   t.initiatedUs = plot.timeUs;
@@ -303,180 +249,46 @@ std::optional<int> TrackManager::startTrack(const OwnShipInput& own, const GridP
   return tracks_.back().id;
 }
 
-void TrackManager::associateRound(TrackStatus status, std::vector<char>& taken) {
-  const OwnShipInput& own = *lastOwn_;
-  const TimeUs tRef = pending_.front().plot.timeUs;
-  const std::size_t nPlots = pending_.size();
-  const est::Vec<2> ownVel = own.x.segment<2>(2);
-
-  // Plots: offset from own ship, its Cartesian covariance, and a position in a frame moving with own
-  // ship's estimated velocity from tRef (for the spatial index).
-  std::vector<est::Vec<2>> offset(nPlots), fixed(nPlots);
-  std::vector<est::Mat<2>> Rxy(nPlots);
-  std::vector<double> dt(nPlots);
-  double span = 0.0, maxVarR = 0.0, maxVarB = 0.0;
-  for (std::size_t j = 0; j < nPlots; ++j) {
-    const GridPlot& p = pending_[j].plot;
-    offset[j] = {p.rangeM * std::sin(p.bearingRad), p.rangeM * std::cos(p.bearingRad)};
-    Rxy[j] = polarToCartesianCov(p.rangeM, p.bearingRad, p.rangeVarM2, p.bearingVarRad2);
-    dt[j] = toSeconds(p.timeUs - tRef);
-    fixed[j] = offset[j] + ownVel * dt[j];
-    span = std::max(span, dt[j]);
-    maxVarR = std::max(maxVarR, p.rangeVarM2);
-    maxVarB = std::max(maxVarB, p.bearingVarRad2);
-  }
-
-  // Candidate tracks and their relative state (r, v) at tRef.
-  struct Candidate {
-    std::size_t track;
-    est::Vec<4> rel;
-    est::Mat<4> P;
-    double radius;
-    double missCost;
-  };
-  std::vector<Candidate> cands;
-  cands.reserve(tracks_.size());
-  const TimeUs minGap = fromSeconds(0.5 * config_.sweepPeriodS);
-  static const Eigen::Matrix<double, 4, tk::kStateDim> A = relativeSelector();  // rel = A x
-  struct StepCache {
-    TimeUs step;
-    Eigen::Matrix<double, 4, tk::kStateDim> APhi;
-    est::Mat<4> AQAt;
-  };
-  std::vector<StepCache> steps;
-  // The gate radius (for the spatial index) and the cost of a miss of a candidate.
-  const auto addCandidate = [&](Candidate& c, double lag) {
-    const double range = c.rel.head<2>().norm();
-    const double bearing = bearingOf(c.rel[0], c.rel[1]);
-    const est::Mat<2> Rt = polarToCartesianCov(range, bearing, maxVarR, maxVarB);
-    const est::Mat<2> Crr = c.P.topLeftCorner<2, 2>() + Rt;
-    const double lmaxR = 0.5 * (Crr.trace() + std::hypot(Crr(0, 0) - Crr(1, 1), 2.0 * Crr(0, 1)));
-    const est::Mat<2> Pvv = c.P.bottomRightCorner<2, 2>();
-    const double lmaxV = 0.5 * (Pvv.trace() + std::hypot(Pvv(0, 0) - Pvv(1, 1), 2.0 * Pvv(0, 1)));
-    const double speed = (c.rel.tail<2>() + ownVel).norm();
-    c.radius = std::sqrt(assocGate_ * lmaxR) + (speed + std::sqrt(assocGate_ * lmaxV)) * (span + lag);
-    const auto m = mahalanobis2(est::Vec<2>::Zero(), Crr);
-    if (!m || !std::isfinite(c.radius)) return false;
-    c.missCost = assocGate_ + m->second;
-    return true;
-  };
-  for (std::size_t i = 0; i < tracks_.size(); ++i) {
-    const Track& t = tracks_[i];
-    if (t.status != status || pending_.back().plot.timeUs - t.lastPlotUs <= minGap) continue;
-    const Ttkf* ttkf = t.filter.ttkf();
-    if (!ttkf) {
-      // abg and imm: their own prediction to tRef (never behind it: they sit at their last plot and
-      // own ship's last input, both before the pending plots).
-      const tk::Belief b = t.filter.predicted(tRef);
-      Candidate c{i, A * b.x, A * b.P * A.transpose(), 0.0, 0.0};
-      c.P = 0.5 * (c.P + c.P.transpose()).eval();
-      if (addCandidate(c, 0.0)) cands.push_back(c);
-      continue;
-    }
-    // Only the relative position and velocity at tRef are needed: (A Phi) x and (A Phi) P (A Phi)^T +
-    // A Q A^T, with one discretisation per distinct time step (most tracks share the last own-ship
-    // time), far cheaper than predicting all 12 states.
-    const TimeUs from = ttkf->timeUs();
-    const TimeUs step = std::max<TimeUs>(0, tRef - from);
-    auto it =
-        std::find_if(steps.begin(), steps.end(), [step](const StepCache& sc) { return sc.step == step; });
-    if (it == steps.end()) {
-      const auto& d = ctx_->discrete(step);
-      steps.push_back({step, A.lazyProduct(d.Phi.dense()), A.lazyProduct(d.Q).lazyProduct(A.transpose())});
-      it = steps.end() - 1;
-    }
-    const tk::Belief& b = ttkf->belief();
-    const Eigen::Matrix<double, 4, tk::kStateDim> APhiP = it->APhi.lazyProduct(b.P);
-    Candidate c{i, it->APhi * b.x, APhiP.lazyProduct(it->APhi.transpose()) + it->AQAt, 0.0, 0.0};
-    // The filter may sit later than tRef (a plot just after an own-ship input): carry it back.
-    const double lag = toSeconds(from > tRef ? from - tRef : 0);
-    c.rel.head<2>() -= c.rel.tail<2>() * lag;
-    if (addCandidate(c, lag)) cands.push_back(c);
-  }
-
-  GnnProblem problem(cands.size(), nPlots, [&] {
-    std::vector<double> miss;
-    miss.reserve(cands.size());
-    for (const auto& c : cands) miss.push_back(c.missCost);
-    return miss;
-  }());
-  if (!cands.empty()) {
-    // Spatial index of the plots: a uniform grid with the median gate radius as its cell.
-    std::vector<double> radii;
-    radii.reserve(cands.size());
-    for (const auto& c : cands) radii.push_back(c.radius);
-    std::nth_element(radii.begin(), radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2),
-                     radii.end());
-    const double cell = std::clamp(radii[radii.size() / 2], 50.0, 20000.0);
-    std::vector<geo::GridBox> points;
-    points.reserve(nPlots);
-    for (std::size_t j = 0; j < nPlots; ++j)
-      points.push_back({fixed[j][0], fixed[j][1], fixed[j][0], fixed[j][1]});
-    const geo::GridIndex grid(cell, points);
-    std::vector<std::size_t> near;
-    for (std::size_t ci = 0; ci < cands.size(); ++ci) {
-      const Candidate& c = cands[ci];
-      const Track& t = tracks_[c.track];
-      near.clear();
-      const double cells = std::ceil(c.radius / cell);
-      if ((2 * cells + 1) * (2 * cells + 1) > static_cast<double>(nPlots)) {
-        for (std::size_t j = 0; j < nPlots; ++j) near.push_back(j);
-      } else {
-        const auto n = static_cast<std::int64_t>(cells);
-        const auto cx = grid.cellOf(c.rel[0]);
-        const auto cy = grid.cellOf(c.rel[1]);
-        for (std::int64_t ix = cx - n; ix <= cx + n; ++ix)
-          for (std::int64_t iy = cy - n; iy <= cy + n; ++iy)
-            for (const std::uint32_t j : grid.cell(ix, iy)) near.push_back(j);
-      }
-      for (std::size_t j : near) {
-        if (taken[j] || pending_[j].plot.timeUs - t.lastPlotUs <= minGap) continue;
-        const double d = dt[j];
-        const est::Vec<2> pred = c.rel.head<2>() + c.rel.tail<2>() * d;
-        const est::Mat<2> Prv = c.P.block<2, 2>(0, 2);
-        est::Mat<2> C = c.P.topLeftCorner<2, 2>() + d * (Prv + Prv.transpose()) +
-                        d * d * c.P.bottomRightCorner<2, 2>() + Rxy[j];
-        const auto m = mahalanobis2(offset[j] - pred, C);
-        if (m && m->first <= assocGate_) problem.addPair(ci, j, m->first + m->second);
-      }
-    }
-  }
-  const std::vector<int> sol = problem.solve();
-  counters_.largestCluster = std::max(counters_.largestCluster, problem.largestCluster());
-
-  // Apply in plot time order; a plot that the exact polar update still rejects is used by nobody.
-  std::vector<int> trackOfPlot(nPlots, -1);
-  for (std::size_t ci = 0; ci < cands.size(); ++ci)
-    if (sol[ci] >= 0) trackOfPlot[static_cast<std::size_t>(sol[ci])] = static_cast<int>(cands[ci].track);
-  for (std::size_t j = 0; j < nPlots; ++j) {
-    if (trackOfPlot[j] < 0) continue;
-    taken[j] = 1;
-    applyPlot(tracks_[static_cast<std::size_t>(trackOfPlot[j])], pending_[j].plot, pending_[j].tag);
+void TrackManager::judgeTentative(Track& t, TimeUs now) {
+  switch (confirmation_.verdict(t.history, t.sweeps)) {
+    case MofNConfirmation::Verdict::Confirm:
+      t.status = TrackStatus::Confirmed;
+      ++counters_.tracksConfirmed;
+      event(TrackEvent::Kind::Confirmed, now, t.id);
+      break;
+    case MofNConfirmation::Verdict::Drop:
+      t.status = TrackStatus::Lost;  // marked for removal as dropped (removeDroppedAndExpired)
+      t.lostUs = -1;
+      break;
+    case MofNConfirmation::Verdict::Undecided:
+      break;
   }
 }
 
-void TrackManager::associatePending() {
-  if (pending_.empty()) return;
-  std::stable_sort(pending_.begin(), pending_.end(),
-                   [](const Pending& a, const Pending& b) { return a.plot.timeUs < b.plot.timeUs; });
-  // Confirmed tracks choose first, so a tentative track (often started by clutter next to a target)
-  // never takes a plot that an established track can explain.
-  std::vector<char> taken(pending_.size(), 0);
-  associateRound(TrackStatus::Confirmed, taken);
-  associateRound(TrackStatus::Tentative, taken);
-  const OwnShipInput& own = *lastOwn_;
-  for (std::size_t j = 0; j < pending_.size(); ++j) {
-    if (taken[j]) continue;
-    const Pending& p = pending_[j];
-    const bool land = config_.autoAcquire && onLand(p.plot, own);
-    counters_.plotsOnLand += land ? 1 : 0;
-    if (config_.autoAcquire && inZones(p.plot) && !land) {
-      startTrack(own, p.plot, p.tag, false);
-    } else {
-      free_.push_back({p.plot, p.tag, own, sweep_});
+void TrackManager::loseTrack(Track& t, TimeUs now) {
+  t.status = TrackStatus::Lost;
+  t.lostUs = now;
+  t.dangerous = false;
+  --active_;
+  ++counters_.tracksLost;
+  event(TrackEvent::Kind::Lost, now, t.id);
+}
+
+void TrackManager::removeDroppedAndExpired(TimeUs now) {
+  std::erase_if(tracks_, [&](const Track& tr) {
+    if (tr.status != TrackStatus::Lost) return false;
+    if (tr.lostUs < 0) {  // a tentative track that can no longer reach M of N
+      --active_;
+      ++counters_.tracksDropped;
+      event(TrackEvent::Kind::Dropped, now, tr.id);
+      return true;
     }
-  }
-  pending_.clear();
+    if (deleter_.expired(tr.lostUs, now)) {
+      event(TrackEvent::Kind::Removed, now, tr.id);
+      return true;
+    }
+    return false;
+  });
 }
 
 void TrackManager::updateDanger(Track& t, TimeUs now) {
@@ -486,64 +298,14 @@ void TrackManager::updateDanger(Track& t, TimeUs now) {
     return;
   }
   const Cpa c = kinematicsOf(t.filter.belief(), 0.0).cpa;
-  t.dangerous = c.cpaM <= config_.dangerCpaM && c.tcpaS >= 0.0 && c.tcpaS <= config_.dangerTcpaS;
+  t.dangerous = withinDangerLimits(c, config_.dangerCpaM, config_.dangerTcpaS);
   if (t.dangerous && !was) event(TrackEvent::Kind::Dangerous, now, t.id);
 }
 
-void TrackManager::endSweep(TimeUs t) {
-  associatePending();
-  const int M = config_.confirmHits, N = config_.confirmSweeps;
-  const int keepMisses = config_.keepSweeps - config_.keepHits;
-  for (auto& tr : tracks_) {
-    if (!tr.active()) continue;
-    tr.history = (tr.history << 1) | (tr.seenThisSweep ? 1u : 0u);
-    tr.seenThisSweep = false;
-    ++tr.sweeps;
-    if (tr.status == TrackStatus::Tentative) {
-      const int hits = std::popcount(tr.history & lowBits(std::min(tr.sweeps, N)));
-      if (hits >= M) {
-        tr.status = TrackStatus::Confirmed;
-        ++counters_.tracksConfirmed;
-        event(TrackEvent::Kind::Confirmed, t, tr.id);
-      } else if (hits + (N - tr.sweeps) < M) {
-        tr.status = TrackStatus::Lost;  // marked for removal below as dropped
-        tr.lostUs = -1;
-      }
-    } else {
-      const int window = std::min(tr.sweeps, config_.keepSweeps);
-      const int misses = window - std::popcount(tr.history & lowBits(window));
-      if (misses > keepMisses) {
-        tr.status = TrackStatus::Lost;
-        tr.lostUs = t;
-        tr.dangerous = false;
-        --active_;
-        ++counters_.tracksLost;
-        event(TrackEvent::Kind::Lost, t, tr.id);
-      }
-    }
-    if (tr.status == TrackStatus::Confirmed) updateDanger(tr, t);
-  }
-  const TimeUs hold = fromSeconds(config_.lostHoldS);
-  std::erase_if(tracks_, [&](const Track& tr) {
-    if (tr.status != TrackStatus::Lost) return false;
-    if (tr.lostUs < 0) {  // a tentative track that can no longer reach M of N
-      --active_;
-      ++counters_.tracksDropped;
-      event(TrackEvent::Kind::Dropped, t, tr.id);
-      return true;
-    }
-    if (t - tr.lostUs >= hold) {
-      event(TrackEvent::Kind::Removed, t, tr.id);
-      return true;
-    }
-    return false;
-  });
-  ++sweep_;
-  std::erase_if(free_, [&](const FreePlot& f) { return f.sweep < sweep_ - 1; });
+void TrackManager::updateCapacityWarning() {
   if (capacityWarning_ &&
       static_cast<double>(active_) < config_.capacityWarningFraction * static_cast<double>(config_.capacity))
     capacityWarning_ = false;
-  fullThisSweep_ = false;
 }
 
 std::optional<int> TrackManager::acquire(double xGridM, double yGridM) {
@@ -551,11 +313,8 @@ std::optional<int> TrackManager::acquire(double xGridM, double yGridM) {
   std::size_t best = free_.size();
   double bestD = config_.manualAcquireRadiusM;
   for (std::size_t k = 0; k < free_.size(); ++k) {
-    const FreePlot& f = free_[k];
-    const double dtS = toSeconds(f.plot.timeUs - f.own.timeUs);
-    const double x = f.own.x[0] + f.own.x[2] * dtS + f.plot.rangeM * std::sin(f.plot.bearingRad);
-    const double y = f.own.x[1] + f.own.x[3] * dtS + f.plot.rangeM * std::cos(f.plot.bearingRad);
-    const double d = std::hypot(x - xGridM, y - yGridM);
+    const est::Vec<2> at = plotGridPosition(free_[k].plot, free_[k].own);
+    const double d = std::hypot(at[0] - xGridM, at[1] - yGridM);
     if (d <= bestD) {
       bestD = d;
       best = k;

@@ -7,35 +7,33 @@
 // while seen in 5 of the last 10 sweeps and are then declared lost (last position kept for a while).
 // The paper's own mode, where every plot's target is known, is kept for its consistency tests.
 // docs/ttkf.md has the rules and their reasons.
-#include <array>
+//
+// The tracker is built of the tracking literature's components, one file each: the predictor
+// (track_predictor.h) and the hypothesiser with its gate (hypothesiser.h) say which plots may belong to
+// which track; the data associator (data_associator.h) chooses among them; the updater
+// (track_updater.h) applies a plot to its track; the initiator (initiator.h) starts tracks on the
+// plots left over and confirms them M of N; the deleter (deleter.h) declares them lost. TrackManager
+// is the loop around them, with the bank's bookkeeping: capacity, manual acquisition, danger, events.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "radar/land_mask.h"
 #include "tracking/cpa.h"
-#include "tracking/input_window.h"
+#include "tracking/deleter.h"
+#include "tracking/hypothesiser.h"
+#include "tracking/initiator.h"
+#include "tracking/track.h"
 #include "tracking/track_filter.h"
+#include "tracking/track_updater.h"
 
 namespace reckoner::track {
-
-enum class TrackStatus : std::uint8_t { Tentative, Confirmed, Lost };
-const char* trackStatusName(TrackStatus s);
 
 enum class Association : std::uint8_t {
   Nearest,  ///< global nearest neighbour: plots carry no identity (a real radar)
   Known,    ///< each plot's tag is its target (seed 000's assumption); tag < 0 plots are ignored
-};
-
-/// A ring sector around own ship: true bearings clockwise from `fromBearingRad` to `toBearingRad`
-/// (equal bearings: the whole circle), ranges [minRangeM, maxRangeM].
-struct AcquisitionZone {
-  double minRangeM = 0.0;
-  double maxRangeM = 0.0;
-  double fromBearingRad = 0.0;
-  double toBearingRad = 0.0;
-  [[nodiscard]] bool contains(double rangeM, double trueBearingRad) const;
 };
 
 struct TrackManagerConfig {
@@ -64,33 +62,6 @@ struct TrackManagerConfig {
   ImmConfig imm;
   /// Empty if valid, else the first problem.
   [[nodiscard]] std::string check() const;
-};
-
-struct Track {
-  Track(int trackId, TrackFilter f) : id(trackId), filter(std::move(f)) {}
-  int id = 0;
-  TrackStatus status = TrackStatus::Tentative;
-  TrackFilter filter;
-  bool manual = false;
-  bool dangerous = false;
-  TimeUs initiatedUs = 0;
-  TimeUs lastPlotUs = 0;
-  TimeUs lostUs = 0;
-  std::uint32_t history = 0;  ///< bit k: seen in the k-th most recent completed sweep
-  int sweeps = 0;             ///< completed sweeps since initiation
-  bool seenThisSweep = false;
-  int radarUpdates = 0;
-  est::UpdateReport<2> lastRadar;
-  InputWindow<est::ttkf::kStateDim> inputWindow{1};  ///< input estimation (when enabled)
-  TimeUs lastRadarUs = -1;                           ///< time of the last applied radar update
-  bool manoeuvring = false;          ///< the manoeuvre flag: input estimation's (ekf-ie) or the IMM's
-  est::ttkf::Belief lastUpdate;      ///< right after the last radar update: a lost track is shown here
-  std::array<int, 10> recentTags{};  ///< tags of the last plots used (ring)
-  int tagCount = 0;
-
-  /// The most frequent tag among the last plots used (-1 if none): the true target in simulation.
-  [[nodiscard]] int tag() const;
-  [[nodiscard]] bool active() const { return status != TrackStatus::Lost; }
 };
 
 struct TrackEvent {
@@ -175,23 +146,30 @@ class TrackManager {
     OwnShipInput own;  ///< own ship when the plot was left unassociated
     int sweep;
   };
+  /// Associates the plots received since the last own-ship input, then starts tracks on the rest.
   void associatePending();
   /// One GNN round between the tracks of one status and the plots not yet taken (taken[j]).
-  void associateRound(TrackStatus status, std::vector<char>& taken);
+  void associateRound(TrackStatus status, const PlotBatch& batch, std::vector<char>& taken);
+  /// The tracks of one status that may take a plot of the batch, predicted and gated.
+  [[nodiscard]] std::vector<GatedTrack> predictAndAdmit(TrackStatus status, const PlotBatch& batch) const;
+  void initiateFromUnassociated(const std::vector<char>& taken);
   void associateKnown(const GridPlot& plot, int tag);
-  bool applyPlot(Track& t, const GridPlot& plot, int tag);
-  void estimateInput(Track& t, Ttkf& filter, TimeUs time, const Ttkf::RadarDetail& detail);
-  void setManoeuvring(Track& t, bool flag, TimeUs time);
+  void applyPlot(Track& t, const GridPlot& plot, int tag);
   std::optional<int> startTrack(const OwnShipInput& own, const GridPlot& plot, int tag, bool manual);
-  bool inZones(const GridPlot& plot) const;
-  bool onLand(const GridPlot& plot, const OwnShipInput& own) const;
+  void judgeTentative(Track& t, TimeUs now);
+  void loseTrack(Track& t, TimeUs now);
+  void removeDroppedAndExpired(TimeUs now);
   void updateDanger(Track& t, TimeUs now);
+  void updateCapacityWarning();
   void event(TrackEvent::Kind k, TimeUs t, int id) { events_.push_back({k, t, id}); }
 
   TrackManagerConfig config_;
   std::shared_ptr<const TtkfContext> ctx_;
-  double inputThreshold_ = 0.0;
-  double assocGate_;
+  Hypothesiser hypothesiser_;
+  TrackFilterFactory filters_;
+  MofNConfirmation confirmation_;
+  HitsInWindowDeleter deleter_;
+  TrackUpdater updater_;
   std::vector<Track> tracks_;
   std::vector<Pending> pending_;
   std::vector<FreePlot> free_;

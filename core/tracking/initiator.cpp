@@ -1,0 +1,64 @@
+#include "tracking/initiator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "common/angles.h"
+#include "tracking/sweep_history.h"
+
+namespace reckoner::track {
+
+bool AcquisitionZone::contains(double rangeM, double trueBearingRad) const {
+  if (rangeM < minRangeM || rangeM > maxRangeM) return false;
+  const double span = wrapTwoPi(toBearingRad - fromBearingRad);
+  if (span == 0.0) return true;
+  return wrapTwoPi(trueBearingRad - fromBearingRad) <= span;
+}
+
+bool inAcquisitionZones(const std::vector<AcquisitionZone>& zones, const GridPlot& plot,
+                        double convergenceRad) {
+  if (zones.empty()) return true;
+  const double trueBearing = plot.bearingRad + convergenceRad;
+  for (const auto& z : zones)
+    if (z.contains(plot.rangeM, trueBearing)) return true;
+  return false;
+}
+
+est::Vec<2> plotGridPosition(const GridPlot& plot, const OwnShipInput& own) {
+  const double dtS = toSeconds(plot.timeUs - own.timeUs);
+  return {own.x[0] + own.x[2] * dtS + plot.rangeM * std::sin(plot.bearingRad),
+          own.x[1] + own.x[3] * dtS + plot.rangeM * std::cos(plot.bearingRad)};
+}
+
+bool plotOnLand(const radar::LandMask* land, const GridPlot& plot, const OwnShipInput& own) {
+  if (!land) return false;
+  return land->contains(plotGridPosition(plot, own));
+}
+
+std::optional<TrackFilter> TrackFilterFactory::start(TrackerKind kind, const OwnShipInput& own,
+                                                     const GridPlot& plot) const {
+  try {
+    switch (kind) {
+      case TrackerKind::Ekf:
+      case TrackerKind::EkfInputEstimation:
+        return TrackFilter(kind, Ttkf::initiate(ctx, own, plot));
+      case TrackerKind::AlphaBetaGamma:
+        return TrackFilter(AbgTrackFilter(ctx, abg, own, plot));
+      case TrackerKind::Imm:
+        return TrackFilter(ImmTrackFilter(ctx, imm, own, plot));
+    }
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;  // degenerate geometry (a plot on own ship)
+  }
+  return std::nullopt;
+}
+
+MofNConfirmation::Verdict MofNConfirmation::verdict(std::uint32_t history, int sweeps) const {
+  const int hits = hitsInLast(history, std::min(sweeps, sweeps_));
+  if (hits >= hits_) return Verdict::Confirm;
+  if (hits + (sweeps_ - sweeps) < hits_) return Verdict::Drop;
+  return Verdict::Undecided;
+}
+
+}  // namespace reckoner::track

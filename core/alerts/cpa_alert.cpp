@@ -29,7 +29,7 @@ bool CpaAlertCondition::update(int trackId, TimeUs now, const track::Cpa& cpa) {
   State& s = tracks_[trackId];
   if (!std::isfinite(cpa.cpaM) || !std::isfinite(cpa.tcpaS)) return s.holding;  // keep the last decision
   if (!s.holding) {
-    s.holding = cpa.cpaM <= limits_.cpaM && cpa.tcpaS >= 0.0 && cpa.tcpaS <= limits_.tcpaS;
+    s.holding = track::withinDangerLimits(cpa, limits_.cpaM, limits_.tcpaS);  // the tracker's rule
     s.outside = false;
     return s.holding;
   }

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "estimation/gaussian.h"
+#include "estimation/model_concepts.h"
 #include "estimation/update_report.h"
 
 namespace reckoner::est {
@@ -27,9 +28,9 @@ bool predictLinear(Gaussian<N>& g, const Mat<N>& Phi, const Mat<N>& Q) {
 }
 
 /// Nonlinear prediction with a process model providing f(x, dt), transition(x, dt) = df/dx and
-/// noise(dt) = Q. Returns false and leaves g unchanged if the result is not finite.
-template <int N, class ProcessModel>
-bool predict(Gaussian<N>& g, const ProcessModel& model, double dtS) {
+/// noise(dt) = Q (model_concepts.h). Returns false and leaves g unchanged if the result is not finite.
+template <int N, ProcessModel<N> Model>
+bool predict(Gaussian<N>& g, const Model& model, double dtS) {
   const Mat<N> Phi = model.transition(g.x, dtS);
   const Vec<N> x = model.f(g.x, dtS);
   const Mat<N> PhiP = Phi.lazyProduct(g.P);
@@ -168,8 +169,9 @@ UpdateReport<MaxM> updateJoseph(Gaussian<N>& g, const BVec<MaxM>& y, const BMatR
   return updateJoseph<N, MaxM>(g, m, gate);
 }
 
-/// Update with a single measurement model (h, jacobian, residual; see models/). Returns the report.
-template <int N, class Model>
+/// Update with a single measurement model (h, jacobian, residual; model_concepts.h, models/). Returns
+/// the report.
+template <int N, MeasurementModel<N> Model>
 UpdateReport<Model::kDim> update(Gaussian<N>& g, const Model& model, const Vec<Model::kDim>& z,
                                  const Mat<Model::kDim>& R, double gate) {
   constexpr int M = Model::kDim;

@@ -29,7 +29,8 @@ class MeasurementStack {
   /// space; gate <= 0 applies the block without gating; forced marks a deliberate bypass. A degenerate
   /// model (model.degenerate(x)) or non-finite input is recorded as rejected and adds no rows.
   /// Returns false, adding nothing, when the stack has no room left (MaxM rows, MaxBlocks blocks).
-  template <class Model>
+  /// The model's contract: StackableMeasurementModel (model_concepts.h).
+  template <StackableMeasurementModel<N> Model>
   bool add(int tag, const Model& model, const Vec<N>& x, const Vec<Model::kDim>& z, const Mat<Model::kDim>& R,
            double gate, bool forced = false) {
     constexpr int M = Model::kDim;

@@ -8,6 +8,7 @@
 
 #include "common/angles.h"
 #include "estimation/chi_square.h"
+#include "estimation/model_concepts.h"
 #include "estimation/models/drkf_ground_velocity.h"
 #include "estimation/models/drkf_gyro.h"
 #include "estimation/models/drkf_position_fix.h"
@@ -28,11 +29,13 @@ template <class... Ts>
 struct Overloaded : Ts... {
   using Ts::operator()...;
 };
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;  // C++20 deduces it; clang before 17 (clang-tidy) needs it said
 
 /// The smallest delta >= 0 such that the block's NIS against S + delta I is at most its dimension:
 /// how much variance must be added to the states a fix observes one-to-one (position, velocity) for
 /// the fix to be consistent. Used only when the gate re-opens after a persistent rejection.
-template <class Model>
+template <est::MeasurementModel<kStateDim> Model>
 double consistencyInflation(const Covariance& P, const Model& model, const State& x,
                             const est::Vec<Model::kDim>& z, const est::Mat<Model::kDim>& R) {
   constexpr int M = Model::kDim;
@@ -300,96 +303,117 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
     counters_.staleSamples += t < timeUs_ ? static_cast<long>(samples.size()) : 0;
     return report;
   }
-  const State& x = belief_.x;
-  const geo::GridInfo& g = gridAt(x[kPosX], x[kPosY]);
-  const double cg = std::cos(g.convergenceRad), sg = std::sin(g.convergenceRad);
-  est::MeasurementStack<kStateDim, 8, kMaxBlocksPerEpoch> stack;
-
-  auto addBlock = [&](DrkfBlock b, const auto& model, const auto& z, const auto& R) {
-    constexpr int M = std::decay_t<decltype(model)>::kDim;
-    const double gate = gateFor(b, M, t);
-    const bool forced = gate <= 0.0 && gates_[M] > 0.0;
-    if (forced) {
-      // Re-anchor: make the prior as uncertain as the fix says it is before applying it ungated.
-      const double delta = consistencyInflation(belief_.P, model, x, z, R);
-      const auto [i, j] = b == kGpsVelocity ? std::pair{kVelX, kVelY} : std::pair{kPosX, kPosY};
-      belief_.P(i, i) += delta;
-      belief_.P(j, j) += delta;
-    }
-    if (!stack.add(b, model, x, z, R, gate, forced)) ++counters_.overflowSamples;
-  };
-
-  const sensors::GpsSample* gnssFix = nullptr;  // for the adaptive GNSS noise
-  // Under a ship's motion model a heading without a log in its epoch is applied after the stack, with a
-  // gain that leaves the speed alone (headingOnlyUpdate).
-  const sensors::GyroSample* headingOnly = nullptr;
-  if (config_.process.ship.enabled) {
-    bool log = false;
-    for (const auto& sample : samples) {
-      if (sensors::timeOf(sample) != t) continue;
-      if (std::holds_alternative<sensors::SpeedlogSample>(sample)) log = true;
-      if (const auto* h = std::get_if<sensors::GyroSample>(&sample); h && !headingOnly) headingOnly = h;
-    }
-    if (log) headingOnly = nullptr;
+  const geo::GridInfo& g = gridAt(belief_.x[kPosX], belief_.x[kPosY]);
+  Epoch epoch = assembleEpoch(t, samples, g);
+  // Each block gated on its own NIS, the rest applied in one Joseph-form update (measurement_stack.h).
+  report.joint = epoch.stack.apply(belief_);
+  report.dim = report.joint.applied() ? report.joint.dim : 0;
+  report.blockCount = epoch.stack.blockCount();
+  for (int i = 0; i < report.blockCount; ++i)
+    report.blocks[static_cast<std::size_t>(i)] = epoch.stack.block(i);
+  if (epoch.headingOnly != nullptr && report.blockCount < kMaxBlocksPerEpoch) {
+    report.blocks[static_cast<std::size_t>(report.blockCount++)] =
+        headingOnlyUpdate(t, *epoch.headingOnly, g);
+    if (est::isApplied(report.blocks[static_cast<std::size_t>(report.blockCount - 1)].status)) ++report.dim;
   }
+  if (epoch.gnssFix != nullptr) {
+    const est::BlockReport* b = report.block(kGpsPosition);
+    if (b && est::isApplied(b->status)) adaptGnssNoise(*epoch.gnssFix);
+  }
+  commitOutcomes(report, t);
+  return report;
+}
 
+Drkf::Epoch Drkf::assembleEpoch(TimeUs t, std::span<const sensors::OwnShipSample> samples,
+                                const geo::GridInfo& g) {
+  Epoch epoch;
+  epoch.headingOnly = headingOnlySample(t, samples);
   for (const auto& sample : samples) {
     if (sensors::timeOf(sample) != t) {
       ++counters_.staleSamples;
       continue;
     }
-    if (headingOnly != nullptr && std::get_if<sensors::GyroSample>(&sample) == headingOnly) continue;
-    std::visit(
-        Overloaded{
-            [&](const sensors::GpsSample& s) {
-              est::Mat<2> R = est::Mat<2>::Identity() * s.positionVarM2;
-              if (config_.adaptiveGnssNoise) {
-                R(0, 0) *= gnssScale_.scale(0);
-                R(1, 1) *= gnssScale_.scale(1);
-                gnssFix = &s;
-              }
-              addBlock(kGpsPosition, PositionFixModel(PositionFixModel::Source::Gps),
-                       est::Vec<2>(s.position.xM, s.position.yM), R);
-              if (s.hasVelocity) {
-                // True east/north to grid: rotate by -convergence, scale by the point scale.
-                const est::Vec<2> v(g.scale * (s.velEastMps * cg - s.velNorthMps * sg),
-                                    g.scale * (s.velEastMps * sg + s.velNorthMps * cg));
-                addBlock(kGpsVelocity, GroundVelocityModel(), v,
-                         est::Mat<2>::Identity() * (g.scale * g.scale * s.velocityVarM2PerS2));
-              }
-            },
-            [&](const sensors::LoranSample& s) {
-              addBlock(kLoranPosition, PositionFixModel(PositionFixModel::Source::LoranC),
-                       est::Vec<2>(s.position.xM, s.position.yM), est::Mat<2>::Identity() * s.positionVarM2);
-            },
-            [&](const sensors::SpeedlogSample& s) {
-              const auto mode = s.mode == sensors::SpeedlogMode::GroundLock ? SpeedlogModel::Mode::GroundLock
-                                                                            : SpeedlogModel::Mode::BottomLock;
-              const double minSpeed = linearisableSpeed(mode == SpeedlogModel::Mode::GroundLock);
-              addBlock(kSpeedlog, SpeedlogModel(mode, minSpeed, config_.process.logScale.sigma > 0.0),
-                       est::Vec<1>(g.scale * s.speedMps), est::Mat<1>(g.scale * g.scale * s.varM2PerS2));
-            },
-            [&](const sensors::GyroSample& s) {
-              addBlock(kGyro,
-                       GyroHeadingModel(linearisableSpeed(false), config_.process.headingBias.sigma > 0.0),
-                       est::Vec<1>(wrapTwoPi(s.headingRad - g.convergenceRad)), est::Mat<1>(s.varRad2));
-            },
-        },
-        sample);
+    if (epoch.headingOnly != nullptr && std::get_if<sensors::GyroSample>(&sample) == epoch.headingOnly)
+      continue;
+    addSample(epoch, t, sample, g);
   }
+  return epoch;
+}
 
-  report.joint = stack.apply(belief_);
-  report.dim = report.joint.applied() ? report.joint.dim : 0;
-  report.blockCount = stack.blockCount();
-  for (int i = 0; i < stack.blockCount(); ++i) report.blocks[static_cast<std::size_t>(i)] = stack.block(i);
-  if (headingOnly != nullptr && report.blockCount < kMaxBlocksPerEpoch) {
-    report.blocks[static_cast<std::size_t>(report.blockCount++)] = headingOnlyUpdate(t, *headingOnly, g);
-    if (est::isApplied(report.blocks[static_cast<std::size_t>(report.blockCount - 1)].status)) ++report.dim;
+const sensors::GyroSample* Drkf::headingOnlySample(TimeUs t,
+                                                   std::span<const sensors::OwnShipSample> samples) const {
+  if (!config_.process.ship.enabled) return nullptr;
+  const sensors::GyroSample* heading = nullptr;
+  for (const auto& sample : samples) {
+    if (sensors::timeOf(sample) != t) continue;
+    if (std::holds_alternative<sensors::SpeedlogSample>(sample)) return nullptr;  // a log in the epoch
+    if (const auto* h = std::get_if<sensors::GyroSample>(&sample); h && !heading) heading = h;
   }
-  if (gnssFix != nullptr) {
-    const est::BlockReport* b = report.block(kGpsPosition);
-    if (b && est::isApplied(b->status)) adaptGnssNoise(*gnssFix);
+  return heading;
+}
+
+void Drkf::addSample(Epoch& epoch, TimeUs t, const sensors::OwnShipSample& sample, const geo::GridInfo& g) {
+  std::visit(
+      Overloaded{
+          [&](const sensors::GpsSample& s) { addGpsFix(epoch, t, s, g); },
+          [&](const sensors::LoranSample& s) {  // eq. 7a rows 5-6
+            addBlock(epoch.stack, t, kLoranPosition, PositionFixModel(PositionFixModel::Source::LoranC),
+                     est::Vec<2>(s.position.xM, s.position.yM), est::Mat<2>::Identity() * s.positionVarM2);
+          },
+          [&](const sensors::SpeedlogSample& s) {  // eqs. 7c, 7d
+            const auto mode = s.mode == sensors::SpeedlogMode::GroundLock ? SpeedlogModel::Mode::GroundLock
+                                                                          : SpeedlogModel::Mode::BottomLock;
+            const double minSpeed = linearisableSpeed(mode == SpeedlogModel::Mode::GroundLock);
+            addBlock(epoch.stack, t, kSpeedlog,
+                     SpeedlogModel(mode, minSpeed, config_.process.logScale.sigma > 0.0),
+                     est::Vec<1>(g.scale * s.speedMps), est::Mat<1>(g.scale * g.scale * s.varM2PerS2));
+          },
+          [&](const sensors::GyroSample& s) {  // eq. 7b row 8, of the water velocity (drkf_gyro.h)
+            addBlock(epoch.stack, t, kGyro,
+                     GyroHeadingModel(linearisableSpeed(false), config_.process.headingBias.sigma > 0.0),
+                     est::Vec<1>(wrapTwoPi(s.headingRad - g.convergenceRad)), est::Mat<1>(s.varRad2));
+          },
+      },
+      sample);
+}
+
+void Drkf::addGpsFix(Epoch& epoch, TimeUs t, const sensors::GpsSample& s, const geo::GridInfo& g) {
+  est::Mat<2> R = est::Mat<2>::Identity() * s.positionVarM2;
+  if (config_.adaptiveGnssNoise) {
+    R(0, 0) *= gnssScale_.scale(0);
+    R(1, 1) *= gnssScale_.scale(1);
+    epoch.gnssFix = &s;
   }
+  // eq. 7a rows 1-2.
+  addBlock(epoch.stack, t, kGpsPosition, PositionFixModel(PositionFixModel::Source::Gps),
+           est::Vec<2>(s.position.xM, s.position.yM), R);
+  if (s.hasVelocity) {
+    // eq. 7b rows 3-4. True east/north to grid: rotate by -convergence, scale by the point scale.
+    const double cg = std::cos(g.convergenceRad), sg = std::sin(g.convergenceRad);
+    const est::Vec<2> v(g.scale * (s.velEastMps * cg - s.velNorthMps * sg),
+                        g.scale * (s.velEastMps * sg + s.velNorthMps * cg));
+    addBlock(epoch.stack, t, kGpsVelocity, GroundVelocityModel(), v,
+             est::Mat<2>::Identity() * (g.scale * g.scale * s.velocityVarM2PerS2));
+  }
+}
+
+template <est::StackableMeasurementModel<kStateDim> Model>
+void Drkf::addBlock(Stack& stack, TimeUs t, DrkfBlock b, const Model& model, const est::Vec<Model::kDim>& z,
+                    const est::Mat<Model::kDim>& R) {
+  constexpr int M = Model::kDim;
+  const double gate = gateFor(b, M, t);
+  const bool forced = gate <= 0.0 && gates_[M] > 0.0;
+  if (forced) {
+    // Re-anchor: make the prior as uncertain as the fix says it is before applying it ungated.
+    const double delta = consistencyInflation(belief_.P, model, belief_.x, z, R);
+    const auto [i, j] = b == kGpsVelocity ? std::pair{kVelX, kVelY} : std::pair{kPosX, kPosY};
+    belief_.P(i, i) += delta;
+    belief_.P(j, j) += delta;
+  }
+  if (!stack.add(b, model, belief_.x, z, R, gate, forced)) ++counters_.overflowSamples;
+}
+
+void Drkf::commitOutcomes(const DrkfUpdateReport& report, TimeUs t) {
   for (int i = 0; i < report.blockCount; ++i) {
     const est::BlockReport& b = report.blocks[static_cast<std::size_t>(i)];
     ++counters_.byStatus[static_cast<std::size_t>(b.tag)][static_cast<std::size_t>(b.status)];
@@ -400,7 +424,6 @@ DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> 
       since = -1;
     }
   }
-  return report;
 }
 
 void Drkf::adaptGnssNoise(const sensors::GpsSample& s) {
@@ -421,103 +444,6 @@ void Drkf::adaptGnssNoise(const sensors::GpsSample& s) {
     const double lambda = std::clamp(gnssScale_.scale(a), 0.25, 100.0);
     gnssScale_.beta[i] = lambda * gnssScale_.alpha[i];
   }
-}
-
-est::BlockReport Drkf::headingOnlyUpdate(TimeUs t, const sensors::GyroSample& s, const geo::GridInfo& g) {
-  // The gyro's model (drkf_gyro.h) with the Kalman gain K = P H^T / S projected so that it moves neither
-  // the speed through the water (the velocity along its own direction) nor the along-track
-  // acceleration: a heading carries no information about the speed, and the full gain's speed
-  // component, which comes from the linearisation of atan2 in a Cartesian velocity, drives the speed of
-  // a ship with no log away within minutes (docs/drkf.md, "Ship motion"). Any gain is valid in the
-  // Joseph form: P stays this estimator's covariance.
-  est::BlockReport rep{kGyro,
-                       1,
-                       std::numeric_limits<double>::quiet_NaN(),
-                       gateFor(kGyro, 1, t),
-                       false,
-                       -1,
-                       est::UpdateStatus::Empty};
-  const State& x = belief_.x;
-  const Covariance& P = belief_.P;
-  const double vx = x[kVelX], vy = x[kVelY], speed = std::hypot(vx, vy);
-  // atan2 is near-linear when the direction is known: the velocity's sd across its own direction, not
-  // along it (an uncertain speed of a ship underway does not make its heading ambiguous).
-  if (!(speed >= config_.minSpeedMps)) {
-    rep.status = est::UpdateStatus::RejectedDegenerate;
-    return rep;
-  }
-  const double nx = vy / speed, ny = -vx / speed;
-  const double acrossVar =
-      nx * nx * P(kVelX, kVelX) + 2.0 * nx * ny * P(kVelX, kVelY) + ny * ny * P(kVelY, kVelY);
-  const bool withBias = config_.process.headingBias.sigma > 0.0;
-  const GyroHeadingModel model(config_.minSpeedMps, withBias);
-  const double z = wrapTwoPi(s.headingRad - g.convergenceRad);
-  if (!(speed >= config_.minSpeedSigmas * std::sqrt(std::max(0.0, acrossVar)))) {
-    // The direction is too uncertain for atan2's linearisation (no heading for a minute or more): the
-    // heading re-anchors it. The velocity turns to the measured heading (less the estimated bias) at
-    // its estimated speed; across it the variance becomes the heading's and the bias's, uncorrelated
-    // with the rest (dropping those correlations keeps P positive definite).
-    const double heading = z - (withBias ? x[kHeadingBias] : 0.0);
-    const double ux = std::sin(heading), uy = std::cos(heading);
-    // Rotate P's velocity block to (along, across) of the new direction, reset the across row.
-    Covariance M = Covariance::Identity();
-    M(kVelX, kVelX) = ux;
-    M(kVelX, kVelY) = uy;  // along = u . v
-    M(kVelY, kVelX) = uy;
-    M(kVelY, kVelY) = -ux;  // across = n . v, n = (uy, -ux)
-    Covariance Pr = M * P * M.transpose();
-    const double across = speed * speed * (s.varRad2 + (withBias ? P(kHeadingBias, kHeadingBias) : 0.0));
-    Pr.row(kVelY).setZero();
-    Pr.col(kVelY).setZero();
-    Pr(kVelY, kVelY) = across;
-    Covariance Pn = M.transpose() * Pr * M;  // M is orthogonal and symmetric here
-    est::symmetrise(Pn);
-    State xn = x;
-    xn[kVelX] = speed * ux;
-    xn[kVelY] = speed * uy;
-    if (!xn.allFinite() || !Pn.allFinite()) {
-      rep.status = est::UpdateStatus::RejectedNumerical;
-      return rep;
-    }
-    belief_.x = xn;
-    belief_.P = Pn;
-    rep.forced = true;
-    rep.status = est::UpdateStatus::AcceptedForced;
-    return rep;
-  }
-  const double y = model.residual(est::Vec<1>(z), model.h(x))[0];
-  const est::MatRC<1, kStateDim> H = model.jacobian(x);
-  const est::Vec<kStateDim> PHt = P * H.transpose();
-  const double S = H.dot(PHt) + s.varRad2;
-  if (!std::isfinite(y) || !std::isfinite(S) || !(S > 0.0)) {
-    rep.status = est::UpdateStatus::RejectedNumerical;
-    return rep;
-  }
-  rep.nis = y * y / S;
-  if (rep.gate > 0.0 && rep.nis > rep.gate) {
-    rep.status = est::UpdateStatus::RejectedGate;
-    return rep;
-  }
-  est::Vec<kStateDim> K = PHt / S;
-  const double ux = vx / speed, uy = vy / speed;
-  for (const auto& [ix, iy] : {std::pair{kVelX, kVelY}, std::pair{kPosX, kPosY}, std::pair{kCurX, kCurY}}) {
-    const double along = K[ix] * ux + K[iy] * uy;
-    K[ix] -= along * ux;
-    K[iy] -= along * uy;
-  }
-  K[kAlongAccel] = 0.0;
-  const Covariance A = Covariance::Identity() - K * H;
-  Covariance Pn = A.lazyProduct(P).lazyProduct(A.transpose()) + (s.varRad2 * K) * K.transpose();
-  est::symmetrise(Pn);
-  const State xn = x + K * y;
-  if (!xn.allFinite() || !Pn.allFinite()) {
-    rep.status = est::UpdateStatus::RejectedNumerical;
-    return rep;
-  }
-  belief_.x = xn;
-  belief_.P = Pn;
-  rep.status = est::UpdateStatus::Accepted;
-  return rep;
 }
 
 est::UpdateReport<3> Drkf::updateRadarFix(TimeUs t, const est::Vec<3>& z, const est::Mat<3>& R,

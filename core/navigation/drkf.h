@@ -138,8 +138,43 @@ class Drkf {
   const Transition& discretisation(TimeUs dtUs);
   /// predictTo's step under a ship's motion model (drkf_process.h): nonlinear, linearised per second.
   bool predictShipMotion(TimeUs dtUs);
-  /// A heading with no log in its epoch under a ship's motion model (applied after the stack).
+  // ---- One epoch (update): the stacked measurement of seed 000 eq. 7, gated per block and applied in
+  // one Joseph-form update, then the outcomes committed to the counters and the gates' clocks ----
+  using Stack = est::MeasurementStack<drkf::kStateDim, 8, kMaxBlocksPerEpoch>;
+  struct Epoch {
+    Stack stack;                                       ///< one block per sensor sample
+    const sensors::GpsSample* gnssFix = nullptr;       ///< the fix the adaptive GNSS noise learns from
+    const sensors::GyroSample* headingOnly = nullptr;  ///< applied alone after the stack
+  };
+  /// The epoch's samples stamped t as blocks (others counted stale), linearised at the prior.
+  Epoch assembleEpoch(TimeUs t, std::span<const sensors::OwnShipSample> samples, const geo::GridInfo& g);
+  /// Under a ship's motion model, the epoch's first heading when it has no log (else nullptr).
+  [[nodiscard]] const sensors::GyroSample* headingOnlySample(
+      TimeUs t, std::span<const sensors::OwnShipSample> samples) const;
+  /// One sample's block(s), converted from true north to the grid.
+  void addSample(Epoch& epoch, TimeUs t, const sensors::OwnShipSample& sample, const geo::GridInfo& g);
+  void addGpsFix(Epoch& epoch, TimeUs t, const sensors::GpsSample& s, const geo::GridInfo& g);
+  /// A block with its gate; a position or velocity fix whose gate has re-opened first inflates the
+  /// prior to be consistent with it (the only change of the state before the update).
+  template <est::StackableMeasurementModel<drkf::kStateDim> Model>
+  void addBlock(Stack& stack, TimeUs t, DrkfBlock b, const Model& model, const est::Vec<Model::kDim>& z,
+                const est::Mat<Model::kDim>& R);
+  /// Counts each block's outcome and starts or stops its gate's re-opening clock.
+  void commitOutcomes(const DrkfUpdateReport& report, TimeUs t);
+
+  // ---- A heading with no log in its epoch under a ship's motion model (drkf_heading.cpp) ----
+  struct HeadingFix {
+    double zRad;      ///< measured heading, grid, [0, 2 pi)
+    double varRad2;   ///< its variance
+    bool withBias;    ///< the heading-bias state is modelled
+    double speedMps;  ///< the estimated speed through the water, >= minSpeedMps
+  };
+  /// Applied after the stack with a gain that leaves the speed alone.
   est::BlockReport headingOnlyUpdate(TimeUs t, const sensors::GyroSample& s, const geo::GridInfo& g);
+  /// The velocity's direction too uncertain to linearise atan2: turned to the measured heading.
+  est::BlockReport reanchorHeading(const HeadingFix& fix, est::BlockReport rep);
+  /// The gated Joseph-form update with the speed-preserving gain.
+  est::BlockReport speedPreservingHeadingUpdate(const HeadingFix& fix, est::BlockReport rep);
   /// The adaptive GNSS noise's recursion after an applied GNSS position fix.
   void adaptGnssNoise(const sensors::GpsSample& s);
   const geo::GridInfo& gridAt(double xM, double yM);

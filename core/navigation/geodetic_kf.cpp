@@ -7,6 +7,7 @@
 #include "common/angles.h"
 #include "estimation/chi_square.h"
 #include "estimation/ekf.h"
+#include "estimation/model_concepts.h"
 
 namespace reckoner::nav {
 namespace geod {
@@ -89,6 +90,9 @@ struct DirectPair {
 using PositionModel = DirectPair<kLat, kLon, false, true>;
 using VelocityModel = DirectPair<kVe, kVn, false, false>;
 using CourseSpeedModel = DirectPair<kCog, kSog, true, false>;
+static_assert(est::MeasurementModel<PositionModel, kStateDim>);
+static_assert(est::MeasurementModel<VelocityModel, kStateDim>);
+static_assert(est::MeasurementModel<CourseSpeedModel, kStateDim>);
 
 /// Maps a covariance of (lat, lon, vE, vN) into the full state (COG and SOG follow the velocity).
 Covariance spread(const est::Mat<4>& P4, const est::Mat<2>& Jcs) {

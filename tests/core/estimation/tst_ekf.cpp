@@ -29,6 +29,8 @@ struct PickModel {
   Vec<1> residual(const Vec<1>& z, const Vec<1>& zh) const { return z - zh; }
   bool degenerate(const Vec<N>&) const { return degen; }
 };
+static_assert(StackableMeasurementModel<PickModel<3>, 3>);
+static_assert(!MeasurementModel<PickModel<3>, 2>);  // its Jacobian has three columns
 
 double minEigen(const Mat<3>& P) {
   return Eigen::SelfAdjointEigenSolver<Mat<3>>(P).eigenvalues().minCoeff();
@@ -135,6 +137,7 @@ class TestEkf : public QObject {
       }
       Mat<2> noise(double dt) const { return Mat<2>::Identity() * 0.01 * dt; }
     };
+    static_assert(ProcessModel<Pendulumish, 2>);
     Gaussian<2> g;
     g.x << 1.0, 0.5;
     g.P << 0.2, 0.05, 0.05, 0.1;

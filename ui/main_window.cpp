@@ -141,9 +141,9 @@ bool MainWindow::openScenario(const QString& path) {
       const std::string name = path.mid(kBuiltinPrefix.size()).toStdString();
       const resources::EmbeddedFile* f = resources::findScenario(name);
       if (!f) throw io::InputError(path.toStdString(), 0, "", "no embedded scenario of that name");
-      s = io::parseScenario(f->text, path.toStdString());
+      s = files::parseScenario(f->text, path.toStdString());
     } else {
-      s = io::loadScenarioFile(path.toStdString());
+      s = files::loadScenarioFile(path.toStdString());
     }
   } catch (const io::InputError& e) {
     reportError(QString::fromStdString(e.what()));
@@ -220,7 +220,7 @@ bool MainWindow::saveScenario(const QString& path) {
     return false;
   }
   try {
-    io::saveScenarioFile(*got, path.toStdString());
+    files::saveScenarioFile(*got, path.toStdString());
   } catch (const io::InputError& e) {
     reportError(QString::fromStdString(e.what()));
     return false;

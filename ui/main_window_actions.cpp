@@ -123,8 +123,9 @@ void MainWindow::buildFileMenu() {
     const QString name = QString::fromUtf8(f.name.data(), static_cast<qsizetype>(f.name.size()));
     QString title = name;
     try {
-      title += QStringLiteral("  —  ") +
-               QString::fromStdString(io::parseScenario(f.text, std::string("builtin:").append(f.name)).name);
+      title +=
+          QStringLiteral("  —  ") +
+          QString::fromStdString(files::parseScenario(f.text, std::string("builtin:").append(f.name)).name);
     } catch (const io::InputError&) {  // tst_scenario_json keeps every built-in valid; show the name only
     }
     QAction* a =

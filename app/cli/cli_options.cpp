@@ -190,9 +190,9 @@ sim::Scenario loadScenario(const std::string& spec) {
     const auto* f = resources::findScenario(name);
     if (!f)
       throw UsageError("unknown built-in scenario " + io::quoted(name) + " (see `reckoner-cli scenarios`)");
-    return io::parseScenario(f->text, spec);
+    return files::parseScenario(f->text, spec);
   }
-  return io::loadScenarioFile(spec);
+  return files::loadScenarioFile(spec);
 }
 
 sim::Scenario loadProfiled(const std::string& spec, const std::string& profile) {

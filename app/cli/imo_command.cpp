@@ -18,7 +18,7 @@ struct ImoArgs {
   MonteCarloArgs mc;
 };
 
-std::string imoCell(const metrics::ImoCell& c) {
+std::string imoCell(const studies::ImoCell& c) {
   char buf[64];
   if (!c.required)
     std::snprintf(buf, sizeof buf, "%10s %8s %-5s", "-", "-", "");
@@ -27,15 +27,15 @@ std::string imoCell(const metrics::ImoCell& c) {
   return buf;
 }
 
-void printImo(const metrics::ImoResult& r) {
+void printImo(const studies::ImoResult& r) {
   std::printf(
       "\n%s: target tracked at 3 min in %d of %d runs; true relative speed %.1f kn, true speed %.1f kn\n",
       r.scenario.c_str(), r.tracked, r.runs, r.trueRelativeSpeedKn, r.trueSpeedKn);
   std::printf("  %-16s %-5s %10s %8s %-5s %10s %8s %-5s\n", "quantity", "unit", "1 min p95", "limit", "",
               "3 min p95", "limit", "");
   for (const auto& row : r.rows)
-    std::printf("  %-16s %-5s %s %s\n", metrics::imoQuantityName(row.quantity),
-                metrics::imoQuantityUnit(row.quantity), imoCell(row.at1Min).c_str(),
+    std::printf("  %-16s %-5s %s %s\n", studies::imoQuantityName(row.quantity),
+                studies::imoQuantityUnit(row.quantity), imoCell(row.at1Min).c_str(),
                 imoCell(row.at3Min).c_str());
 }
 
@@ -47,7 +47,7 @@ int imoCommand(const ImoArgs& a) {
   bool all = true;
   std::printf("ARPA accuracy (IMO MSC.192(79)): 95th percentile of the error over %d runs\n", a.mc.runs);
   for (const auto& s : scenarios) {
-    const auto r = metrics::evaluateImo(s, a.mc.runs, a.mc.threadCount(), a.mc.seed.value_or(s.seed));
+    const auto r = studies::evaluateImo(s, a.mc.runs, a.mc.threadCount(), a.mc.seed.value_or(s.seed));
     all = all && r.pass;
     printImo(r);
   }

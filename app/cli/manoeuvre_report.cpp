@@ -59,25 +59,25 @@ double p95At(const Series& runs, const std::vector<double>& tS, double t) {
   return percentile95(std::move(x));
 }
 
-std::vector<sim::ManoeuvreTrial> trialCases(const ManoeuvreArgs& a) {
-  std::vector<sim::ManoeuvreTrial> cases;
+std::vector<studies::ManoeuvreTrial> trialCases(const ManoeuvreArgs& a) {
+  std::vector<studies::ManoeuvreTrial> cases;
   if (a.oneCase()) {
-    sim::ManoeuvreTrial c;
+    studies::ManoeuvreTrial c;
     if (a.turnDeg) c.turnRad = degToRad(*a.turnDeg);
     if (a.speedChangeKn) c.speedChangeMps = knotsToMps(*a.speedChangeKn);
     return {c};
   }
   for (const double turn : {10.0, 30.0, 90.0}) {
-    sim::ManoeuvreTrial c;
+    studies::ManoeuvreTrial c;
     c.turnRad = degToRad(turn);
     cases.push_back(c);
   }
   for (const double dv : {5.0, -5.0}) {
-    sim::ManoeuvreTrial c;
+    studies::ManoeuvreTrial c;
     c.speedChangeMps = knotsToMps(dv);
     cases.push_back(c);
   }
-  sim::ManoeuvreTrial straight;
+  studies::ManoeuvreTrial straight;
   straight.durationS = 3600.0;
   cases.push_back(straight);
   return cases;
@@ -85,23 +85,23 @@ std::vector<sim::ManoeuvreTrial> trialCases(const ManoeuvreArgs& a) {
 
 // ---- radar-rate cases ----------------------------------------------------------------------------
 struct TrialStats {
-  std::array<Series, sim::kTrackerKinds> pos, crs, spd;
-  std::array<int, sim::kTrackerKinds> within{}, falseAlarms{};
-  std::array<double, sim::kTrackerKinds> delaySum{};
+  std::array<Series, studies::kTrackerKinds> pos, crs, spd;
+  std::array<int, studies::kTrackerKinds> within{}, falseAlarms{};
+  std::array<double, studies::kTrackerKinds> delaySum{};
   Series bound;
   std::vector<double> tS;
   double straightS = 0.0;
 };
 
-TrialStats runTrial(const sim::ManoeuvreTrial& c, int runs, std::uint64_t seed) {
-  const sim::TrackerConfigs cfg = sim::radarRateTrackers(c);
+TrialStats runTrial(const studies::ManoeuvreTrial& c, int runs, std::uint64_t seed) {
+  const studies::TrackerConfigs cfg = studies::radarRateTrackers(c);
   TrialStats t;
   for (int r = 0; r < runs; ++r) {
-    const auto run = sim::runManoeuvreTrial(c, cfg, seed + static_cast<std::uint64_t>(r));
+    const auto run = studies::runManoeuvreTrial(c, cfg, seed + static_cast<std::uint64_t>(r));
     t.tS = run.tS;
     t.bound.push_back(run.pcrbPosM);
     t.straightS += run.straightS;
-    for (int k = 0; k < sim::kTrackerKinds; ++k) {
+    for (int k = 0; k < studies::kTrackerKinds; ++k) {
       const auto& s = run.trackers[static_cast<std::size_t>(k)];
       t.pos[k].push_back(s.posErrM);
       t.crs[k].push_back(s.courseErrRad);
@@ -116,7 +116,7 @@ TrialStats runTrial(const sim::ManoeuvreTrial& c, int runs, std::uint64_t seed) 
   return t;
 }
 
-void printTrialHeading(const sim::ManoeuvreTrial& c, const TrialStats& t) {
+void printTrialHeading(const studies::ManoeuvreTrial& c, const TrialStats& t) {
   if (c.manoeuvres())
     std::printf("\n%s %+.0f%s (ends at %.0f s)\n", c.turnRad != 0.0 ? "turn" : "speed change",
                 c.turnRad != 0.0 ? radToDeg(c.turnRad) : mpsToKnots(c.speedChangeMps),
@@ -128,15 +128,15 @@ void printTrialHeading(const sim::ManoeuvreTrial& c, const TrialStats& t) {
               "crs95 3m", "spd95 3m");
 }
 
-void printTrial(const sim::ManoeuvreTrial& c, const TrialStats& t, int runs) {
+void printTrial(const studies::ManoeuvreTrial& c, const TrialStats& t, int runs) {
   printTrialHeading(c, t);
   const double start = c.manoeuvreStartS, end = c.manoeuvreEndS();
   const auto before = [&](double s) { return s >= 60.0 && (!c.manoeuvres() || s < start); };
   const auto during = [&](double s) { return c.manoeuvres() && s >= start && s <= end; };
   const auto after = [&](double s) { return c.manoeuvres() && s > end && s <= end + 120.0; };
   const double pcrbBefore = rmsWhere(t.bound, t.tS, before), pcrbAfter = rmsWhere(t.bound, t.tS, after);
-  for (int k = 0; k < sim::kTrackerKinds; ++k) {
-    const bool flags = k == sim::kEkfIe || k == sim::kImm;
+  for (int k = 0; k < studies::kTrackerKinds; ++k) {
+    const bool flags = k == studies::kEkfIe || k == studies::kImm;
     char flag[16] = "-", delay[16] = "-";
     if (flags && c.manoeuvres()) {
       std::snprintf(flag, sizeof flag, "%.0f%%", 100.0 * t.within[k] / runs);
@@ -147,7 +147,7 @@ void printTrial(const sim::ManoeuvreTrial& c, const TrialStats& t, int runs) {
     const double rb = rmsWhere(t.pos[k], t.tS, before), rd = rmsWhere(t.pos[k], t.tS, during),
                  ra = rmsWhere(t.pos[k], t.tS, after);
     std::printf("  %-24s %8s %8s %8s %7.1f m %7.1f m %7.1f m %8.2f %8.2f %7.2f d %6.2f kn %7.2f d %6.2f kn\n",
-                sim::trackerName(static_cast<sim::TrackerKind>(k)), flag, delay, fa, rb, rd, ra,
+                studies::trackerName(static_cast<studies::TrackerKind>(k)), flag, delay, fa, rb, rd, ra,
                 rb / pcrbBefore, ra / pcrbAfter, radToDeg(p95At(t.crs[k], t.tS, end + 60.0)),
                 mpsToKnots(p95At(t.spd[k], t.tS, end + 60.0)), radToDeg(p95At(t.crs[k], t.tS, end + 180.0)),
                 mpsToKnots(p95At(t.spd[k], t.tS, end + 180.0)));
@@ -162,7 +162,7 @@ struct SonarStats {
   std::map<int, int> atN;
 };
 
-void addStraight(SonarStats& q, const std::vector<sim::Seed001TrackerSample>& samples) {
+void addStraight(SonarStats& q, const std::vector<studies::Seed001TrackerSample>& samples) {
   bool was = false;
   for (const auto& x : samples) {
     q.flags += x.manoeuvring && !was ? 1 : 0;
@@ -178,7 +178,7 @@ void addStraight(SonarStats& q, const std::vector<sim::Seed001TrackerSample>& sa
   }
 }
 
-void addTurning(SonarStats& q, const std::vector<sim::Seed001TrackerSample>& samples) {
+void addTurning(SonarStats& q, const std::vector<studies::Seed001TrackerSample>& samples) {
   bool flagged = false;
   for (const auto& x : samples) {
     flagged = flagged || (x.manoeuvring && x.tS >= 540.0 && x.index <= 9);
@@ -197,15 +197,15 @@ void addTurning(SonarStats& q, const std::vector<sim::Seed001TrackerSample>& sam
   q.byNinth += flagged ? 1 : 0;
 }
 
-std::array<SonarStats, sim::kTrackerKinds> runSonar(const sim::TrackerConfigs& cfg, int runs,
-                                                    std::uint64_t seed) {
-  sim::Seed001Scenario straight;
-  sim::Seed001Scenario turning;
-  turning.turn = sim::Seed001Scenario::Turn{};
-  std::array<SonarStats, sim::kTrackerKinds> acc;
+std::array<SonarStats, studies::kTrackerKinds> runSonar(const studies::TrackerConfigs& cfg, int runs,
+                                                        std::uint64_t seed) {
+  studies::Seed001Scenario straight;
+  studies::Seed001Scenario turning;
+  turning.turn = studies::Seed001Scenario::Turn{};
+  std::array<SonarStats, studies::kTrackerKinds> acc;
   for (int r = 0; r < runs; ++r) {
-    const auto s0 = sim::runSeed001Trackers(straight, cfg, seed + static_cast<std::uint64_t>(r)).trackers;
-    const auto s1 = sim::runSeed001Trackers(turning, cfg, seed + static_cast<std::uint64_t>(r)).trackers;
+    const auto s0 = studies::runSeed001Trackers(straight, cfg, seed + static_cast<std::uint64_t>(r)).trackers;
+    const auto s1 = studies::runSeed001Trackers(turning, cfg, seed + static_cast<std::uint64_t>(r)).trackers;
     for (std::size_t k = 0; k < acc.size(); ++k) {
       addStraight(acc[k], s0[k]);
       addTurning(acc[k], s1[k]);
@@ -216,7 +216,7 @@ std::array<SonarStats, sim::kTrackerKinds> runSonar(const sim::TrackerConfigs& c
 
 void printSonarRow(int k, const SonarStats& q, int runs) {
   const double n = static_cast<double>(std::max(1L, q.n));
-  const bool flags = k == sim::kEkfIe || k == sim::kImm;
+  const bool flags = k == studies::kEkfIe || k == studies::kImm;
   char by9[16], cell[3][24];
   std::snprintf(by9, sizeof by9, "%s", flags ? (std::to_string(100 * q.byNinth / runs) + "%").c_str() : "-");
   int c = 0;
@@ -230,14 +230,14 @@ void printSonarRow(int k, const SonarStats& q, int runs) {
   }
   const double nt = static_cast<double>(std::max(1L, q.nTurn));
   std::printf("  %-24s %7.2f %7.2f %7.2f %5.0f%% %7.1f %7.2f %5s | %6s %14s %14s %14s %7.1f %7.2f\n",
-              sim::trackerName(static_cast<sim::TrackerKind>(k)), q.range / n, q.crs / n, q.spd / n,
+              studies::trackerName(static_cast<studies::TrackerKind>(k)), q.range / n, q.crs / n, q.spd / n,
               100.0 * q.inside / n, std::sqrt(q.se / n), std::sqrt(q.se / q.bound2),
               flags ? std::to_string(static_cast<double>(q.flags) / runs).substr(0, 4).c_str() : "-", by9,
               cell[0], cell[1], cell[2], std::sqrt(q.seTurn / nt), std::sqrt(q.seTurn / q.bound2Turn));
 }
 
 void printSonar(int runs, std::uint64_t seed) {
-  const sim::TrackerConfigs cfg = sim::sonarTrackers();
+  const studies::TrackerConfigs cfg = studies::sonarTrackers();
   std::printf(
       "\nseed 001 sonar scenario, %d runs (pings every 10-80 s, 1 deg, 20 m; EKF s = 2, Pfa 0.01, q 1e-6; "
       "abg "
@@ -254,7 +254,7 @@ void printSonar(int runs, std::uint64_t seed) {
               "crs deg", "spd m/s", "inside", "RMSE m", "/PCRB", "flags", "by 9th", "crs/spd @10",
               "crs/spd @13", "crs/spd @20", "RMSE m", "/PCRB");
   const auto acc = runSonar(cfg, runs, seed);
-  for (int k = 0; k < sim::kTrackerKinds; ++k) printSonarRow(k, acc[static_cast<std::size_t>(k)], runs);
+  for (int k = 0; k < studies::kTrackerKinds; ++k) printSonarRow(k, acc[static_cast<std::size_t>(k)], runs);
 }
 
 // ---- the IMO A.823 scenarios through the ARPA tracks with each of the four filters ----------------
@@ -268,10 +268,10 @@ void printImoFilters(int imoRuns) {
     sim::Scenario sc = loadScenario(std::string("builtin:") + name);
     for (int k = 0; k < track::kTrackerKindCount; ++k) {
       sc.tracker.kind = static_cast<track::TrackerKind>(k);
-      const auto r = metrics::evaluateImo(sc, imoRuns, hardwareThreads(), sc.seed);
+      const auto r = studies::evaluateImo(sc, imoRuns, hardwareThreads(), sc.seed);
       std::printf("  %s %-7s", name, track::trackerKindName(sc.tracker.kind));
       for (const auto& row : r.rows) {
-        std::printf("  %s ", metrics::imoQuantityName(row.quantity));
+        std::printf("  %s ", studies::imoQuantityName(row.quantity));
         if (row.at1Min.required) std::printf("%.2f%s/", row.at1Min.p95, row.at1Min.pass ? "" : "*");
         std::printf("%.2f%s", row.at3Min.p95, !row.at3Min.required || row.at3Min.pass ? "" : "*");
       }
@@ -281,7 +281,7 @@ void printImoFilters(int imoRuns) {
 }
 
 int manoeuvreReport(const ManoeuvreArgs& a) {
-  const sim::ManoeuvreTrial base;
+  const studies::ManoeuvreTrial base;
   std::printf(
       "manoeuvre report: %d runs per case; radar every %.1f s, range sd %.0f m, bearing sd %.2f deg; target "
       "at 3 NM, 12 kn; manoeuvres from %.0f s (turns at 1 deg/s, speed at 0.1 m/s^2)\n",

@@ -133,9 +133,9 @@ int replayCommand(const ReplayArgs& a) {
   if (a.radar) radar = io::readTextFile(*a.radar);
   const sim::ReplayResult r = sim::replay(nmea, *a.nmea, radar ? &*radar : nullptr, a.radar.value_or(""), o);
   for (const auto& w : r.warnings) std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
-  io::writeReplayOwnShipCsv(out + "/ownship.csv", r);
-  if (radar) io::writeReplayTargetsCsv(out + "/targets.csv", r);
-  const std::string summary = io::replaySummaryJson(r, *a.nmea);
+  files::writeReplayOwnShipCsv(out + "/ownship.csv", r);
+  if (radar) files::writeReplayTargetsCsv(out + "/targets.csv", r);
+  const std::string summary = files::replaySummaryJson(r, *a.nmea);
   io::writeTextFile(out + "/summary.json", summary);
   printSummary(a.output, summary);
   if (wantsTable(a.output)) printReplay(r, a, out);

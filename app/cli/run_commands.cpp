@@ -62,12 +62,12 @@ struct RunArgs {
 };
 
 void printRun(const sim::Scenario& s, const sim::RunResult& run, std::uint64_t seed,
-              sim::OwnShipFilter filter, const std::vector<metrics::PhaseStats>& phases,
+              studies::OwnShipFilter filter, const std::vector<metrics::PhaseStats>& phases,
               const std::string& out) {
   const geo::LocalFrame frame(s.origin.latDeg, s.origin.lonDeg);
   std::printf("Reckoner dead-reckoning run: %s (seed %llu, own-ship filter %s%s)\n", s.name.c_str(),
-              static_cast<unsigned long long>(seed), sim::ownShipFilterName(filter),
-              filter == sim::OwnShipFilter::Drkf ? "" : "; NEES of position and velocity, 4 dof");
+              static_cast<unsigned long long>(seed), studies::ownShipFilterName(filter),
+              filter == studies::OwnShipFilter::Drkf ? "" : "; NEES of position and velocity, 4 dof");
   if (!s.description.empty()) std::printf("  %s\n", s.description.c_str());
   std::printf("  origin %s %s (UTM zone %d), %.0f s, %zu filter cycles in %.3f s wall time\n\n",
               io::formatLatitude(s.origin.latDeg).c_str(), io::formatLongitude(s.origin.lonDeg).c_str(),
@@ -88,23 +88,23 @@ int runCommand(const RunArgs& a) {
   if (a.scenario.empty()) throw UsageError("run needs exactly one SCENARIO");
   const sim::Scenario s = loadProfiled(a.scenario, a.profile);
   const std::uint64_t seed = a.seed.value_or(s.seed);
-  const sim::OwnShipFilter filter = *sim::ownShipFilterFromName(a.filter);
+  const studies::OwnShipFilter filter = *studies::ownShipFilterFromName(a.filter);
   const std::string out = prepareOutDir(a.output);
 
   // The DRKF always runs (it feeds the trackers); seed 002's filters beside it when chosen.
   sim::RunResult run;
-  if (filter == sim::OwnShipFilter::Drkf) {
+  if (filter == studies::OwnShipFilter::Drkf) {
     run = sim::runScenario(s, seed);
   } else {
-    sim::OwnShipFilterRun both = sim::runOwnShipFilters(s, seed);
+    studies::OwnShipFilterRun both = studies::runOwnShipFilters(s, seed);
     run = std::move(both.drkf);
     run.rows = std::move(both.rows[static_cast<std::size_t>(filter)]);
   }
   const auto phases = metrics::summarisePhases(metrics::derivePhases(s), run.rows);
-  io::writeOwnShipCsv(out + "/ownship.csv", run.rows);
-  const std::string summary = io::runSummaryJson(s, run, phases);
+  files::writeOwnShipCsv(out + "/ownship.csv", run.rows);
+  const std::string summary = files::runSummaryJson(s, run, phases);
   io::writeTextFile(out + "/summary.json", summary);
-  if (s.radar.fitted) io::writeTargetsCsv(out + "/targets.csv", run.trackRows);
+  if (s.radar.fitted) files::writeTargetsCsv(out + "/targets.csv", run.trackRows);
   printSummary(a.output, summary);
   if (wantsTable(a.output)) printRun(s, run, seed, filter, phases, out);
   return 0;
@@ -168,9 +168,9 @@ int monteCarloCommand(const MonteCarloRunArgs& a) {
   const auto results = sim::runMonteCarlo(s, *a.runs, threads, seed);
   const auto m = metrics::summariseMonteCarlo(s, results);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string summary = io::monteCarloSummaryJson(s, m, seed, threads, wall);
+  const std::string summary = files::monteCarloSummaryJson(s, m, seed, threads, wall);
   io::writeTextFile(out + "/summary.json", summary);
-  io::writeMonteCarloCsv(out + "/montecarlo.csv", m);
+  files::writeMonteCarloCsv(out + "/montecarlo.csv", m);
   printSummary(a.output, summary);
   if (wantsTable(a.output)) printMonteCarlo(s, m, seed, *a.runs, threads, wall, out);
   return 0;

@@ -24,7 +24,7 @@ int validate(const std::vector<std::string>& specs) {
 
 int listScenarios() {
   for (const auto& f : resources::scenarios()) {
-    const sim::Scenario s = io::parseScenario(f.text, "builtin:" + std::string(f.name));
+    const sim::Scenario s = files::parseScenario(f.text, "builtin:" + std::string(f.name));
     std::printf("builtin:%-24s %s\n", std::string(f.name).c_str(), s.name.c_str());
   }
   return 0;

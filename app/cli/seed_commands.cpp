@@ -30,7 +30,7 @@ struct Seed001Args {
 };
 
 void printSeed001(const Seed001Args& a, const track::InputEstimationConfig& cfg,
-                  const std::vector<sim::Seed001SampleStats>& stats) {
+                  const std::vector<studies::Seed001SampleStats>& stats) {
   std::printf(
       "seed 001: %d runs, bearing sd %.2f deg, range sd %.0f m, window %d, Pfa %.3g (threshold %.2f), q "
       "%.3g, "
@@ -53,14 +53,14 @@ int seed001Command(const Seed001Args& a) {
   using C = track::InputEstimationConfig::Correction;
   cfg.correction = a.correction == "none" ? C::None : a.correction == "paper" ? C::Paper : C::Refilter;
   cfg.paperInitialCovariance = a.init == "paper";
-  sim::Seed001Scenario sc;
-  if (a.turn) sc.turn = sim::Seed001Scenario::Turn{};
-  std::vector<std::vector<sim::Seed001Sample>> all;
+  studies::Seed001Scenario sc;
+  if (a.turn) sc.turn = studies::Seed001Scenario::Turn{};
+  std::vector<std::vector<studies::Seed001Sample>> all;
   for (int r = 0; r < a.runs; ++r)
-    all.push_back(sim::runSeed001(sc, cfg, a.seed + static_cast<std::uint64_t>(r)));
-  printSeed001(a, cfg, sim::summariseSeed001(all));
+    all.push_back(studies::runSeed001(sc, cfg, a.seed + static_cast<std::uint64_t>(r)));
+  printSeed001(a, cfg, studies::summariseSeed001(all));
   if (a.turn) {
-    const auto first = sim::firstDetections(all, sc.turn->startS);
+    const auto first = studies::firstDetections(all, sc.turn->startS);
     std::map<int, int> hist;
     for (int f : first) ++hist[f];
     std::printf("  first detection at or after 540 s, by sample (0: never):");
@@ -99,7 +99,7 @@ struct Seed003Args {
   int runs = 50;
   std::uint64_t seed = 1;
   track::AbgConfig cfg;
-  sim::Seed003Setup setup;
+  studies::Seed003Setup setup;
 };
 
 int seed003Command(const Seed003Args& a) {
@@ -112,16 +112,16 @@ int seed003Command(const Seed003Args& a) {
       "mean over %d runs\n",
       cfg.alpha, beta, gamma, setup.positions, setup.sweepS, setup.plotSdM, runs);
   std::printf("  %-26s %14s %14s %14s\n", "case", "observed 2drms", "smoothed 2drms", "predicted 2drms");
-  for (const auto c : {sim::Seed003Case::NoNoise, sim::Seed003Case::VaryingCourse,
-                       sim::Seed003Case::VaryingCourseAndSpeed}) {
-    sim::Seed003Result sum;
+  for (const auto c : {studies::Seed003Case::NoNoise, studies::Seed003Case::VaryingCourse,
+                       studies::Seed003Case::VaryingCourseAndSpeed}) {
+    studies::Seed003Result sum;
     for (int r = 0; r < runs; ++r) {
-      const auto one = sim::runSeed003(c, setup, cfg, a.seed + static_cast<std::uint64_t>(r));
+      const auto one = studies::runSeed003(c, setup, cfg, a.seed + static_cast<std::uint64_t>(r));
       sum.observed2drmsM += one.observed2drmsM / runs;
       sum.smoothed2drmsM += one.smoothed2drmsM / runs;
       sum.predicted2drmsM += one.predicted2drmsM / runs;
     }
-    std::printf("  %-26s %12.1f m %12.1f m %12.1f m\n", sim::seed003CaseName(c), sum.observed2drmsM,
+    std::printf("  %-26s %12.1f m %12.1f m %12.1f m\n", studies::seed003CaseName(c), sum.observed2drmsM,
                 sum.smoothed2drmsM, sum.predicted2drmsM);
   }
   return 0;

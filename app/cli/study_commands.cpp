@@ -43,7 +43,7 @@ std::vector<int> parseTargetCounts(const std::string& text) {
   return out;
 }
 
-std::string compareCsv(const std::vector<sim::ComparisonRow>& rows) {
+std::string compareCsv(const std::vector<studies::ComparisonRow>& rows) {
   std::string csv =
       "targets,coupled_states,runs,decoupled_rmse_position_m,coupled_rmse_position_m,decoupled_rmse_velocity_"
       "mps,"
@@ -63,7 +63,7 @@ std::string compareCsv(const std::vector<sim::ComparisonRow>& rows) {
   return csv;
 }
 
-void printCompare(const sim::Scenario& s, const std::vector<sim::ComparisonRow>& rows, int runs,
+void printCompare(const sim::Scenario& s, const std::vector<studies::ComparisonRow>& rows, int runs,
                   const std::string& out) {
   std::printf("Decoupled (DRKF + TTKF bank) vs coupled (11 + 6n states): %s, %d runs, known association\n",
               s.name.c_str(), runs);
@@ -86,7 +86,7 @@ int compareCommand(const CompareArgs& a) {
   const sim::Scenario s = loadScenario(a.scenario);
   const std::uint64_t seed = a.mc.seed.value_or(s.seed);
   const std::string out = prepareOutDir(a.output);
-  const auto rows = sim::compareCoupled(s, a.targets, a.mc.runs, a.mc.threadCount(), seed);
+  const auto rows = studies::compareCoupled(s, a.targets, a.mc.runs, a.mc.threadCount(), seed);
   io::writeTextFile(out + "/compare.csv", compareCsv(rows));
   if (wantsTable(a.output)) printCompare(s, rows, a.mc.runs, out);
   return 0;
@@ -116,9 +116,10 @@ int ownShipCompareCommand(const StudyArgs& a) {
   if (a.scenario.empty()) throw UsageError("own-ship-compare needs exactly one SCENARIO");
   const sim::Scenario s = loadScenario(a.scenario);
   const int runs = a.mc.runs;
-  const auto all = sim::runOwnShipFiltersMonteCarlo(s, runs, a.mc.threadCount(), a.mc.seed.value_or(s.seed));
+  const auto all =
+      studies::runOwnShipFiltersMonteCarlo(s, runs, a.mc.threadCount(), a.mc.seed.value_or(s.seed));
   const auto bounds = est::averageNeesBounds(4, runs);
-  const auto stats = sim::summariseOwnShipFilters(all, fromSeconds(60.0), bounds);
+  const auto stats = studies::summariseOwnShipFilters(all, fromSeconds(60.0), bounds);
   std::printf("own-ship filters on %s, %d runs: with GPS / without GPS (rows after the first 60 s)\n",
               s.name.c_str(), runs);
   std::printf(
@@ -127,11 +128,11 @@ int ownShipCompareCommand(const StudyArgs& a) {
       bounds.lower, bounds.upper);
   std::printf("  %-9s %21s %21s %17s %17s %21s\n", "filter", "pos RMSE m", "vel RMSE m/s", "mean NEES",
               "times in band", "p95 pos error m");
-  for (int k = 0; k < sim::kOwnShipFilterCount; ++k) {
+  for (int k = 0; k < studies::kOwnShipFilterCount; ++k) {
     const auto& on = stats[static_cast<std::size_t>(k)][0];
     const auto& off = stats[static_cast<std::size_t>(k)][1];
     std::printf("  %-9s %10.2f %10.2f %10.3f %10.3f %8.2f %8.2f %7.0f%% %7.0f%% %10.1f %10.1f\n",
-                sim::ownShipFilterName(static_cast<sim::OwnShipFilter>(k)), on.positionRmseM,
+                studies::ownShipFilterName(static_cast<studies::OwnShipFilter>(k)), on.positionRmseM,
                 off.positionRmseM, on.velocityRmseMps, off.velocityRmseMps, on.meanNees, off.meanNees,
                 100.0 * on.shareInBand, 100.0 * off.shareInBand, on.p95PositionErrorM, off.p95PositionErrorM);
   }
@@ -139,7 +140,7 @@ int ownShipCompareCommand(const StudyArgs& a) {
 }
 
 // ---- radar-fix -----------------------------------------------------------------------------------
-void printRadarFixStudy(const sim::RadarFixStudy& r, bool matching) {
+void printRadarFixStudy(const studies::RadarFixStudy& r, bool matching) {
   std::printf(
       "  %-22s without GPS: position p95 %7.1f m, RMS %7.1f m, heading p95 %6.3f deg, mean NEES (11) "
       "%6.2f\n",
@@ -176,8 +177,8 @@ int radarFixCommand(const StudyArgs& a) {
       "matching\n",
       s.name.c_str(), enc.c_str(), coast->segments().size(), a.mc.runs);
   for (const bool matching : {false, true})
-    printRadarFixStudy(sim::runRadarFixStudy(s, coast, land, matching, a.mc.runs, a.mc.threadCount(), seed),
-                       matching);
+    printRadarFixStudy(
+        studies::runRadarFixStudy(s, coast, land, matching, a.mc.runs, a.mc.threadCount(), seed), matching);
   return 0;
 }
 

@@ -11,7 +11,10 @@
 #include "io/json.h"
 #include "sim/simulation_engine.h"
 
-namespace reckoner::io {
+// The file formats are written with the codecs of io/: their names unqualified here.
+using namespace reckoner::io;
+
+namespace reckoner::files {
 
 std::string ownShipCsvHeader() {
   return "t_s,true_x_m,true_y_m,true_vx_mps,true_vy_mps,est_x_m,est_y_m,est_vx_mps,est_vy_mps,"
@@ -150,4 +153,4 @@ void writeMonteCarloCsv(const std::string& path, const metrics::MonteCarloSummar
   writeTextFile(path, text);
 }
 
-}  // namespace reckoner::io
+}  // namespace reckoner::files

@@ -7,7 +7,7 @@
 #include "metrics/own_ship_stats.h"
 #include "sim/scenario_run.h"
 
-namespace reckoner::io {
+namespace reckoner::files {
 
 /// The ownship.csv header line (without newline).
 std::string ownShipCsvHeader();
@@ -29,4 +29,4 @@ std::string monteCarloSummaryJson(const sim::Scenario& s, const metrics::MonteCa
 /// rms_sd_position_m.
 void writeMonteCarloCsv(const std::string& path, const metrics::MonteCarloSummary& m);
 
-}  // namespace reckoner::io
+}  // namespace reckoner::files

@@ -18,7 +18,10 @@
 #include "io/text_file.h"
 #include "sim/scenario_limits.h"
 
-namespace reckoner::io::scenario_detail {
+// The file formats are written with the codecs of io/: their names unqualified here.
+using namespace reckoner::io;
+
+namespace reckoner::files::scenario_detail {
 
 TimeUs timeField(Fields& f, std::string_view key, TimeUs durationUs) {
   const JsonValue& v = f.require(key);
@@ -99,4 +102,4 @@ SpeedlogMode speedlogMode(const Fields& f, const JsonValue& v, const std::string
   return valueOf(kSpeedlogModes, f, v, path);
 }
 
-}  // namespace reckoner::io::scenario_detail
+}  // namespace reckoner::files::scenario_detail

@@ -17,7 +17,7 @@
 #include "io/json.h"
 #include "sim/scenario.h"
 
-namespace reckoner::io::scenario_detail {
+namespace reckoner::files::scenario_detail {
 
 using sensors::SpeedlogMode;
 
@@ -30,21 +30,21 @@ inline std::string formatNumber(double v) {
 /// Reads one JSON object's fields, tracking which were used so that unknown ones are reported.
 class Fields {
  public:
-  Fields(const std::string& file, const JsonValue& v, std::string path)
+  Fields(const std::string& file, const io::JsonValue& v, std::string path)
       : file_(file), v_(v), path_(std::move(path)) {
     if (!v.isObject()) fail(v, path_, std::string("must be an object, got ") + typeName(v.type));
     used_.assign(v.object.size(), false);
   }
 
-  [[noreturn]] void fail(const JsonValue& at, const std::string& path, const std::string& msg) const {
-    throw InputError(file_, at.line, path, msg);
+  [[noreturn]] void fail(const io::JsonValue& at, const std::string& path, const std::string& msg) const {
+    throw io::InputError(file_, at.line, path, msg);
   }
   [[nodiscard]] std::string pathOf(std::string_view key) const {
     return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
   }
   [[nodiscard]] const std::string& file() const { return file_; }
 
-  const JsonValue* get(std::string_view key) {
+  const io::JsonValue* get(std::string_view key) {
     for (std::size_t i = 0; i < v_.object.size(); ++i) {
       if (v_.object[i].first == key) {
         used_[i] = true;
@@ -53,8 +53,8 @@ class Fields {
     }
     return nullptr;
   }
-  const JsonValue& require(std::string_view key) {
-    const JsonValue* v = get(key);
+  const io::JsonValue& require(std::string_view key) {
+    const io::JsonValue* v = get(key);
     if (!v) fail(v_, pathOf(key), "required field is missing");
     return *v;
   }
@@ -65,18 +65,18 @@ class Fields {
     return checkedNumber(require(key), pathOf(key), check);
   }
   double numberOr(std::string_view key, double fallback, Check check = Check::Any) {
-    const JsonValue* v = get(key);
+    const io::JsonValue* v = get(key);
     return v ? checkedNumber(*v, pathOf(key), check) : fallback;
   }
   /// An optional integer in [lo, hi].
   int integerOr(std::string_view key, int lo, int hi, int fallback) {
-    const JsonValue* c = get(key);
+    const io::JsonValue* c = get(key);
     if (!c) return fallback;
     if (!c->isNumber() || c->number < lo || c->number > hi || std::floor(c->number) != c->number)
       fail(*c, pathOf(key), "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return static_cast<int>(c->number);
   }
-  double checkedNumber(const JsonValue& v, const std::string& path, Check check) const {
+  double checkedNumber(const io::JsonValue& v, const std::string& path, Check check) const {
     if (!v.isNumber()) fail(v, path, std::string("must be a number, got ") + typeName(v.type));
     if (check == Check::Positive && !(v.number > 0.0))
       fail(v, path, "must be positive, got " + formatNumber(v.number));
@@ -85,17 +85,17 @@ class Fields {
     return v.number;
   }
   std::string stringOr(std::string_view key, std::string fallback) {
-    const JsonValue* v = get(key);
+    const io::JsonValue* v = get(key);
     if (!v) return fallback;
     if (!v->isString()) fail(*v, pathOf(key), std::string("must be a string, got ") + typeName(v->type));
     return v->string;
   }
-  bool boolean(const JsonValue& v, const std::string& path) const {
+  bool boolean(const io::JsonValue& v, const std::string& path) const {
     if (!v.isBool()) fail(v, path, std::string("must be true or false, got ") + typeName(v.type));
     return v.boolean;
   }
   std::array<double, 2> pair(std::string_view key, std::array<double, 2> fallback) {
-    const JsonValue* v = get(key);
+    const io::JsonValue* v = get(key);
     if (!v) return fallback;
     if (!v->isArray() || v->array.size() != 2)
       fail(*v, pathOf(key), "must be an array of two numbers [x, y]");
@@ -109,11 +109,11 @@ class Fields {
       if (!used_[i]) fail(v_.object[i].second, pathOf(v_.object[i].first), "unknown field");
   }
 
-  [[nodiscard]] const JsonValue& json() const { return v_; }
+  [[nodiscard]] const io::JsonValue& json() const { return v_; }
 
  private:
   const std::string& file_;
-  const JsonValue& v_;
+  const io::JsonValue& v_;
   std::string path_;
   std::vector<bool> used_;
 };
@@ -134,7 +134,7 @@ std::string_view nameOf(const std::array<NamedValue<E>, N>& table, E value) {
 
 /// The value spelled `v`, or a failure listing the spellings: must be "a" (meaning) or "b" (meaning).
 template <typename E, std::size_t N>
-E valueOf(const std::array<NamedValue<E>, N>& table, const Fields& f, const JsonValue& v,
+E valueOf(const std::array<NamedValue<E>, N>& table, const Fields& f, const io::JsonValue& v,
           const std::string& path) {
   if (v.isString())
     for (const auto& t : table)
@@ -163,11 +163,11 @@ inline constexpr std::array<NamedValue<track::Association>, 2> kAssociations{{
 /// A time of the run, in seconds in [0, duration_s] (compared in seconds: 1e13 s does not fit the
 /// microsecond clock).
 TimeUs timeField(Fields& f, std::string_view key, TimeUs durationUs);
-int lineOfPath(const JsonValue& root, std::string_view path);
+int lineOfPath(const io::JsonValue& root, std::string_view path);
 est::GaussMarkov gaussMarkov(Fields& f, std::string_view varianceKey, std::string_view sigmaKey);
 void readPowerSchedule(Fields& sensor, StepSchedule<bool>& power, TimeUs durationUs,
                        const std::function<void(Fields&, TimeUs)>& onMode = {});
-SpeedlogMode speedlogMode(const Fields& f, const JsonValue& v, const std::string& path);
+SpeedlogMode speedlogMode(const Fields& f, const io::JsonValue& v, const std::string& path);
 
 // The sections of a scenario file (scenario_read.cpp, scenario_read_tracking.cpp).
 void readSensors(Fields& top, sim::Scenario& s);
@@ -177,4 +177,4 @@ void readRadarMatching(Fields& top, sim::Scenario& s);
 void readTracker(Fields& top, sim::Scenario& s);
 void readFilter(Fields& top, sim::Scenario& s);
 
-}  // namespace reckoner::io::scenario_detail
+}  // namespace reckoner::files::scenario_detail

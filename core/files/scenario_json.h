@@ -8,14 +8,14 @@
 #include "io/text_file.h"
 #include "sim/scenario.h"
 
-namespace reckoner::io {
+namespace reckoner::files {
 
 inline constexpr std::string_view kScenarioFormat = "reckoner-scenario/1";
 
-/// Parses scenario JSON text; sourceName is used in error messages. Throws InputError.
+/// Parses scenario JSON text; sourceName is used in error messages. Throws io::InputError.
 sim::Scenario parseScenario(std::string_view text, const std::string& sourceName);
 
-/// Reads and parses a scenario file. Throws InputError (also for a missing or unreadable file).
+/// Reads and parses a scenario file. Throws io::InputError (also for a missing or unreadable file).
 sim::Scenario loadScenarioFile(const std::string& path);
 
 /// The scenario as JSON text in the same format, every value written so that parseScenario() gives it
@@ -23,7 +23,7 @@ sim::Scenario loadScenarioFile(const std::string& path);
 std::string writeScenario(const sim::Scenario& s);
 
 /// Writes writeScenario(s) to path (through a temporary file, so a failed write leaves the old file).
-/// Throws InputError naming the file.
+/// Throws io::InputError naming the file.
 void saveScenarioFile(const sim::Scenario& s, const std::string& path);
 
-}  // namespace reckoner::io
+}  // namespace reckoner::files

@@ -21,7 +21,10 @@
 #include "io/text_file.h"
 #include "sim/scenario_limits.h"
 
-namespace reckoner::io {
+// The file formats are written with the codecs of io/: their names unqualified here.
+using namespace reckoner::io;
+
+namespace reckoner::files {
 namespace scenario_detail {
 
 namespace {
@@ -338,4 +341,4 @@ sim::Scenario loadScenarioFile(const std::string& path) {
   return parseScenario(readTextFile(path), path);
 }
 
-}  // namespace reckoner::io
+}  // namespace reckoner::files

@@ -18,7 +18,10 @@
 #include "io/text_file.h"
 #include "sim/scenario_limits.h"
 
-namespace reckoner::io::scenario_detail {
+// The file formats are written with the codecs of io/: their names unqualified here.
+using namespace reckoner::io;
+
+namespace reckoner::files::scenario_detail {
 
 void readRadarMatching(Fields& top, sim::Scenario& s) {
   const JsonValue* v = top.get("radar_matching");
@@ -272,4 +275,4 @@ void readFilter(Fields& top, sim::Scenario& s) {
   f.finish();
 }
 
-}  // namespace reckoner::io::scenario_detail
+}  // namespace reckoner::files::scenario_detail

@@ -19,7 +19,10 @@
 #include "io/text_file.h"
 #include "sim/scenario_limits.h"
 
-namespace reckoner::io {
+// The file formats are written with the codecs of io/: their names unqualified here.
+using namespace reckoner::io;
+
+namespace reckoner::files {
 namespace {
 
 using sensors::SpeedlogMode;
@@ -369,4 +372,4 @@ void saveScenarioFile(const sim::Scenario& s, const std::string& path) {
   }
 }
 
-}  // namespace reckoner::io
+}  // namespace reckoner::files

@@ -9,7 +9,10 @@
 #include "common/angles.h"
 #include "files/own_ship_output.h"
 
-namespace reckoner::io {
+// The file formats are written with the codecs of io/: their names unqualified here.
+using namespace reckoner::io;
+
+namespace reckoner::files {
 namespace {
 void appendNumber(std::string& s, double v, const char* fmt) {
   s += ',';
@@ -306,4 +309,4 @@ void writeTrackingSummary(JsonWriter& w, const metrics::TrackingStats& s, const 
   w.endObject();
 }
 
-}  // namespace reckoner::io
+}  // namespace reckoner::files

@@ -8,7 +8,7 @@
 #include "sim/replay.h"
 #include "sim/scenario_run.h"
 
-namespace reckoner::io {
+namespace reckoner::files {
 
 /// The targets.csv header line (without newline).
 std::string targetsCsvHeader();
@@ -24,6 +24,6 @@ void writeReplayTargetsCsv(const std::string& path, const sim::ReplayResult& r);
 std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nmeaName);
 
 /// Writes the "tracking" object (key included) of a run summary.
-void writeTrackingSummary(JsonWriter& w, const metrics::TrackingStats& s, const track::TrackCounters& c);
+void writeTrackingSummary(io::JsonWriter& w, const metrics::TrackingStats& s, const track::TrackCounters& c);
 
-}  // namespace reckoner::io
+}  // namespace reckoner::files

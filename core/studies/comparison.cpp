@@ -13,7 +13,10 @@
 #include "tracking/coupled_drttkf.h"
 #include "tracking/track_manager.h"
 
-namespace reckoner::sim {
+// The studies drive the engine and score its runs: the engine's names unqualified here.
+using namespace reckoner::sim;
+
+namespace reckoner::studies {
 namespace {
 namespace tk = est::ttkf;
 using Clock = std::chrono::steady_clock;
@@ -283,4 +286,4 @@ std::vector<ComparisonRow> compareCoupled(const Scenario& s, const std::vector<i
   return rows;
 }
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

@@ -6,7 +6,7 @@
 
 #include "sim/scenario.h"
 
-namespace reckoner::sim {
+namespace reckoner::studies {
 
 struct ComparisonRow {
   int targets = 0;
@@ -28,11 +28,11 @@ struct ComparisonRow {
 
 /// The scenario with exactly n targets: its own first, then copies of them turned about own ship's
 /// start by multiples of 360/k degrees (course and position), with fresh ids.
-Scenario withTargetCount(const Scenario& s, int n);
+sim::Scenario withTargetCount(const sim::Scenario& s, int n);
 
 /// For each n: `runs` seeds of withTargetCount(s, n), known association (the paper's assumption).
 /// Throws std::invalid_argument if the scenario has no radar or no targets.
-std::vector<ComparisonRow> compareCoupled(const Scenario& s, const std::vector<int>& targetCounts, int runs,
-                                          int threads, std::uint64_t seed);
+std::vector<ComparisonRow> compareCoupled(const sim::Scenario& s, const std::vector<int>& targetCounts,
+                                          int runs, int threads, std::uint64_t seed);
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

@@ -13,7 +13,10 @@
 #include "sim/scenario_run.h"
 #include "sim/simulation_engine.h"
 
-namespace reckoner::metrics {
+// The studies drive the engine and score its runs: the engine's names unqualified here.
+using namespace reckoner::sim;
+
+namespace reckoner::studies {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 using Errors = std::array<double, kImoQuantityCount>;
@@ -169,4 +172,4 @@ ImoResult evaluateImo(const sim::Scenario& scenario, int runs, int threads, std:
   return r;
 }
 
-}  // namespace reckoner::metrics
+}  // namespace reckoner::studies

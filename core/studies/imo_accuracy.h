@@ -8,7 +8,7 @@
 
 #include "sim/scenario.h"
 
-namespace reckoner::metrics {
+namespace reckoner::studies {
 
 enum class ImoQuantity : std::uint8_t { RelativeCourse, RelativeSpeed, Cpa, Tcpa, TrueCourse, TrueSpeed };
 inline constexpr int kImoQuantityCount = 6;
@@ -42,4 +42,4 @@ struct ImoResult {
 /// std::invalid_argument if the scenario has no target or no radar.
 ImoResult evaluateImo(const sim::Scenario& scenario, int runs, int threads, std::uint64_t seed);
 
-}  // namespace reckoner::metrics
+}  // namespace reckoner::studies

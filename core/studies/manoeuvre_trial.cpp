@@ -9,7 +9,10 @@
 #include "estimation/pcrb.h"
 #include "sim/vessel_motion.h"
 
-namespace reckoner::sim {
+// The studies drive the engine and score its runs: the engine's names unqualified here.
+using namespace reckoner::sim;
+
+namespace reckoner::studies {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }
@@ -250,4 +253,4 @@ Seed001TrackerRun runSeed001Trackers(const Seed001Scenario& s, const TrackerConf
   return out;
 }
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

@@ -18,7 +18,7 @@
 #include "tracking/imm.h"
 #include "tracking/input_estimation.h"
 
-namespace reckoner::sim {
+namespace reckoner::studies {
 
 struct ManoeuvreTrial {
   double sweepS = 2.0;
@@ -91,4 +91,4 @@ struct Seed001TrackerRun {
 Seed001TrackerRun runSeed001Trackers(const Seed001Scenario& s, const TrackerConfigs& configs,
                                      std::uint64_t seed);
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

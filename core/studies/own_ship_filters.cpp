@@ -9,7 +9,10 @@
 #include "common/percentile.h"
 #include "estimation/ekf.h"
 
-namespace reckoner::sim {
+// The studies drive the engine and score its runs: the engine's names unqualified here.
+using namespace reckoner::sim;
+
+namespace reckoner::studies {
 const char* ownShipFilterName(OwnShipFilter f) {
   switch (f) {
     case OwnShipFilter::Drkf:
@@ -169,4 +172,4 @@ OwnShipFilterStats summariseOwnShipFilters(const std::vector<OwnShipFilterRun>& 
   return out;
 }
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

@@ -14,7 +14,7 @@
 #include "navigation/lsq_fusion.h"
 #include "sim/scenario_run.h"
 
-namespace reckoner::sim {
+namespace reckoner::studies {
 
 enum class OwnShipFilter : std::uint8_t { Drkf, Geodetic, Lsq };
 inline constexpr int kOwnShipFilterCount = 3;
@@ -25,9 +25,10 @@ std::optional<OwnShipFilter> ownShipFilterFromName(std::string_view name);
 class Seed002Filters {
  public:
   /// Both start from the DRKF's initial estimate, with the process noise described below.
-  Seed002Filters(const Scenario& scenario, const est::drkf::Belief& drkfStart, const geo::LocalFrame& frame);
+  Seed002Filters(const sim::Scenario& scenario, const est::drkf::Belief& drkfStart,
+                 const geo::LocalFrame& frame);
   /// The frame's samples, epoch by epoch; both filters are then at the frame's time.
-  void feed(const SimFrame& frame);
+  void feed(const sim::SimFrame& frame);
   /// [x, y, vx, vy] over ground in the grid frame with covariance (Drkf: not handled here).
   [[nodiscard]] est::Gaussian<4> ground(OwnShipFilter f) const;
   [[nodiscard]] int geodeticRowsApplied() const { return geodeticRows_; }
@@ -41,18 +42,18 @@ class Seed002Filters {
 };
 
 struct OwnShipFilterRun {
-  std::array<std::vector<OwnShipRow>, kOwnShipFilterCount> rows;  ///< nees: 4 dof, position and velocity
-  RunResult drkf;  ///< the DRKF run as sim::runScenario gives it (tracks included)
+  std::array<std::vector<sim::OwnShipRow>, kOwnShipFilterCount> rows;  ///< nees: 4 dof, position and velocity
+  sim::RunResult drkf;  ///< the DRKF run as sim::runScenario gives it (tracks included)
 };
 
 /// The scenario with one seed; the seed 002 filters start from the DRKF's initial estimate and take
 /// their process noise from the scenario's filter model: white acceleration of density
 /// q = 2 e^-1 sigma^2 / beta, which gives the Gauss-Markov acceleration's velocity change over its
 /// correlation time 1 / beta (docs/seed002.md).
-OwnShipFilterRun runOwnShipFilters(const Scenario& scenario, std::uint64_t seed);
+OwnShipFilterRun runOwnShipFilters(const sim::Scenario& scenario, std::uint64_t seed);
 /// Seeds baseSeed, baseSeed + 1, ... on `threads` threads, in seed order.
-std::vector<OwnShipFilterRun> runOwnShipFiltersMonteCarlo(const Scenario& scenario, int runs, int threads,
-                                                          std::uint64_t baseSeed);
+std::vector<OwnShipFilterRun> runOwnShipFiltersMonteCarlo(const sim::Scenario& scenario, int runs,
+                                                          int threads, std::uint64_t baseSeed);
 
 /// Per filter and phase (0: GPS on, 1: GPS off), over the rows from `fromUs` on.
 struct OwnShipPhaseStats {
@@ -66,4 +67,4 @@ using OwnShipFilterStats = std::array<std::array<OwnShipPhaseStats, 2>, kOwnShip
 OwnShipFilterStats summariseOwnShipFilters(const std::vector<OwnShipFilterRun>& runs, TimeUs fromUs,
                                            const est::ChiSquareBounds& band);
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

@@ -11,7 +11,10 @@
 #include "sim/scenario_run.h"
 #include "sim/simulation_engine.h"
 
-namespace reckoner::sim {
+// The studies drive the engine and score its runs: the engine's names unqualified here.
+using namespace reckoner::sim;
+
+namespace reckoner::studies {
 
 namespace {
 struct RunOut {
@@ -114,4 +117,4 @@ RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const r
   return s;
 }
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

@@ -12,7 +12,7 @@
 #include "sim/scenario.h"
 #include "sim/simulation_engine.h"
 
-namespace reckoner::sim {
+namespace reckoner::studies {
 
 struct RadarFixStudy {
   int runs = 0;
@@ -36,8 +36,8 @@ struct RadarFixStudy {
 };
 
 /// `runs` runs (seeds seed, seed + 1, ...) on `threads` threads, with radar matching on or off.
-RadarFixStudy runRadarFixStudy(const Scenario& scenario, std::shared_ptr<const radar::Coastline> coast,
+RadarFixStudy runRadarFixStudy(const sim::Scenario& scenario, std::shared_ptr<const radar::Coastline> coast,
                                std::shared_ptr<const radar::LandMask> land, bool matching, int runs,
                                int threads, std::uint64_t seed);
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

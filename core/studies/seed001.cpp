@@ -6,7 +6,7 @@
 #include "common/angles.h"
 #include "common/rng.h"
 
-namespace reckoner::sim {
+namespace reckoner::studies {
 namespace {
 
 struct Kinematics {
@@ -165,4 +165,4 @@ std::vector<int> firstDetections(const std::vector<std::vector<Seed001Sample>>& 
   return out;
 }
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

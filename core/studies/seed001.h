@@ -12,7 +12,7 @@
 #include "common/units.h"
 #include "tracking/input_estimation.h"
 
-namespace reckoner::sim {
+namespace reckoner::studies {
 
 struct Seed001Scenario {
   double observerCourseRad = 1.1344640137963142;  ///< 065 deg
@@ -82,4 +82,4 @@ std::vector<Seed001SampleStats> summariseSeed001(const std::vector<std::vector<S
 /// The first sample at which each run declared a manoeuvre at or after fromS (0 when it never did).
 std::vector<int> firstDetections(const std::vector<std::vector<Seed001Sample>>& runs, double fromS);
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

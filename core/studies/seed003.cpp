@@ -8,7 +8,10 @@
 #include "common/rng.h"
 #include "sim/vessel_motion.h"
 
-namespace reckoner::sim {
+// The studies drive the engine and score its runs: the engine's names unqualified here.
+using namespace reckoner::sim;
+
+namespace reckoner::studies {
 
 const char* seed003CaseName(Seed003Case c) {
   switch (c) {
@@ -68,4 +71,4 @@ Seed003Result runSeed003(Seed003Case c, const Seed003Setup& s, const track::AbgC
   return r;
 }
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

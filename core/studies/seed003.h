@@ -9,7 +9,7 @@
 #include "common/units.h"
 #include "tracking/alpha_beta_gamma.h"
 
-namespace reckoner::sim {
+namespace reckoner::studies {
 
 enum class Seed003Case { NoNoise, VaryingCourse, VaryingCourseAndSpeed };
 const char* seed003CaseName(Seed003Case c);
@@ -33,4 +33,4 @@ struct Seed003Result {
 Seed003Result runSeed003(Seed003Case c, const Seed003Setup& setup, const track::AbgConfig& filter,
                          std::uint64_t seed);
 
-}  // namespace reckoner::sim
+}  // namespace reckoner::studies

@@ -272,7 +272,7 @@ BENCHMARK(BM_RadarSweep)
 /// One simulated hour at 1 Hz: truth, four sensors, DRKF and output rows (with geodetic conversion).
 void BM_OneHourRun(benchmark::State& state) {
   sim::Scenario s =
-      io::parseScenario(resources::findScenario("matched-model")->text, "builtin:matched-model");
+      files::parseScenario(resources::findScenario("matched-model")->text, "builtin:matched-model");
   s.durationUs = 3600 * kMicrosPerSecond;
   for (auto _ : state) {
     auto r = sim::runScenario(s, 1);
@@ -340,7 +340,8 @@ BENCHMARK(BM_PanFromCache)->Unit(benchmark::kMillisecond);
 // overlay/table repaint (<= 30 Hz) and per plot refresh (2 Hz), as percentiles over 10 s of wall
 // time after a 1 s warm-up; and whether the simulation worker keeps up with the rate.
 void BM_EcdisWindow100x40Targets(benchmark::State& state) {
-  sim::Scenario s = io::parseScenario(resources::findScenario(resources::kDefaultScenario)->text, "default");
+  sim::Scenario s =
+      files::parseScenario(resources::findScenario(resources::kDefaultScenario)->text, "default");
   Rng rng(42, 1);
   const auto own = s.ownShip.initialPosition;
   for (int id = 4; s.targets.size() < 40; ++id) {

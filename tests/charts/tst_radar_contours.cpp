@@ -58,13 +58,13 @@ Outcome matchAt(const std::vector<charts::CellPtr>& cells, double latDeg, double
 
 namespace {
 void checkOutageStudy(const sim::Scenario& base, const std::vector<charts::CellPtr>& cells, const char* name,
-                      sim::RadarFixStudy* result = nullptr) {
+                      studies::RadarFixStudy* result = nullptr) {
   const geo::LocalFrame frame(base.origin.latDeg, base.origin.lonDeg);
   const auto coast =
       std::make_shared<const radar::Coastline>(charts::radarContours(cells, frame, {0, 0}, 100000.0));
   const auto land = std::make_shared<const radar::LandMask>(charts::landMask(cells, frame, {0, 0}, 100000.0));
-  const auto dr = sim::runRadarFixStudy(base, coast, land, false, 4, 2, 1);
-  const auto m = sim::runRadarFixStudy(base, coast, land, true, 4, 2, 1);
+  const auto dr = studies::runRadarFixStudy(base, coast, land, false, 4, 2, 1);
+  const auto m = studies::runRadarFixStudy(base, coast, land, true, 4, 2, 1);
   qInfo(
       "%s, p95 position error without GPS: dead reckoning %.1f m, with radar matching %.1f m (%ld pictures, "
       "%ld fixes applied); heading p95 %.3f deg (fixes %.3f deg); NEES DRKF %.2f of 11, fixes %.2f of 3",
@@ -109,7 +109,7 @@ class TestRadarContours : public QObject {
     // (50 runs and the open questions: docs/radar_matching.md.)
     const auto cell = charts::loadCell(std::string(charts::kDefaultChartPath));
     const sim::Scenario base =
-        io::parseScenario(resources::findScenario("radar-fix")->text, "builtin:radar-fix");
+        files::parseScenario(resources::findScenario("radar-fix")->text, "builtin:radar-fix");
     checkOutageStudy(base, {cell}, "RK5SOUND");
   }
   void vesselsAlongsideTheShoreAreRejected() {
@@ -117,10 +117,10 @@ class TestRadarContours : public QObject {
     // WHEN 4 runs are matched THEN at least 95% of the echo points from vessels, clutter and noise are
     // rejected, and the outage study still holds.
     const auto cell = charts::loadCell(std::string(charts::kDefaultChartPath));
-    const sim::Scenario base = io::parseScenario(resources::findScenario("radar-fix-busy-shore")->text,
-                                                 "builtin:radar-fix-busy-shore");
+    const sim::Scenario base = files::parseScenario(resources::findScenario("radar-fix-busy-shore")->text,
+                                                    "builtin:radar-fix-busy-shore");
     QCOMPARE(base.targets.size(), std::size_t{23});
-    sim::RadarFixStudy m;
+    studies::RadarFixStudy m;
     checkOutageStudy(base, {cell}, "RK5SOUND with 20 vessels alongside", &m);
     if (QTest::currentTestFailed()) return;
     qInfo("echo points from vessels %ld, from clutter and noise %ld; %ld used: %.1f%% rejected",
@@ -133,7 +133,8 @@ class TestRadarContours : public QObject {
     // switches matching on at 400 s THEN there is a picture at every sweep, the display pictures leave
     // the run as it was without them, fixes start at 400 s, and the saved scenario replays the switch.
     const auto cell = charts::loadCell(std::string(charts::kDefaultChartPath));
-    sim::Scenario base = io::parseScenario(resources::findScenario("radar-fix")->text, "builtin:radar-fix");
+    sim::Scenario base =
+        files::parseScenario(resources::findScenario("radar-fix")->text, "builtin:radar-fix");
     base.radarMatching.active = StepSchedule<bool>(false);
     const geo::LocalFrame frame(base.origin.latDeg, base.origin.lonDeg);
     const auto coast =
@@ -168,7 +169,7 @@ class TestRadarContours : public QObject {
     QVERIFY(firstC >= fromSeconds(400.0) && firstC <= fromSeconds(408.0));
     sim::Scenario reread;
     try {
-      reread = io::parseScenario(io::writeScenario(recorded), "saved");
+      reread = files::parseScenario(files::writeScenario(recorded), "saved");
     } catch (const std::exception& ex) {
       QFAIL(ex.what());
     }
@@ -186,7 +187,7 @@ class TestRadarContours : public QObject {
     const std::string path = std::string(RECKONER_SHARED_DIR) + "/data/enc/US5WA22M";
     if (!std::filesystem::exists(path)) QSKIP("../shared/data/enc/US5WA22M is not present");
     const sim::Scenario base =
-        io::parseScenario(resources::findScenario("radar-fix-tacoma")->text, "builtin:radar-fix-tacoma");
+        files::parseScenario(resources::findScenario("radar-fix-tacoma")->text, "builtin:radar-fix-tacoma");
     checkOutageStudy(base, charts::loadCharts({path}).cells, "US5WA22M");
   }
   void landOfTheCharts() {

@@ -16,7 +16,7 @@ sim::Scenario builtinScenario(const std::string& name) {
     std::fprintf(stderr, "test support: no built-in scenario '%s'\n", name.c_str());
     std::abort();
   }
-  return io::parseScenario(f->text, "builtin:" + name);
+  return files::parseScenario(f->text, "builtin:" + name);
 }
 
 est::drkf::ProcessParams tableOneProcess() {

@@ -45,7 +45,7 @@ class TestMainWindow : public QObject {
     MainWindow w(freshOptions());
     showAndWait(w);
     const auto* def = resources::findScenario(resources::kDefaultScenario);
-    const sim::Scenario expected = io::parseScenario(def->text, "default");
+    const sim::Scenario expected = files::parseScenario(def->text, "default");
     QCOMPARE(w.controller()->scenario().name, expected.name);
     QCOMPARE(w.controller()->scenario().targets.size(), std::size_t(3));
     QCOMPARE(w.chart()->cells().front()->info().name, std::string(resources::kDefaultChart));
@@ -292,7 +292,7 @@ class TestMainWindow : public QObject {
     QTemporaryDir dir;
     const QString path = dir.filePath("imm.json");
     QVERIFY(w.saveScenario(path));
-    const sim::Scenario reread = io::loadScenarioFile(path.toStdString());
+    const sim::Scenario reread = files::loadScenarioFile(path.toStdString());
     QCOMPARE(reread.tracker.kindChanges.size(), std::size_t(1));
     QCOMPARE(reread.tracker.kindChanges[0].second, track::TrackerKind::Imm);
     RK_COMPARE_NEAR(toSeconds(reread.tracker.kindChanges[0].first), 20.0, 1.01);
@@ -396,10 +396,10 @@ class TestMainWindow : public QObject {
     const QString path = dir.filePath("mismatched.json");
     const auto* def = resources::findScenario(resources::kDefaultScenario);
     QVERIFY(def);
-    sim::Scenario sc = io::parseScenario(def->text, "default");
+    sim::Scenario sc = files::parseScenario(def->text, "default");
     sc.ownShip.randomAcceleration = est::GaussMarkov{0.5, 1.0};
     sc.filter.acceleration = {0.005, 1.0};
-    io::saveScenarioFile(sc, path.toStdString());
+    files::saveScenarioFile(sc, path.toStdString());
     MainWindow w(freshOptions());
     showAndWait(w);
     runUntil(w, 200.0);
@@ -437,7 +437,7 @@ class TestMainWindow : public QObject {
       QVERIFY(w.saveScenario(path));
       first = w.history().own();
     }
-    const sim::Scenario reread = io::loadScenarioFile(path.toStdString());
+    const sim::Scenario reread = files::loadScenarioFile(path.toStdString());
     QCOMPARE(reread.targets.size(), std::size_t(4));
     MainWindow w(freshOptions());
     w.resize(1400, 900);

@@ -99,8 +99,8 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
   stopAtS_.reset();
   try {
     engine_ = std::make_unique<sim::SimulationEngine>(scenario, scenario.seed);
-    seed002_ = std::make_unique<sim::Seed002Filters>(engine_->scenario(), engine_->drkf().belief(),
-                                                     engine_->frame());
+    seed002_ = std::make_unique<studies::Seed002Filters>(engine_->scenario(), engine_->drkf().belief(),
+                                                         engine_->frame());
   } catch (const std::exception& e) {
     emit failed(QString::fromStdString(std::string("cannot start the scenario: ") + e.what()));
     return;
@@ -212,8 +212,8 @@ void SimulationWorker::absorb(sim::SimFrame&& f) {
   pending_.error95M = pending_.ownHistory.back().error95M;
   if (seed002_) {
     seed002_->feed(f);
-    pending_.seed002 = std::array<est::Gaussian<4>, 2>{seed002_->ground(sim::OwnShipFilter::Geodetic),
-                                                       seed002_->ground(sim::OwnShipFilter::Lsq)};
+    pending_.seed002 = std::array<est::Gaussian<4>, 2>{seed002_->ground(studies::OwnShipFilter::Geodetic),
+                                                       seed002_->ground(studies::OwnShipFilter::Lsq)};
   }
   for (const auto& sweep : f.sweeps) {
     ++sweepCounter_;

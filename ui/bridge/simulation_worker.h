@@ -82,7 +82,7 @@ class SimulationWorker : public QObject {
   void applyCharts();
 
   std::unique_ptr<sim::SimulationEngine> engine_;
-  std::unique_ptr<sim::Seed002Filters> seed002_;  ///< beside the DRKF, on the same samples (display)
+  std::unique_ptr<studies::Seed002Filters> seed002_;  ///< beside the DRKF, on the same samples (display)
   QTimer* timer_ = nullptr;
   QElapsedTimer wall_;
   qint64 lastTickNs_ = 0;

@@ -40,7 +40,7 @@ class TestScenarioJson : public QObject {
   Q_OBJECT
  private slots:
   void readsEveryField() {
-    const sim::Scenario s = io::parseScenario(kValid, "t.json");
+    const sim::Scenario s = files::parseScenario(kValid, "t.json");
     QCOMPARE(s.name, std::string("t"));
     QCOMPARE(s.durationUs, 100 * kMicrosPerSecond);
     RK_COMPARE_NEAR(s.current.sigma, std::sqrt(0.3), 1e-15);
@@ -58,7 +58,7 @@ class TestScenarioJson : public QObject {
     QVERIFY(resources::scenarios().size() >= 7);
     QVERIFY(resources::findScenario(resources::kDefaultScenario) != nullptr);
     for (const auto& f : resources::scenarios()) {
-      const sim::Scenario s = io::parseScenario(f.text, std::string(f.name));
+      const sim::Scenario s = files::parseScenario(f.text, std::string(f.name));
       QVERIFY2(sim::checkScenario(s).empty(), f.name.data());
     }
   }
@@ -118,7 +118,7 @@ class TestScenarioJson : public QObject {
     QFETCH(QString, text);
     QFETCH(QString, expected);
     try {
-      io::parseScenario(text.toStdString(), "t.json");
+      files::parseScenario(text.toStdString(), "t.json");
       QFAIL("accepted a bad scenario");
     } catch (const io::InputError& e) {
       const QString msg = QString::fromStdString(e.what());
@@ -136,7 +136,7 @@ class TestScenarioJson : public QObject {
   "tracker": {"own_acceleration": {"sigma_mps2": 0.1, "beta_per_s": 0.2},
               "target_acceleration": {"variance_m2_s4": 0.005, "beta_per_s": 0.1},
               "own_ship_feed": "measurement", "capacity": 50)");
-    const sim::Scenario s = io::parseScenario(text, "t.json");
+    const sim::Scenario s = files::parseScenario(text, "t.json");
     QVERIFY(s.radar.fitted);
     QCOMPARE(s.radar.rangeSdM, 20.0);
     RK_COMPARE_NEAR(s.radar.maxRangeM, 12 * 1852.0, 1e-9);
@@ -159,7 +159,7 @@ class TestScenarioJson : public QObject {
   "tracker": {"association": "known", "confirm": {"hits": 2, "of_sweeps": 3}, "keep": {"hits": 4, "of_sweeps": 8},
               "auto_acquire": false, "lost_hold_s": 30, "danger_cpa_nm": 0.5, "danger_tcpa_min": 6,
               "acquisition_zones": [{"min_range_nm": 0.5, "max_range_nm": 6, "from_bearing_deg": 270, "to_bearing_deg": 90}])");
-    const sim::Scenario s = io::parseScenario(text, "t.json");
+    const sim::Scenario s = files::parseScenario(text, "t.json");
     QCOMPARE(s.radar.rangeSdM, 20.0);
     RK_COMPARE_NEAR(radToDeg(s.radar.bearingSdRad), std::hypot(0.05, 0.03), 1e-12);
     RK_COMPARE_NEAR(radToDeg(s.radar.bearingBacklashRad), 0.05, 1e-12);
@@ -192,7 +192,7 @@ class TestScenarioJson : public QObject {
           std::pair{R"("radar": {"error_budget": "a823", "min_range_m": 50000, "max_range_nm": 12})",
                     "sensors.radar.min_range_m: must be below max_range_nm"}}) {
       try {
-        io::parseScenario(
+        files::parseScenario(
             variant("\"gyro\": {\"sd_deg\": 1}", std::string("\"gyro\": {\"sd_deg\": 1}, ") + radar),
             "t.json");
         QFAIL(radar);
@@ -246,7 +246,7 @@ class TestScenarioJson : public QObject {
   void readsTheTrackerKind() {
     // "filter" chooses; "input_estimation" alone means ekf-ie (files written before the choice).
     const auto withTracker = [](const std::string& tracker) {
-      return io::parseScenario(
+      return files::parseScenario(
           variant("\"duration_s\": 100,", "\"duration_s\": 100,\n  \"tracker\": " + tracker + ","), "t.json");
     };
     QCOMPARE(withTracker("{}").tracker.kind, track::TrackerKind::Ekf);
@@ -260,7 +260,7 @@ class TestScenarioJson : public QObject {
     QCOMPARE(s.tracker.abg.alpha, 0.2);
     QVERIFY(!s.tracker.abg.expandingStart);
     // Written and read back unchanged.
-    const auto back = io::parseScenario(io::writeScenario(s), "back.json");
+    const auto back = files::parseScenario(files::writeScenario(s), "back.json");
     QCOMPARE(back.tracker.kind, s.tracker.kind);
     QCOMPARE(back.tracker.imm.ctSojournS, 30.0);
     QCOMPARE(back.tracker.imm.ctTurnQ, s.tracker.imm.ctTurnQ);
@@ -273,7 +273,7 @@ class TestScenarioJson : public QObject {
     const std::string text =
         variant("\"duration_s\": 100,", "\"duration_s\": 100,\n  " + insert.toStdString());
     try {
-      io::parseScenario(text, "t.json");
+      files::parseScenario(text, "t.json");
       QFAIL("accepted a bad scenario");
     } catch (const io::InputError& e) {
       QVERIFY2(QString(e.what()).contains(expected), e.what());
@@ -281,7 +281,7 @@ class TestScenarioJson : public QObject {
   }
   void missingFileIsNamed() {
     try {
-      io::loadScenarioFile("/nonexistent/dir/s.json");
+      files::loadScenarioFile("/nonexistent/dir/s.json");
       QFAIL("opened a missing file");
     } catch (const io::InputError& e) {
       QCOMPARE(QString(e.what()), QString("/nonexistent/dir/s.json: cannot open: No such file or directory"));

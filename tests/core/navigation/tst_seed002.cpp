@@ -103,18 +103,18 @@ class TestSeed002 : public QObject {
     // inside the 95% band in both phases with at least 80% of the times inside, and their position
     // errors are within 10% of the DRKF's.
     const sim::Scenario s = test::builtinScenario("seed002-matched");
-    const auto runs = sim::runOwnShipFiltersMonteCarlo(s, 50, 2, 1);
+    const auto runs = studies::runOwnShipFiltersMonteCarlo(s, 50, 2, 1);
     const auto band = est::averageNeesBounds(4, 50);
-    const auto st = sim::summariseOwnShipFilters(runs, fromSeconds(60.0), band);
-    for (int k = 0; k < sim::kOwnShipFilterCount; ++k) {
+    const auto st = studies::summariseOwnShipFilters(runs, fromSeconds(60.0), band);
+    for (int k = 0; k < studies::kOwnShipFilterCount; ++k) {
       for (int ph = 0; ph < 2; ++ph) {
         const auto& p = st[static_cast<std::size_t>(k)][static_cast<std::size_t>(ph)];
         qInfo(
             "%-8s %s: position RMSE %.2f m, velocity %.3f m/s, mean NEES %.2f (%.0f%% in [%.2f, %.2f]), p95 "
             "%.1f m",
-            sim::ownShipFilterName(static_cast<sim::OwnShipFilter>(k)), ph == 0 ? "GPS on " : "GPS off",
-            p.positionRmseM, p.velocityRmseMps, p.meanNees, 100 * p.shareInBand, band.lower, band.upper,
-            p.p95PositionErrorM);
+            studies::ownShipFilterName(static_cast<studies::OwnShipFilter>(k)),
+            ph == 0 ? "GPS on " : "GPS off", p.positionRmseM, p.velocityRmseMps, p.meanNees,
+            100 * p.shareInBand, band.lower, band.upper, p.p95PositionErrorM);
         QVERIFY(p.rows > 0);
         QVERIFY(band.contains(p.meanNees));
         QVERIFY(p.shareInBand >= 0.8);

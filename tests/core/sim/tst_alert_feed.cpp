@@ -22,7 +22,7 @@ namespace {
 Scenario builtin(const char* name) {
   const auto* f = resources::findScenario(name);
   if (!f) qFatal("no built-in scenario %s", name);
-  return io::parseScenario(f->text, std::string("builtin:") + name);
+  return files::parseScenario(f->text, std::string("builtin:") + name);
 }
 
 struct Run {

@@ -238,7 +238,7 @@ class TestReplayHostile : public QObject {
     // GIVEN any replay WHEN its summary.json is written THEN it gives, per DRKF sensor block, updates
     // accepted, gated out and failed, and the restarts; the counts add up to the epochs' blocks.
     const auto r = sim::replay(run_.nmea, "run.nmea", &run_.radarCsv, "run.csv", options());
-    const io::JsonValue j = io::parseJson(io::replaySummaryJson(r, "run.nmea"));
+    const io::JsonValue j = io::parseJson(files::replaySummaryJson(r, "run.nmea"));
     const io::JsonValue* updates = j.find("own_ship_filter")->find("updates");
     QVERIFY(updates);
     for (const char* block : {"gps_position", "gps_velocity", "loran_c", "speedlog", "gyro"}) {

@@ -351,7 +351,7 @@ class TestReplaySources : public QObject {
     QVERIFY(worstError(g) < 30.0);
     const auto& st = g.stats;
     QCOMPARE(st.nmeaLines, st.sentencesUsed + st.standby + st.repeated + st.notUsed + st.nmeaSkipped());
-    const io::JsonValue j = io::parseJson(io::replaySummaryJson(g, "two-gap.nmea"));
+    const io::JsonValue j = io::parseJson(files::replaySummaryJson(g, "two-gap.nmea"));
     const io::JsonValue* srcs = j.find("sources");
     QVERIFY(srcs && srcs->isArray() && srcs->array.size() >= 5);
     QVERIFY(srcs->array[0].find("clock_offset_s") && srcs->array[0].find("active_share"));

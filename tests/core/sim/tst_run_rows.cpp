@@ -21,7 +21,7 @@ namespace {
 Scenario builtin(const char* name) {
   const auto* f = resources::findScenario(name);
   if (!f) qFatal("no built-in scenario %s", name);
-  return io::parseScenario(f->text, std::string("builtin:") + name);
+  return files::parseScenario(f->text, std::string("builtin:") + name);
 }
 
 /// e^T P^-1 e by an explicit inverse (not the LDLT the builder uses).

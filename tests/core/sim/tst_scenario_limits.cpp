@@ -98,7 +98,7 @@ class TestScenarioLimits : public QObject {
         const std::string what = leaves[leaf].first + " = " + std::to_string(v);
         sim::Scenario s;
         try {
-          s = io::parseScenario(w.str(), "s.json");
+          s = files::parseScenario(w.str(), "s.json");
         } catch (const io::InputError& e) {
           const std::string msg = e.what();
           QVERIFY2(msg.rfind("s.json:", 0) == 0 && msg.find('\n') == std::string::npos,

@@ -185,8 +185,8 @@ class TestSimulationEngine : public QObject {
                         [&](const TrackSnapshot& t) { return t.targetId == *id; }));
     QVERIFY(liveFrames[200].order.has_value());
 
-    const std::string text = io::writeScenario(live.scenario());
-    const Scenario reopened = io::parseScenario(text, "saved.json");
+    const std::string text = files::writeScenario(live.scenario());
+    const Scenario reopened = files::parseScenario(text, "saved.json");
     QCOMPARE(reopened.durationUs, 1850 * kMicrosPerSecond);
     QCOMPARE(reopened.targets.size(), original.targets.size() + 1);
     QCOMPARE(reopened.gps.power.at(fromSeconds(90.0)), true);  // the epoch at 90 s had GPS
@@ -210,13 +210,13 @@ class TestSimulationEngine : public QObject {
     QVERIFY(!live.extendTo(fromSeconds(31.0 * 86400.0)));
     const auto& order = live.scenario().ownShip.schedule.back().order;
     QVERIFY(order && order->speedMps <= 51.44 + 1e-9);
-    const Scenario back = io::parseScenario(io::writeScenario(live.scenario()), "saved.json");
+    const Scenario back = files::parseScenario(files::writeScenario(live.scenario()), "saved.json");
     QCOMPARE(back.ownShip.schedule.size(), live.scenario().ownShip.schedule.size());
   }
   void everyBuiltinScenarioSurvivesWriteAndRead() {
     for (const auto& f : resources::scenarios()) {
-      const Scenario s = io::parseScenario(f.text, std::string(f.name));
-      const Scenario back = io::parseScenario(io::writeScenario(s), std::string(f.name) + " (written)");
+      const Scenario s = files::parseScenario(f.text, std::string(f.name));
+      const Scenario back = files::parseScenario(files::writeScenario(s), std::string(f.name) + " (written)");
       QCOMPARE(back.durationUs, s.durationUs);
       QCOMPARE(back.targets.size(), s.targets.size());
       QCOMPARE(back.ownShip.schedule.size(), s.ownShip.schedule.size());

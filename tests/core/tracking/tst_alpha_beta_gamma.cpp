@@ -116,18 +116,18 @@ class TestAlphaBetaGamma : public QObject {
     // residual (smoothed) errors lower than the prediction errors.
     track::AbgConfig cfg;
     cfg.alpha = 0.5;
-    sim::Seed003Setup setup;
-    for (const auto c : {sim::Seed003Case::VaryingCourse, sim::Seed003Case::VaryingCourseAndSpeed}) {
-      const auto r = sim::runSeed003(c, setup, cfg, 7);
+    studies::Seed003Setup setup;
+    for (const auto c : {studies::Seed003Case::VaryingCourse, studies::Seed003Case::VaryingCourseAndSpeed}) {
+      const auto r = studies::runSeed003(c, setup, cfg, 7);
       RK_COMPARE_NEAR(r.observed2drmsM, 2.0 * std::sqrt(2.0) * setup.plotSdM, 5.0);
       QVERIFY2(r.smoothed2drmsM < 0.8 * r.observed2drmsM && r.smoothed2drmsM < r.predicted2drmsM,
                qPrintable(QString("%1: %2 %3 %4")
-                              .arg(sim::seed003CaseName(c))
+                              .arg(studies::seed003CaseName(c))
                               .arg(r.observed2drmsM)
                               .arg(r.smoothed2drmsM)
                               .arg(r.predicted2drmsM)));
     }
-    const auto clean = sim::runSeed003(sim::Seed003Case::NoNoise, setup, cfg, 7);
+    const auto clean = studies::runSeed003(studies::Seed003Case::NoNoise, setup, cfg, 7);
     QVERIFY(clean.observed2drmsM == 0.0 && clean.smoothed2drmsM < 0.5);
   }
 

@@ -77,25 +77,25 @@ class TestImm : public QObject {
     // Issue 6: input estimation detects a 30 deg turn at 2 s sweeps within 60 s in at least 90% of
     // runs with fewer than one false alarm per hour on straight tracks. Here for the seed 001 EKF at
     // radar rates (window 15 sweeps, Pfa 1e-4) and the IMM on the same plots.
-    sim::ManoeuvreTrial turn;
+    studies::ManoeuvreTrial turn;
     turn.turnRad = degToRad(30.0);
-    const sim::TrackerConfigs cfg = sim::radarRateTrackers(turn);
+    const studies::TrackerConfigs cfg = studies::radarRateTrackers(turn);
     int ieWithin = 0, immWithin = 0;
     for (int r = 0; r < 50; ++r) {
-      const auto o = sim::runManoeuvreTrial(turn, cfg, 500 + static_cast<std::uint64_t>(r));
-      const auto& ie = o.trackers[sim::kEkfIe];
-      const auto& imm = o.trackers[sim::kImm];
+      const auto o = studies::runManoeuvreTrial(turn, cfg, 500 + static_cast<std::uint64_t>(r));
+      const auto& ie = o.trackers[studies::kEkfIe];
+      const auto& imm = o.trackers[studies::kImm];
       ieWithin += ie.delayS && *ie.delayS <= 60.0 ? 1 : 0;
       immWithin += imm.delayS && *imm.delayS <= 60.0 ? 1 : 0;
     }
-    sim::ManoeuvreTrial straight;
+    studies::ManoeuvreTrial straight;
     straight.durationS = 3600.0;
     int ieFalse = 0, immFalse = 0;
     for (int r = 0; r < 10; ++r) {
-      const auto o = sim::runManoeuvreTrial(straight, cfg, 900 + static_cast<std::uint64_t>(r));
-      ieFalse += o.trackers[sim::kEkfIe].falseAlarms;
-      immFalse += o.trackers[sim::kImm].falseAlarms;
-      QCOMPARE(o.trackers[sim::kEkf].falseAlarms, 0);  // the plain EKF never flags
+      const auto o = studies::runManoeuvreTrial(straight, cfg, 900 + static_cast<std::uint64_t>(r));
+      ieFalse += o.trackers[studies::kEkfIe].falseAlarms;
+      immFalse += o.trackers[studies::kImm].falseAlarms;
+      QCOMPARE(o.trackers[studies::kEkf].falseAlarms, 0);  // the plain EKF never flags
     }
     qInfo("30 deg turn flagged within 60 s: IE %d/50, IMM %d/50; false alarms in 10 h: IE %d, IMM %d",
           ieWithin, immWithin, ieFalse, immFalse);
@@ -108,27 +108,28 @@ class TestImm : public QObject {
     // The PCRB of a truly straight target (no process noise in the bound) along its trajectory is a
     // floor for every tracker's position RMSE (up to Monte Carlo scatter): none may beat it by more
     // than a few percent.
-    sim::ManoeuvreTrial straight;
+    studies::ManoeuvreTrial straight;
     straight.boundProcessNoiseQ = 0.0;
-    const sim::TrackerConfigs cfg = sim::radarRateTrackers(straight);
-    std::array<double, sim::kTrackerKinds> sum{};
+    const studies::TrackerConfigs cfg = studies::radarRateTrackers(straight);
+    std::array<double, studies::kTrackerKinds> sum{};
     double boundSum = 0.0;
     double n = 0.0;
     for (int r = 0; r < 40; ++r) {
-      const auto o = sim::runManoeuvreTrial(straight, cfg, 70 + static_cast<std::uint64_t>(r));
+      const auto o = studies::runManoeuvreTrial(straight, cfg, 70 + static_cast<std::uint64_t>(r));
       for (std::size_t i = 0; i < o.tS.size(); ++i) {
         if (o.tS[i] < 120.0) continue;
-        for (int k = 0; k < sim::kTrackerKinds; ++k) sum[k] += std::pow(o.trackers[k].posErrM[i], 2);
+        for (int k = 0; k < studies::kTrackerKinds; ++k) sum[k] += std::pow(o.trackers[k].posErrM[i], 2);
         boundSum += o.pcrbPosM[i] * o.pcrbPosM[i];
         n += 1.0;
       }
     }
-    for (int k = 0; k < sim::kTrackerKinds; ++k) {
+    for (int k = 0; k < studies::kTrackerKinds; ++k) {
       const double ratio = std::sqrt(sum[k] / n) / std::sqrt(boundSum / n);
-      qInfo("%s: RMSE / PCRB %.2f", sim::trackerName(static_cast<sim::TrackerKind>(k)), ratio);
+      qInfo("%s: RMSE / PCRB %.2f", studies::trackerName(static_cast<studies::TrackerKind>(k)), ratio);
       QVERIFY2(
           ratio > 0.95,
-          qPrintable(QString("%1: %2").arg(sim::trackerName(static_cast<sim::TrackerKind>(k))).arg(ratio)));
+          qPrintable(
+              QString("%1: %2").arg(studies::trackerName(static_cast<studies::TrackerKind>(k))).arg(ratio)));
     }
   }
 

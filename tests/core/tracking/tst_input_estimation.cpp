@@ -17,16 +17,17 @@ using namespace reckoner;
 namespace rp = est::relpolar;
 
 namespace {
-std::vector<std::vector<sim::Seed001Sample>> monteCarlo(const sim::Seed001Scenario& sc,
-                                                        const track::InputEstimationConfig& cfg, int runs) {
-  std::vector<std::vector<sim::Seed001Sample>> all;
+std::vector<std::vector<studies::Seed001Sample>> monteCarlo(const studies::Seed001Scenario& sc,
+                                                            const track::InputEstimationConfig& cfg,
+                                                            int runs) {
+  std::vector<std::vector<studies::Seed001Sample>> all;
   for (int r = 0; r < runs; ++r)
-    all.push_back(sim::runSeed001(sc, cfg, 1000 + static_cast<std::uint64_t>(r)));
+    all.push_back(studies::runSeed001(sc, cfg, 1000 + static_cast<std::uint64_t>(r)));
   return all;
 }
 /// The paper's accuracy (range < 8%, course < 3 deg, speed < 3 m/s) as Monte Carlo means from a
 /// sample on; the first miss is printed.
-bool withinPapersLimits(const std::vector<sim::Seed001SampleStats>& stats, int fromSample) {
+bool withinPapersLimits(const std::vector<studies::Seed001SampleStats>& stats, int fromSample) {
   for (const auto& s : stats) {
     if (s.index < fromSample) continue;
     if (!(s.meanRangeErrorPct < 8.0 && s.meanCourseErrorDeg < 3.0 && s.meanSpeedErrorMps < 3.0)) {
@@ -88,7 +89,7 @@ class TestInputEstimation : public QObject {
     track::InputEstimationConfig cfg;
     cfg.paperInitialCovariance = false;
     cfg.correction = track::InputEstimationConfig::Correction::None;  // observe d, change nothing
-    const auto runs = monteCarlo(sim::Seed001Scenario{}, cfg, 100);
+    const auto runs = monteCarlo(studies::Seed001Scenario{}, cfg, 100);
     double sumD = 0.0;
     int tests = 0, over = 0;
     for (const auto& run : runs)
@@ -103,7 +104,7 @@ class TestInputEstimation : public QObject {
     QVERIFY2(meanD > 1.7 && meanD < 2.5, qPrintable(QString::number(meanD)));
     QVERIFY2(rate > 0.06 && rate < 0.15, qPrintable(QString::number(rate)));
     // The paper's accuracy from the 6th sample on, as Monte Carlo means (docs/manoeuvres.md).
-    const auto stats = sim::summariseSeed001(runs);
+    const auto stats = studies::summariseSeed001(runs);
     QVERIFY(withinPapersLimits(stats, 6));
   }
 
@@ -163,10 +164,10 @@ class TestInputEstimation : public QObject {
     // the 8th or 9th sample (the paper: 9th) in at least 95 of 100 runs.
     track::InputEstimationConfig cfg;
     cfg.paperInitialCovariance = false;
-    sim::Seed001Scenario sc;
-    sc.turn = sim::Seed001Scenario::Turn{};
+    studies::Seed001Scenario sc;
+    sc.turn = studies::Seed001Scenario::Turn{};
     const auto runs = monteCarlo(sc, cfg, 100);
-    const auto first = sim::firstDetections(runs, sc.turn->startS);
+    const auto first = studies::firstDetections(runs, sc.turn->startS);
     const auto byNinth = std::count_if(first.begin(), first.end(), [](int k) { return k > 0 && k <= 9; });
     qInfo("declared by the 9th sample in %td of 100 runs", byNinth);
     QVERIFY(byNinth >= 95);
@@ -181,14 +182,14 @@ class TestInputEstimation : public QObject {
     // 80 deg at 540 s THEN the course error after the declaration falls below 10 deg by the 13th sample
     // and 2 deg by the 20th, where the paper's correction (x += M u, P += M L M') leaves 28 and 9 deg.
     track::InputEstimationConfig cfg;
-    const auto straight = sim::summariseSeed001(monteCarlo(sim::Seed001Scenario{}, cfg, 100));
+    const auto straight = studies::summariseSeed001(monteCarlo(studies::Seed001Scenario{}, cfg, 100));
     QVERIFY(withinPapersLimits(straight, 7));
-    sim::Seed001Scenario sc;
-    sc.turn = sim::Seed001Scenario::Turn{};
+    studies::Seed001Scenario sc;
+    sc.turn = studies::Seed001Scenario::Turn{};
     const auto courseAt = [&](track::InputEstimationConfig::Correction c, int index) {
       track::InputEstimationConfig k = cfg;
       k.correction = c;
-      for (const auto& s : sim::summariseSeed001(monteCarlo(sc, k, 100)))
+      for (const auto& s : studies::summariseSeed001(monteCarlo(sc, k, 100)))
         if (s.index == index) return s.meanCourseErrorDeg;
       return std::nan("");
     };

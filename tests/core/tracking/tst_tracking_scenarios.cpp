@@ -152,12 +152,12 @@ class TestTrackingScenarios : public QObject {
     // THEN every MSC.192(79) cell passes at 1 and 3 minutes.
     for (int n = 1; n <= 4; ++n) {
       const sim::Scenario s = test::builtinScenario("imo-" + std::to_string(n));
-      const auto r = metrics::evaluateImo(s, 100, 2, s.seed);
+      const auto r = studies::evaluateImo(s, 100, 2, s.seed);
       QCOMPARE(r.tracked, 100);
       for (const auto& row : r.rows) {
         qInfo("imo-%d %-15s 1 min %.3f (limit %.3f)  3 min %.3f (limit %.3f) %s", n,
-              metrics::imoQuantityName(row.quantity), row.at1Min.p95, row.at1Min.limit, row.at3Min.p95,
-              row.at3Min.limit, metrics::imoQuantityUnit(row.quantity));
+              studies::imoQuantityName(row.quantity), row.at1Min.p95, row.at1Min.limit, row.at3Min.p95,
+              row.at3Min.limit, studies::imoQuantityUnit(row.quantity));
         QVERIFY(row.at1Min.pass);
         QVERIFY(row.at3Min.pass);
       }
@@ -170,7 +170,7 @@ class TestTrackingScenarios : public QObject {
     // agree within 3%, both are consistent (4-state NEES near 4), and the coupled filter has 11 + 6n
     // states. (seed 000 section 2.3: "performed close to the coupled system".)
     const sim::Scenario s = test::builtinScenario("ttkf-matched");
-    const auto rows = sim::compareCoupled(s, {1, 3}, 3, 2, 1);
+    const auto rows = studies::compareCoupled(s, {1, 3}, 3, 2, 1);
     QCOMPARE(rows.size(), std::size_t(2));
     for (const auto& r : rows) {
       qInfo(
@@ -188,7 +188,7 @@ class TestTrackingScenarios : public QObject {
     }
     RK_COMPARE_NEAR(rows[0].eq10Ratio, 17.0 * 17 * 17 / (1331.0 + 1728.0), 1e-9);
     // withTargetCount copies targets turned about own ship, with fresh ids.
-    const sim::Scenario s12 = sim::withTargetCount(s, 12);
+    const sim::Scenario s12 = studies::withTargetCount(s, 12);
     QCOMPARE(s12.targets.size(), std::size_t(12));
     QVERIFY(sim::checkScenario(s12).empty());
   }

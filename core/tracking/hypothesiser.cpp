@@ -27,12 +27,6 @@ std::optional<std::pair<double, double>> mahalanobis2(const est::Vec<2>& d, cons
   return std::make_pair(q, std::log(det));
 }
 
-/// The variance along the major axis of a 2x2 covariance. Not estimation/gaussian.h's
-/// largestEigenvalue: the same quantity rounded differently, and the gate radii must stay as they were.
-double majorAxisVariance(const est::Mat<2>& C) {
-  return 0.5 * (C.trace() + std::hypot(C(0, 0) - C(1, 1), 2.0 * C(0, 1)));
-}
-
 /// The spatial index of a batch: a uniform grid over the plots' positions in the moving frame, with
 /// the median gate radius of the round's tracks as its cell.
 class PlotIndex {
@@ -109,9 +103,9 @@ std::optional<GatedTrack> Hypothesiser::admit(std::size_t track, TimeUs lastPlot
   const double bearing = bearingOf(g.rel[0], g.rel[1]);
   const est::Mat<2> Rt = polarToCartesianCov(range, bearing, batch.maxRangeVarM2, batch.maxBearingVarRad2);
   const est::Mat<2> Crr = g.P.topLeftCorner<2, 2>() + Rt;
-  const double lmaxR = majorAxisVariance(Crr);
+  const double lmaxR = est::largestEigenvalue(Crr);
   const est::Mat<2> Pvv = g.P.bottomRightCorner<2, 2>();
-  const double lmaxV = majorAxisVariance(Pvv);
+  const double lmaxV = est::largestEigenvalue(Pvv);
   const double speed = (g.rel.tail<2>() + batch.ownVelocityMps).norm();
   g.radiusM = std::sqrt(gate_ * lmaxR) + (speed + std::sqrt(gate_ * lmaxV)) * (batch.spanS + p.lagS);
   const auto m = mahalanobis2(est::Vec<2>::Zero(), Crr);

@@ -254,6 +254,11 @@ void MainWindow::updateTitle() {
 
 void MainWindow::setRate(double rate) {
   if (rate != 0.0) lastRunRate_ = rate;
+  const LiveFrame& live = history_.latest();
+  if (rate != 0.0 && live.finished)  // the worker runs on for 30 min: say so
+    statusBar()->showMessage(tr("The scenario had ended at T+%1; running on for 30 more minutes")
+                                 .arg(clockText(toSeconds(live.frame.timeUs))),
+                             15000);
   controller_->setRate(rate);
   runAction_->setText(rate == 0.0 ? tr("Run") : tr("Pause"));
 }

@@ -9,6 +9,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -81,6 +82,17 @@ class TestWatchOfficer : public QObject {
     QVERIFY2(!text.contains(QStringLiteral("nan"), Qt::CaseInsensitive), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral(" NM")), qPrintable(text));
     qInfo("cursor at Sydney: %s", qPrintable(text));
+  }
+
+  void runningOnPastTheEndSaysSo() {
+    MainWindow w(freshOptions());
+    showAndWait(w);
+    runUntil(w, toSeconds(w.controller()->scenario().durationUs));
+    QTRY_VERIFY_WITH_TIMEOUT(w.history().latest().finished, kTimeoutMs);
+    w.setRate(-1.0);
+    QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("running on for 30 more minutes")),
+             qPrintable(w.statusBar()->currentMessage()));
+    w.setRate(0.0);
   }
 
   void theTitleShowsTheFileAndUnsavedChangesAndClosingAsks() {

@@ -4,6 +4,7 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QEventLoop>
 #include <QFile>
 #include <QFileDialog>
@@ -40,6 +41,7 @@ constexpr int kRepaintMs = 33;  // <= 30 Hz
 constexpr int kPlotMs = 500;
 constexpr int kMaxRecent = 8;
 const QString kBuiltinPrefix = QStringLiteral("builtin:");
+constexpr int kDockStateVersion = 2;
 
 QString clockText(double s) {
   const int total = static_cast<int>(std::floor(s));
@@ -293,12 +295,19 @@ void MainWindow::onFrame(const LiveFrame& frame) {
   t.start();
   history_.append(frame);
   appendAlertLog(frame);
+  const bool raised =
+      std::any_of(frame.alertLog.begin(), frame.alertLog.end(), [](const alerts::AlertLogEntry& e) {
+        return e.event == alerts::AlertLogEntry::Event::Raised ||
+               e.event == alerts::AlertLogEntry::Event::Escalated;
+      });
+  if (raised)  // a new alert brings the Alerts tab forward
+    if (auto* d = findChild<QDockWidget*>(QStringLiteral("alarmDock"))) d->raise();
   frameDirty_ = true;
   plotsDirty_ = true;
   if (!frame.running) QTimer::singleShot(0, this, &MainWindow::refreshPlots);  // paused: show all now
   if (firstFrame_ && localFrame_) {
     firstFrame_ = false;
-    view_->centreOnOwnShip();
+    view_->fitOwnShipAndTargets();
   }
   guiTimings_.push_back({GuiTiming::Kind::Frame, static_cast<double>(t.nsecsElapsed()) * 1e-6});
 }
@@ -418,6 +427,7 @@ void MainWindow::showPickedFeatures(const std::vector<charts::PickedFeature>& fe
     html += QStringLiteral("</table></p>");
   }
   pick_->setHtml(html);
+  if (auto* d = findChild<QDockWidget*>(QStringLiteral("pickDock"))) d->raise();
 }
 
 void MainWindow::addRecent(const QString& key, const QString& path) {
@@ -443,7 +453,8 @@ void MainWindow::rebuildRecentMenu() {
 void MainWindow::readSettings() {
   QSettings settings;
   if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray())) resize(1500, 950);
-  restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+  // Version 2: the chart-first arrangement (arrangeDocks); older saved arrangements are not restored.
+  docksSized_ = restoreState(settings.value(QStringLiteral("window/state")).toByteArray(), kDockStateVersion);
   const int palette = settings.value(QStringLiteral("display/palette"), 0).toInt();
   if (palette >= 0 && palette <= 2) setPalette(static_cast<charts::Palette>(palette));
   OverlaySettings o = view_->overlay();
@@ -464,7 +475,7 @@ void MainWindow::readSettings() {
 void MainWindow::writeSettings() {
   QSettings settings;
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-  settings.setValue(QStringLiteral("window/state"), saveState());
+  settings.setValue(QStringLiteral("window/state"), saveState(kDockStateVersion));
   settings.setValue(QStringLiteral("display/palette"), static_cast<int>(view_->settings().palette));
   settings.setValue(QStringLiteral("display/vectorMinutes"), view_->overlay().vectorMinutes);
   settings.setValue(QStringLiteral("display/relativeVectors"), view_->overlay().relativeVectors);
@@ -474,6 +485,17 @@ void MainWindow::writeSettings() {
                     scenarioSource_.startsWith(kBuiltinPrefix) ? QString() : scenarioSource_);
   settings.setValue(QStringLiteral("session/enc"),
                     chartSource_.startsWith(kBuiltinPrefix) ? QString() : chartSource_);
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  if (docksSized_) return;
+  docksSized_ = true;
+  // The dock column takes 30% of the window's width, between 300 and 440 px: the chart keeps 60% of a
+  // 1024 x 768 window and more of larger ones.
+  const int column = std::clamp(static_cast<int>(0.3 * width()), 300, 440);
+  if (auto* own = findChild<QDockWidget*>(QStringLiteral("ownShipDock")))
+    resizeDocks({own}, {column}, Qt::Horizontal);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

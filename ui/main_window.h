@@ -103,10 +103,12 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   // main_window_actions.cpp: the docks, menus and toolbars.
   void buildDocks();
+  void arrangeDocks();
   void buildActions();
   void buildFileMenu();
   void buildSimulationToolbar();
@@ -164,6 +166,7 @@ class MainWindow : public QMainWindow {
   bool frameDirty_ = false;
   bool plotsDirty_ = false;
   bool firstFrame_ = true;
+  bool docksSized_ = false;  ///< the dock column sized to the window (once; or restored from settings)
   std::optional<geo::LocalFrame> localFrame_;
   QString scenarioSource_;
   QString scenarioName_;

@@ -9,6 +9,7 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSortFilterProxyModel>
 #include <QTabWidget>
 #include <QTableView>
@@ -43,10 +44,15 @@ QString defaultChartPath() {
 }  // namespace
 
 void MainWindow::buildDocks() {
+  // Every dock scrolls, so that none sets the window's minimum size (it fits a 1024 x 768 screen).
   const auto dock = [this](const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {
     auto* d = new QDockWidget(title, this);
     d->setObjectName(name);
-    d->setWidget(w);
+    auto* scroll = new QScrollArea(d);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(w);
+    d->setWidget(scroll);
     addDockWidget(area, d);
     return d;
   };
@@ -99,6 +105,24 @@ void MainWindow::buildDocks() {
   pick_ = new QTextBrowser(this);
   pick_->setObjectName(QStringLiteral("pickReport"));
   dock(tr("Pick report"), QStringLiteral("pickDock"), pick_, Qt::BottomDockWidgetArea);
+  arrangeDocks();
+}
+
+void MainWindow::arrangeDocks() {
+  // Chart first: one column on the right, own ship / sensors / plots tabbed above alerts / targets /
+  // pick report, so the chart keeps some 60% of the window at 1024 x 768. The operator may move and
+  // float the docks; the arrangement is remembered (writeSettings).
+  const auto d = [this](const char* name) { return findChild<QDockWidget*>(QString::fromLatin1(name)); };
+  QDockWidget *own = d("ownShipDock"), *alerts = d("alarmDock");
+  for (const char* name : {"ownShipDock", "sensorDock", "plotDock", "alarmDock", "targetDock", "pickDock"})
+    addDockWidget(Qt::RightDockWidgetArea, d(name));
+  splitDockWidget(own, alerts, Qt::Vertical);
+  tabifyDockWidget(own, d("sensorDock"));
+  tabifyDockWidget(own, d("plotDock"));
+  tabifyDockWidget(alerts, d("targetDock"));
+  tabifyDockWidget(alerts, d("pickDock"));
+  own->raise();
+  alerts->raise();
 }
 
 void MainWindow::buildActions() {

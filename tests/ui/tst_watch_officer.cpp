@@ -53,6 +53,33 @@ class TestWatchOfficer : public QObject {
     QSettings().clear();
   }
 
+  void theChartComesFirstAt1024x768And1920x1080() {
+    for (const QSize size : {QSize(1024, 768), QSize(1920, 1080)}) {
+      MainWindow w(freshOptions());
+      showAndWait(w, size);
+      QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+      // THEN the window fits the screen, the chart has at least 60% of it
+      const QSize least = w.minimumSizeHint().expandedTo(w.minimumSize());
+      QVERIFY2(least.width() <= 1024 && least.height() <= 768,
+               qPrintable(QString("minimum %1x%2").arg(least.width()).arg(least.height())));
+      QCOMPARE(w.size(), size);
+      const double share =
+          double(w.chart()->width()) * w.chart()->height() / (double(size.width()) * size.height());
+      qInfo("%dx%d: chart %dx%d, %.0f%% of the window", size.width(), size.height(), w.chart()->width(),
+            w.chart()->height(), 100.0 * share);
+      QVERIFY(share >= 0.6);
+      // AND own ship and every target of the default scenario are in view
+      const sim::SimFrame& f = w.history().latest().frame;
+      const QRect inside = w.chart()->rect();
+      const auto& x = f.estimate.x;
+      QVERIFY(inside.contains(w.chart()->gridToWidget(x[est::drkf::kPosX], x[est::drkf::kPosY]).toPoint()));
+      QCOMPARE(f.targets.size(), std::size_t{3});
+      for (const auto& t : f.targets)
+        QVERIFY(inside.contains(w.chart()->gridToWidget(t.position.xM, t.position.yM).toPoint()));
+      saveWindowShot(w, QStringLiteral("window-%1x%2").arg(size.width()).arg(size.height()));
+    }
+  }
+
   void everyBuiltInScenarioOpensFromTheFileMenu() {
     MainWindow w(freshOptions());
     showAndWait(w);

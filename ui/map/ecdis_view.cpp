@@ -172,6 +172,42 @@ void EcdisView::centreOnOwnShip() {
   setView({g.latDeg, g.lonDeg}, v.scaleDenominator(), v.rotationRad());
 }
 
+void EcdisView::fitOwnShipAndTargets() {
+  if (!history_ || history_->empty() || !frame_) return;
+  const sim::SimFrame& f = history_->latest().frame;
+  const auto& x = f.estimate.x;
+  const geo::GeoPoint own = frame_->toGeodetic({x[est::drkf::kPosX], x[est::drkf::kPosY]});
+  std::vector<charts::LatLon> points{{own.latDeg, own.lonDeg}};
+  for (std::size_t i = 0; i < f.targets.size(); ++i) {
+    if (i < f.targetPresent.size() && !f.targetPresent[i]) continue;
+    const geo::GeoPoint g = frame_->toGeodetic(f.targets[i].position);
+    points.push_back({g.latDeg, g.lonDeg});
+  }
+  // Centred on the middle of them all, so the scale is as large as it can be.
+  double lat0 = own.latDeg, lat1 = own.latDeg, lon0 = own.lonDeg, lon1 = own.lonDeg;
+  for (const auto& p : points) {
+    lat0 = std::min(lat0, p.latDeg);
+    lat1 = std::max(lat1, p.latDeg);
+    lon0 = std::min(lon0, p.lonDeg);
+    lon1 = std::max(lon1, p.lonDeg);
+  }
+  const charts::LatLon centre{0.5 * (lat0 + lat1), 0.5 * (lon0 + lon1)};
+  const double marginPx = 40.0;
+  double chosen = 0.0;
+  for (const double scale : {25000.0, 50000.0, 90000.0, 180000.0, 350000.0, 700000.0}) {
+    chosen = scale;
+    const charts::Viewport v(centre, scale, std::max(width(), 16), std::max(height(), 16), 0.28,
+                             viewport().rotationRad());
+    const bool all = std::all_of(points.begin(), points.end(), [&](const charts::LatLon& p) {
+      const charts::ScreenPoint s = v.toScreen(p);
+      return s.x >= marginPx && s.y >= marginPx && s.x <= v.width() - marginPx &&
+             s.y <= v.height() - marginPx;
+    });
+    if (all) break;
+  }
+  setView(centre, chosen, viewport().rotationRad());
+}
+
 QString EcdisView::cursorText(QPointF at) const {
   const charts::LatLon ll = viewport().toLatLon({at.x(), at.y()});
   QString s = latLonText(ll.latDeg, ll.lonDeg);

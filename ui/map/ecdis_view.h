@@ -81,6 +81,9 @@ class EcdisView : public ChartView {
   void frameUpdated();
   /// Centres the view on own ship's estimated position.
   void centreOnOwnShip();
+  /// The largest of the usual scales (1:25 000 to 1:700 000) that shows own ship and every present
+  /// target inside a margin, centred on them (the first view of a scenario).
+  void fitOwnShipAndTargets();
 
   // Geometry shared with the tests: widget pixels of a grid point, and back.
   [[nodiscard]] QPointF gridToWidget(double xM, double yM) const;

@@ -28,6 +28,7 @@ class QProgressBar;
 class QSortFilterProxyModel;
 class QTableView;
 class QTextBrowser;
+class QToolBar;
 class QToolButton;
 QT_END_NAMESPACE
 
@@ -113,6 +114,7 @@ class MainWindow : public QMainWindow {
   void buildFileMenu();
   void buildSimulationToolbar();
   void buildDisplayToolbar();
+  void buildRangeBox(QToolBar* bar);
   void buildTrackingMenu();
   void buildViewMenu();
   void buildRadarMenu();

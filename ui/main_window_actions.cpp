@@ -22,6 +22,7 @@
 #include "files/scenario_json.h"
 #include "resources/embedded.h"
 #include "ui/main_window.h"
+#include "ui/map/range_scale.h"
 #include "ui/panels/alert_panel.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/sensor_panel.h"
@@ -230,10 +231,30 @@ void MainWindow::buildSimulationToolbar() {
   alarmBannerAction_->setVisible(false);
 }
 
+void MainWindow::buildRangeBox(QToolBar* bar) {
+  auto* range = new QComboBox(this);
+  range->setObjectName(QStringLiteral("range"));
+  range->setToolTip(
+      tr("Range: from own ship to the nearest edge of the chart, with its range rings (keys + "
+         "and -)"));
+  for (const RangeScale& r : kRangeScales) range->addItem(tr("%1 NM").arg(r.rangeNm), r.rangeNm);
+  connect(range, &QComboBox::activated, this,
+          [this, range](int i) { view_->setRangeNm(range->itemData(i).toDouble()); });
+  // The box follows the view: a standard range, or (after zooming with the wheel) the range shown.
+  connect(view_, &ChartView::viewChanged, range, [range](const charts::Viewport& v) {
+    const double nm = displayedRangeNm(v);
+    const int i = standardRangeIndex(nm);
+    range->setPlaceholderText(tr("%1 NM").arg(nm, 0, 'g', 3));
+    range->setCurrentIndex(i);
+  });
+  bar->addWidget(range);
+}
+
 void MainWindow::buildDisplayToolbar() {
   // Display: palette, category, safety contour, orientation, vectors.
   QToolBar* display = addToolBar(tr("Display"));
   display->setObjectName(QStringLiteral("displayToolbar"));
+  buildRangeBox(display);
   auto* palette = new QComboBox(this);
   palette->setObjectName(QStringLiteral("palette"));
   palette->addItems({tr("Day"), tr("Dusk"), tr("Night")});
@@ -323,12 +344,7 @@ void MainWindow::buildViewMenu() {
   addOverlayToggle(viewMenu, tr("Raw radar plots"), &OverlaySettings::showPlots);
   addOverlayToggle(viewMenu, tr("Past track"), &OverlaySettings::showPastTrack);
   addOverlayToggle(viewMenu, tr("Follow own ship"), &OverlaySettings::followOwnShip);
-  QAction* rings = viewMenu->addAction(tr("Range rings"));
-  rings->setCheckable(true);
-  rings->setChecked(view_->overlay().ringSpacingNm > 0.0);
-  connect(rings, &QAction::toggled, this, [this](bool on) {
-    editOverlay(view_, [on](OverlaySettings& s) { s.ringSpacingNm = on ? 0.5 : 0.0; });
-  });
+  addOverlayToggle(viewMenu, tr("Range rings"), &OverlaySettings::showRings);
   viewMenu->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu->addAction(d->toggleViewAction());
 }

@@ -4,6 +4,7 @@
 // with unsaved changes asks first; "Save as" without a suffix writes a .json file.
 #include <QAbstractButton>
 #include <QApplication>
+#include <QComboBox>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -16,6 +17,8 @@
 
 #include "main_window_test_helpers.h"
 #include "resources/embedded.h"
+#include "support/compare_near.h"
+#include "ui/map/range_scale.h"
 
 using namespace reckoner;
 using namespace reckoner::ui;
@@ -78,6 +81,47 @@ class TestWatchOfficer : public QObject {
         QVERIFY(inside.contains(w.chart()->gridToWidget(t.position.xM, t.position.yM).toPoint()));
       saveWindowShot(w, QStringLiteral("window-%1x%2").arg(size.width()).arg(size.height()));
     }
+  }
+
+  void rangesAndTheirRingsFromTheBoxAndTheKeys() {
+    // The standard ranges and their ring intervals
+    QCOMPARE(ringIntervalNm(0.25), 0.05);
+    QCOMPARE(ringIntervalNm(3.0), 0.5);
+    QCOMPARE(ringIntervalNm(2.3), 0.5);
+    QCOMPARE(ringIntervalNm(24.0), 4.0);
+    QCOMPARE(ringIntervalNm(48.0), 8.0);
+    QCOMPARE(steppedRangeIndex(3.0, 1), 5);
+    QCOMPARE(steppedRangeIndex(3.0, -1), 3);
+    QCOMPARE(steppedRangeIndex(2.0, 1), 4);
+    QCOMPARE(steppedRangeIndex(0.25, -1), 0);
+    MainWindow w(freshOptions());
+    showAndWait(w);
+    auto* box = w.findChild<QComboBox*>(QStringLiteral("range"));
+    QVERIFY(box);
+    QCOMPARE(box->count(), kRangeScaleCount);
+    // WHEN 3 NM is chosen THEN the chart shows 3 NM from own ship to its nearest edge
+    box->setCurrentIndex(4);
+    emit box->activated(4);
+    RK_COMPARE_NEAR(displayedRangeNm(w.chart()->viewport()), 3.0, 1e-6);
+    const auto& x = w.history().latest().frame.estimate.x;
+    const QPointF own = w.chart()->gridToWidget(x[est::drkf::kPosX], x[est::drkf::kPosY]);
+    RK_COMPARE_NEAR(own.x(), w.chart()->width() / 2.0, 1.0);
+    RK_COMPARE_NEAR(own.y(), w.chart()->height() / 2.0, 1.0);
+    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    saveWindowShot(w, QStringLiteral("range-3nm"));
+    // AND '+' halves it, '-' twice goes to 6 NM, and the box follows
+    w.chart()->setFocus();
+    QTest::keyClick(w.chart(), Qt::Key_Plus);
+    RK_COMPARE_NEAR(displayedRangeNm(w.chart()->viewport()), 1.5, 1e-6);
+    QCOMPARE(box->currentIndex(), 3);
+    QTest::keyClick(w.chart(), Qt::Key_Minus);
+    QTest::keyClick(w.chart(), Qt::Key_Minus);
+    RK_COMPARE_NEAR(displayedRangeNm(w.chart()->viewport()), 6.0, 1e-6);
+    QCOMPARE(box->currentText(), QStringLiteral("6 NM"));
+    // AND a wheel zoom between ranges shows the range in the box without choosing one
+    w.chart()->zoomAbout(1.3, QPointF(w.chart()->width() / 2.0, w.chart()->height() / 2.0));
+    QCOMPARE(box->currentIndex(), -1);
+    QVERIFY2(box->placeholderText().endsWith(QStringLiteral(" NM")), qPrintable(box->placeholderText()));
   }
 
   void everyBuiltInScenarioOpensFromTheFileMenu() {

@@ -12,6 +12,7 @@
 #include "common/units.h"
 #include "estimation/chi_square.h"
 #include "ui/map/ecdis_view.h"
+#include "ui/map/range_scale.h"
 
 namespace reckoner::ui {
 namespace {
@@ -131,9 +132,11 @@ void EcdisView::paintRings(QPainter& p, const Local& own) {
   QPen pen(colour("tool"), 1.0, Qt::DotLine);
   p.setPen(pen);
   p.setBrush(Qt::NoBrush);
-  if (overlay_.ringSpacingNm > 0.0) {
-    for (int i = 1; i <= overlay_.ringCount; ++i) {
-      const double r = nmToMetres(overlay_.ringSpacingNm * i) * pxm;
+  if (overlay_.showRings) {
+    const double range = displayedRangeNm(viewport()), interval = ringIntervalNm(range);
+    const int rings = static_cast<int>(std::floor(range / interval + 1e-6));
+    for (int i = 1; i <= rings; ++i) {
+      const double r = nmToMetres(interval * i) * pxm;
       p.drawEllipse(own.p, r, r);
     }
   }

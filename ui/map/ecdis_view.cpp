@@ -12,6 +12,7 @@
 #include "common/units.h"
 #include "geo/geodesic.h"
 #include "io/text_format.h"
+#include "ui/map/range_scale.h"
 
 namespace reckoner::ui {
 namespace {
@@ -208,6 +209,21 @@ void EcdisView::fitOwnShipAndTargets() {
   setView(centre, chosen, viewport().rotationRad());
 }
 
+void EcdisView::setRangeNm(double rangeNm) {
+  if (!(rangeNm > 0.0) || !std::isfinite(rangeNm)) return;
+  charts::LatLon centre = viewport().centre();
+  if (history_ && !history_->empty() && frame_) {
+    const auto& x = history_->latest().frame.estimate.x;
+    const geo::GeoPoint own = frame_->toGeodetic({x[est::drkf::kPosX], x[est::drkf::kPosY]});
+    centre = {own.latDeg, own.lonDeg};
+  }
+  setView(centre, scaleForRange(rangeNm, width(), height()), viewport().rotationRad());
+}
+
+void EcdisView::stepRange(int step) {
+  setRangeNm(kRangeScales[steppedRangeIndex(displayedRangeNm(viewport()), step)].rangeNm);
+}
+
 QString EcdisView::cursorText(QPointF at) const {
   const charts::LatLon ll = viewport().toLatLon({at.x(), at.y()});
   QString s = latLonText(ll.latDeg, ll.lonDeg);
@@ -377,6 +393,10 @@ void EcdisView::keyPressEvent(QKeyEvent* e) {
     addTargetFrom_.reset();
     addTargetTo_.reset();
     update();
+    return;
+  }
+  if (e->key() == Qt::Key_Plus || e->key() == Qt::Key_Equal || e->key() == Qt::Key_Minus) {
+    stepRange(e->key() == Qt::Key_Minus ? 1 : -1);  // '+' zooms in to a shorter range
     return;
   }
   if (!history_ || history_->empty()) {

@@ -30,8 +30,8 @@ struct OverlaySettings {
   bool showPlots = false;
   bool showPastTrack = true;
   double pastTrackMinutes = 15.0;
-  double ringSpacingNm = 0.5;  ///< 0: no rings
-  int ringCount = 4;
+  /// Range rings around own ship out to the displayed range, at its standard interval (range_scale.h).
+  bool showRings = true;
   std::optional<double> eblBearingRad;  ///< true bearing from own ship
   std::optional<double> vrmRangeM;
   double ownLengthM = 120.0, ownBeamM = 20.0;  ///< true-scale own-ship outline when larger than 6 mm
@@ -84,6 +84,10 @@ class EcdisView : public ChartView {
   /// The largest of the usual scales (1:25 000 to 1:700 000) that shows own ship and every present
   /// target inside a margin, centred on them (the first view of a scenario).
   void fitOwnShipAndTargets();
+  /// Centres on own ship at the scale that shows rangeNm to the nearest edge.
+  void setRangeNm(double rangeNm);
+  /// To the next standard range up (step > 0, '-' key) or down (step < 0, '+' key).
+  void stepRange(int step);
 
   // Geometry shared with the tests: widget pixels of a grid point, and back.
   [[nodiscard]] QPointF gridToWidget(double xM, double yM) const;

@@ -85,6 +85,10 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] QLabel* alarmBanner() const { return alarmBanner_; }
   /// The alert log file: every alert change, one line each, appended across runs (docs/alerts.md).
   [[nodiscard]] QString alertLogPath() const { return alertLogPath_; }
+  /// Help > About: the program's version and those of Qt, GDAL, GeographicLib and Eigen.
+  [[nodiscard]] static QString aboutText();
+  /// Help > Keyboard shortcuts.
+  [[nodiscard]] static QString shortcutsText();
   /// Whether the latest chart load has not answered yet (no answer to an older one can follow it).
   [[nodiscard]] bool chartsLoading() const { return chartsLoading_; }
   [[nodiscard]] QString lastError() const { return lastError_; }
@@ -117,6 +121,7 @@ class MainWindow : public QMainWindow {
   void buildRangeBox(QToolBar* bar);
   void buildTrackingMenu();
   void buildViewMenu();
+  void buildHelpMenu();
   void buildRadarMenu();
   /// A checkable action in `menu` that switches one overlay setting.
   QAction* addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member);

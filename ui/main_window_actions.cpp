@@ -2,12 +2,14 @@
 // (main_window.cpp), the chart view and the simulation controller.
 #include <QActionGroup>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QHeaderView>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSortFilterProxyModel>
@@ -19,6 +21,7 @@
 #include <cmath>
 
 #include "charts/s57/s57_loader.h"
+#include "common/library_versions.h"
 #include "files/scenario_json.h"
 #include "resources/embedded.h"
 #include "ui/main_window.h"
@@ -132,6 +135,7 @@ void MainWindow::buildActions() {
   buildDisplayToolbar();
   buildTrackingMenu();
   buildViewMenu();
+  buildHelpMenu();
   buildRadarMenu();
 }
 
@@ -320,6 +324,39 @@ void MainWindow::buildTrackingMenu() {
     trackerKindActions_.push_back(a);
     connect(a, &QAction::triggered, this, [this, kind] { controller_->setTrackerKind(kind); });
   }
+}
+
+QString MainWindow::aboutText() {
+  return tr("<h3>Reckoner %1</h3><p>Dead reckoning and target tracking on S-57 charts. Not for navigation: "
+            "a research and training tool.</p><p>Qt %2 (built with %3), GDAL %4, GeographicLib %5, Eigen "
+            "%6</p>")
+      .arg(QCoreApplication::applicationVersion().isEmpty() ? QStringLiteral("(development)")
+                                                            : QCoreApplication::applicationVersion(),
+           QString::fromLatin1(qVersion()), QStringLiteral(QT_VERSION_STR),
+           QString::fromStdString(charts::gdalVersion()), QString::fromStdString(geographicLibVersion()),
+           QString::fromStdString(eigenVersion()));
+}
+
+QString MainWindow::shortcutsText() {
+  return tr(
+      "<table>"
+      "<tr><td>Space</td><td>run / pause</td></tr>"
+      "<tr><td>.</td><td>one step</td></tr>"
+      "<tr><td>+ / -</td><td>shorter / longer range</td></tr>"
+      "<tr><td>Left / Right</td><td>ordered course -5 / +5 deg (Shift: 1 deg)</td></tr>"
+      "<tr><td>Up / Down</td><td>ordered speed +0.5 / -0.5 kn</td></tr>"
+      "<tr><td>Esc</td><td>cancel adding or steering a target</td></tr>"
+      "<tr><td>Ctrl+O / Ctrl+S / Ctrl+Shift+S</td><td>open / save / save as</td></tr>"
+      "<tr><td>Ctrl+Q</td><td>quit (asks to save unsaved changes)</td></tr>"
+      "</table>");
+}
+
+void MainWindow::buildHelpMenu() {
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("Keyboard shortcuts"), QKeySequence::HelpContents, this,
+                  [this] { QMessageBox::information(this, tr("Keyboard shortcuts"), shortcutsText()); });
+  help->addAction(tr("About Reckoner"), this,
+                  [this] { QMessageBox::about(this, tr("About Reckoner"), aboutText()); });
 }
 
 void MainWindow::buildViewMenu() {

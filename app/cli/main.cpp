@@ -19,8 +19,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "charts/s57/s57_loader.h"
 #include "cli/cli_options.h"
 #include "cli/commands.h"
+#include "common/library_versions.h"
 #include "io/error_line.h"
 #include "io/input_error.h"
 
@@ -65,7 +67,7 @@ void checkCommandWords(CLI::App& root, int argc, char** argv) {
     for (const CLI::App* s : subs) known += (known.empty() ? "" : ", ") + s->get_name();
     if (i >= argc) throw UsageError(commandPath(app) + " needs a subcommand: " + known);
     const std::string word = argv[i];
-    if (word == "-h" || word == "--help") return;
+    if (word == "-h" || word == "--help" || (app == &root && word == "--version")) return;
     CLI::App* next = nullptr;
     for (CLI::App* s : subs)
       if (s->get_name() == word) next = s;
@@ -108,6 +110,11 @@ int run(int argc, char** argv) {
   CLI::App root("reckoner-cli: headless runs of the Reckoner engine", "reckoner-cli");
   root.formatter(std::make_shared<HelpFormatter>());
   root.require_subcommand(1);
+  root.set_version_flag("--version",
+                        std::string("reckoner-cli ") + RECKONER_VERSION + " (Eigen " + eigenVersion() +
+                            ", GeographicLib " + geographicLibVersion() + ", GDAL " + charts::gdalVersion() +
+                            ")",
+                        "Print the version of reckoner-cli and of the libraries it runs on, and exit");
   Commands commands;
   for (const auto add : {addRunCommands, addReplayCommands, addStudyCommands, addImoCommand, addSeedCommands,
                          addManoeuvreCommand, addChartCommands, addScenarioCommands})
@@ -123,6 +130,8 @@ int run(int argc, char** argv) {
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
+    return root.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return root.exit(e);
   } catch (const CLI::ParseError& e) {
     return usageError(oneLineMessage(e));

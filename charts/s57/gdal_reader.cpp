@@ -23,6 +23,10 @@
 #include "io/error_line.h"
 
 namespace reckoner::charts::gdalio {
+
+std::string versionText() {
+  return GDALVersionInfo("RELEASE_NAME");
+}
 namespace fs = std::filesystem;
 namespace {
 

@@ -14,6 +14,8 @@ namespace reckoner::charts::gdalio {
 
 /// Registers GDAL's drivers and finds the S-57 catalogue, once per process (thread-safe).
 void initialise();
+/// GDAL's release name, "3.6.2" (of the library loaded, not the headers).
+std::string versionText();
 /// The folder of s57objectclasses.csv, empty if not found. Call initialise() first.
 const std::string& catalogueDirectory();
 /// The object classes' kinds from s57objectclasses.csv (empty if not found). Call initialise() first.

@@ -454,4 +454,8 @@ LoadResult loadCharts(const std::vector<std::string>& paths, const LoadProgress&
   return r;
 }
 
+std::string gdalVersion() {
+  return gdalio::versionText();
+}
+
 }  // namespace reckoner::charts

@@ -76,4 +76,7 @@ LoadResult loadCharts(const std::vector<std::string>& paths, const LoadProgress&
 /// Where the S-57 catalogue files were found (empty if nowhere).
 std::string s57CatalogueDirectory();
 
+/// The GDAL release the loader runs on (for the About box).
+std::string gdalVersion();
+
 }  // namespace reckoner::charts

@@ -90,6 +90,15 @@ class TestCliHelp : public QObject {
   }
 
  private slots:
+  void versionNamesTheProgramAndItsLibraries() {
+    const Result r = cli({"--version"});
+    QCOMPARE(r.code, 0);
+    QVERIFY2(r.out.startsWith("reckoner-cli 0."), qPrintable(r.out));
+    for (const char* lib : {"Eigen 3.", "GeographicLib ", "GDAL 3."})
+      QVERIFY2(r.out.contains(QString::fromLatin1(lib)), qPrintable(r.out));
+    QVERIFY(r.err.isEmpty());
+  }
+
   void everyCommandIsDescribed() {
     const Result top = cli({"--help"});
     QCOMPARE(top.code, 0);

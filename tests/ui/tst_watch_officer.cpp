@@ -124,6 +124,21 @@ class TestWatchOfficer : public QObject {
     QVERIFY2(box->placeholderText().endsWith(QStringLiteral(" NM")), qPrintable(box->placeholderText()));
   }
 
+  void helpHasShortcutsAndAnAboutBoxWithTheLibraries() {
+    const QString about = MainWindow::aboutText();
+    for (const QString& part :
+         {QStringLiteral("Qt ") + QString::fromLatin1(qVersion()), QStringLiteral("GDAL 3."),
+          QStringLiteral("GeographicLib "), QStringLiteral("Eigen 3.")})
+      QVERIFY2(about.contains(part), qPrintable(about));
+    QVERIFY(MainWindow::shortcutsText().contains(QStringLiteral("+ / -")));
+    MainWindow w(freshOptions());
+    QMenu* help = nullptr;
+    for (QAction* a : w.menuBar()->actions())
+      if (a->text() == QStringLiteral("&Help")) help = a->menu();
+    QVERIFY(help);
+    QCOMPARE(help->actions().size(), 2);
+  }
+
   void everyBuiltInScenarioOpensFromTheFileMenu() {
     MainWindow w(freshOptions());
     showAndWait(w);

@@ -28,6 +28,7 @@
 #include "common/angles.h"
 #include "common/units.h"
 #include "files/scenario_json.h"
+#include "io/text_format.h"
 #include "resources/embedded.h"
 #include "ui/panels/alert_panel.h"
 #include "ui/panels/own_ship_panel.h"
@@ -414,10 +415,10 @@ void MainWindow::showPick(QPointF at) {
 
 void MainWindow::showPickedFeatures(const std::vector<charts::PickedFeature>& features,
                                     charts::LatLon where) {
-  QString html = tr("<b>%1 features at %2, %3</b>")
+  QString html = tr("<b>%1 features at %2 %3</b>")
                      .arg(features.size())
-                     .arg(where.latDeg, 0, 'f', 5)
-                     .arg(where.lonDeg, 0, 'f', 5);
+                     .arg(QString::fromStdString(io::formatLatitude(where.latDeg)),
+                          QString::fromStdString(io::formatLongitude(where.lonDeg)));
   for (const auto& f : features) {
     html += QStringLiteral("<p><b>%1</b> (%2) — %3")
                 .arg(escape(f.className), escape(f.objectClass), escape(f.cell));

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <map>
 #include <type_traits>
 
 #include "charts/s57/s57_loader.h"
@@ -98,6 +100,27 @@ std::string S57Catalogue::attributeName(const std::string& acronym) const {
   return it == attributes_.end() ? acronym : it->second.second;
 }
 
+namespace {
+
+/// The unit of a measured attribute's value (IHO S-57 appendix A: depths, heights and clearances in
+/// metres, directions in degrees, periods in seconds, nominal ranges in nautical miles, current
+/// velocities in knots); empty for the rest.
+const char* unitOf(const std::string& acronym) {
+  static const std::map<std::string, const char*, std::less<>> kUnits{
+      {"VALSOU", "m"}, {"DRVAL1", "m"}, {"DRVAL2", "m"}, {"VALDCO", "m"}, {"HEIGHT", "m"},  {"ELEVAT", "m"},
+      {"VERCLR", "m"}, {"VERCCL", "m"}, {"VERCOP", "m"}, {"HORCLR", "m"}, {"HORLEN", "m"},  {"HORWID", "m"},
+      {"ORIENT", "°"}, {"SECTR1", "°"}, {"SECTR2", "°"}, {"SIGPER", "s"}, {"VALNMR", "NM"}, {"CURVEL", "kn"}};
+  const auto it = kUnits.find(acronym);
+  return it == kUnits.end() ? "" : it->second;
+}
+
+std::string withUnit(std::string number, const char* unit) {
+  if (*unit == '\0') return number;
+  return number.append(std::strcmp(unit, "°") == 0 ? "" : " ").append(unit);
+}
+
+}  // namespace
+
 std::string S57Catalogue::valueText(const std::string& acronym, const AttributeValue& value) const {
   const auto attr = attributes_.find(acronym);
   const int code = attr == attributes_.end() ? -1 : attr->second.first;
@@ -109,11 +132,11 @@ std::string S57Catalogue::valueText(const std::string& acronym, const AttributeV
       [&](const auto& v) -> std::string {
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, std::int64_t>) {
-          return decode(v);
+          return *unitOf(acronym) ? withUnit(std::to_string(v), unitOf(acronym)) : decode(v);
         } else if constexpr (std::is_same_v<T, double>) {
           char buf[64];
           std::snprintf(buf, sizeof buf, "%g", v);
-          return buf;
+          return withUnit(buf, unitOf(acronym));
         } else if constexpr (std::is_same_v<T, std::string>) {
           return v;
         } else {

@@ -266,15 +266,21 @@ class TestChartRender : public QObject {
       return std::string("(absent)");
     };
     QCOMPARE(value(picked[0], "Category of wreck"), std::string("dangerous wreck"));
-    QCOMPARE(value(picked[0], "Value of sounding"), std::string("4.2"));
+    QCOMPARE(value(picked[0], "Value of sounding"), std::string("4.2 m"));
     QVERIFY(std::any_of(picked.begin(), picked.end(), [&](const PickedFeature& f) {
-      return f.objectClass == "DEPARE" && value(f, "Depth range value 1") == "30";
+      return f.objectClass == "DEPARE" && value(f, "Depth range value 1") == "30 m";
     }));
     QCOMPARE(picked.back().primitive, std::string("area"));
     // AND far from everything but the areas, no point or line is reported
     const auto open = pickFeatures(cells, view, {click.x + 60, click.y + 60});
     QVERIFY(
         std::all_of(open.begin(), open.end(), [](const PickedFeature& f) { return f.primitive == "area"; }));
+    // AND measured values carry their units, enumerations and counts none
+    const S57Catalogue& cat = S57Catalogue::installed();
+    QCOMPARE(cat.valueText("SIGPER", AttributeValue{4.0}), std::string("4 s"));
+    QCOMPARE(cat.valueText("VALNMR", AttributeValue{std::int64_t{5}}), std::string("5 NM"));
+    QCOMPARE(cat.valueText("ORIENT", AttributeValue{180.0}), std::string("180°"));
+    QCOMPARE(cat.valueText("CATLAM", AttributeValue{std::int64_t{1}}), std::string("port-hand lateral mark"));
     // AND list values are decoded one by one
     QCOMPARE(S57Catalogue::installed().valueText("COLOUR", std::vector<std::int64_t>{2, 6}),
              std::string("black, yellow"));

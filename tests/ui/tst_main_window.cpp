@@ -318,6 +318,10 @@ class TestMainWindow : public QObject {
     QMenu* menu = v->buildContextMenu(v->gridToWidget(tx, ty));
     QAction* steer = menu->findChild<QAction*>(QStringLiteral("steerTarget"));
     QVERIFY(steer);
+    // One numbering in the menu: the track's (the simulated vessel's own id is not shown)
+    QCOMPARE(steer->text(), QStringLiteral("Steer the vessel of track %1 (simulation)…").arg(trackId));
+    QCOMPARE(menu->findChild<QAction*>(QStringLiteral("cancelTrack"))->text(),
+             QStringLiteral("Cancel track %1").arg(trackId));
     steer->trigger();
     delete menu;
     QVERIFY(v->steeringTarget());

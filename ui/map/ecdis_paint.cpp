@@ -471,8 +471,8 @@ void EcdisView::paintReadouts(QPainter& p) {
     lines << QStringLiteral("VRM %1 NM").arg(metresToNm(*overlay_.vrmRangeM), 0, 'f', 2);
   if (addTargetFrom_ && steerTarget_)
     lines << QStringLiteral(
-                 "Steer target %1: move to set its new vector (%2 min), click to order, Esc to cancel")
-                 .arg(*steerTarget_)
+                 "Steer track %1: move to set its new vector (%2 min), click to order, Esc to cancel")
+                 .arg(steerTrack_)
                  .arg(overlay_.vectorMinutes);
   else if (addTargetFrom_)
     lines << QStringLiteral("New target: move to set its vector (%1 min), click to place, Esc to cancel")

@@ -340,9 +340,12 @@ QMenu* EcdisView::buildContextMenu(QPointF at) {
     if (it != tracks.end() && it->targetId >= 0) {
       const int target = it->targetId;
       const geo::GridPoint from{it->estimate.x[est::ttkf::kTgtX], it->estimate.x[est::ttkf::kTgtY]};
-      menu->addAction(tr("Steer target %1 (simulation)…").arg(target), this,
-                      [this, target, from] {
+      // One numbering on screen: the track's. The simulated vessel behind it has its own id, which the
+      // operator never sees elsewhere.
+      menu->addAction(tr("Steer the vessel of track %1 (simulation)…").arg(id), this,
+                      [this, target, from, id] {
                         steerTarget_ = target;
+                        steerTrack_ = id;
                         addTargetFrom_ = from;
                         addTargetTo_.reset();
                         update();

@@ -179,6 +179,7 @@ class EcdisView : public ChartView {
   std::optional<geo::GridPoint> addTargetFrom_;  // add-target mode: the target's start
   std::optional<QPointF> addTargetTo_;
   std::optional<int> steerTarget_;  // steer-target mode: the target's truth id (addTargetFrom_: its track)
+  int steerTrack_ = 0;              // ... and the track the operator chose it by (the number shown)
   std::optional<QPointF> cursor_;
   double appliedRotation_ = 0.0;
   double lastHeadingRad_ = 0.0;  // grid

@@ -327,6 +327,8 @@ void MainWindow::repaintTick() {
   sensors_->setNoisy(live.frame.noisierThanConfigured);
   for (QAction* a : trackerKindActions_)
     if (a->data().toInt() == static_cast<int>(live.trackerKind) && !a->isChecked()) a->setChecked(true);
+  if (autoAcquireAction_ && autoAcquireAction_->isChecked() != live.autoAcquire)
+    autoAcquireAction_->setChecked(live.autoAcquire);
   if (radarMatchAction_) {
     radarMatchAction_->setChecked(live.radarMatching);
     radarMatchAction_->setEnabled(live.chartContourSegments > 0 || live.radarMatching);

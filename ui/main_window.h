@@ -165,6 +165,7 @@ class MainWindow : public QMainWindow {
   QComboBox* rateBox_ = nullptr;
   QAction* runAction_ = nullptr;
   std::vector<QAction*> trackerKindActions_;  ///< Tracking > Filter for new tracks
+  QAction* autoAcquireAction_ = nullptr;      ///< Tracking > Automatic acquisition (follows the tracker)
   QAction* radarMatchAction_ = nullptr;       ///< Radar > Match (follows the scenario's own switch)
   QMenu* recentMenu_ = nullptr;
   QProgressBar* chartProgress_ = nullptr;  ///< shown while charts load

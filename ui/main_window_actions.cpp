@@ -324,6 +324,14 @@ void MainWindow::buildTrackingMenu() {
     trackerKindActions_.push_back(a);
     connect(a, &QAction::triggered, this, [this, kind] { controller_->setTrackerKind(kind); });
   }
+  autoAcquireAction_ = tracking->addAction(tr("Automatic acquisition"));
+  autoAcquireAction_->setObjectName(QStringLiteral("autoAcquire"));
+  autoAcquireAction_->setCheckable(true);
+  autoAcquireAction_->setChecked(true);
+  autoAcquireAction_->setToolTip(
+      tr("New echoes in the acquisition zones start tracks by themselves; off, "
+         "only the operator acquires (right button: Acquire plot here)"));
+  connect(autoAcquireAction_, &QAction::triggered, controller_, &SimulationController::setAutoAcquire);
 }
 
 QString MainWindow::aboutText() {

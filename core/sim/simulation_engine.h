@@ -127,6 +127,8 @@ class SimulationEngine {
   std::optional<int> acquireAt(const geo::GridPoint& p) { return manager_->acquire(p.xM, p.yM); }
   bool cancelTrack(int id) { return manager_->cancel(id); }
   void cancelAllTracks() { manager_->cancelAll(); }
+  /// Automatic acquisition on or off from now (not recorded into the scenario, like manual acquisition).
+  void setAutoAcquire(bool on) { manager_->setAutoAcquire(on); }
 
   // Operator changes to the scenario itself, effective one microsecond after the current time (the
   // epoch at the current time has been processed). Each is written into scenario() (replacing what

@@ -36,6 +36,21 @@ bool plotOnLand(const radar::LandMask* land, const GridPlot& plot, const OwnShip
   return land->contains(plotGridPosition(plot, own));
 }
 
+void CancelledTracks::add(const est::Vec<2>& positionM, const est::Vec<2>& velocityMps,
+                          const est::Mat<2>& positionCov, const est::Mat<2>& velocityCov, TimeUs timeUs) {
+  held_.push_back({positionM, velocityMps, std::sqrt(std::max(0.0, est::largestEigenvalue(positionCov))),
+                   std::sqrt(std::max(0.0, est::largestEigenvalue(velocityCov))), timeUs});
+}
+
+bool CancelledTracks::holdsBack(const est::Vec<2>& p, TimeUs t) {
+  std::erase_if(held_, [t](const Held& h) { return toSeconds(t - h.timeUs) > kHoldS; });
+  return std::any_of(held_.begin(), held_.end(), [&](const Held& h) {
+    const double dt = std::max(0.0, toSeconds(t - h.timeUs));
+    const double radius = kBaseRadiusM + 3.0 * (h.sdPositionM + h.sdVelocityMps * dt);
+    return (p - (h.positionM + h.velocityMps * dt)).norm() <= radius;
+  });
+}
+
 std::optional<TrackFilter> TrackFilterFactory::start(TrackerKind kind, const OwnShipInput& own,
                                                      const GridPlot& plot) const {
   try {

@@ -35,6 +35,32 @@ struct AcquisitionZone {
 /// True when the plot falls on the land (null: no chart, never).
 [[nodiscard]] bool plotOnLand(const radar::LandMask* land, const GridPlot& plot, const OwnShipInput& own);
 
+/// Where the operator cancelled tracks: automatic acquisition keeps away from the vessel each one
+/// followed for holdS, around the track's last estimate carried on at its velocity, within a radius
+/// that grows with the estimate's uncertainty. Without it a cancelled track is acquired again on the
+/// next sweep. Manual acquisition is not held back.
+class CancelledTracks {
+ public:
+  static constexpr double kHoldS = 120.0;
+  static constexpr double kBaseRadiusM = 300.0;
+
+  /// The track's target estimate (grid position, velocity, their covariances) at timeUs.
+  void add(const est::Vec<2>& positionM, const est::Vec<2>& velocityMps, const est::Mat<2>& positionCov,
+           const est::Mat<2>& velocityCov, TimeUs timeUs);
+  /// True when a plot at grid position p and time t is near a cancelled track still held; forgets the
+  /// ones whose hold is over.
+  [[nodiscard]] bool holdsBack(const est::Vec<2>& p, TimeUs t);
+  [[nodiscard]] bool empty() const { return held_.empty(); }
+
+ private:
+  struct Held {
+    est::Vec<2> positionM, velocityMps;
+    double sdPositionM, sdVelocityMps;  ///< along the major axes
+    TimeUs timeUs;
+  };
+  std::vector<Held> held_;
+};
+
 /// The filter of a new track, of the chosen kind, started on its first plot.
 struct TrackFilterFactory {
   std::shared_ptr<const TtkfContext> ctx;

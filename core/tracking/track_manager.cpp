@@ -191,7 +191,10 @@ void TrackManager::initiateFromUnassociated(const std::vector<char>& taken) {
     const Pending& p = pending_[j];
     const bool land = config_.autoAcquire && plotOnLand(land_.get(), p.plot, own);
     counters_.plotsOnLand += land ? 1 : 0;
-    if (config_.autoAcquire && inAcquisitionZones(config_.zones, p.plot, own.convergenceRad) && !land) {
+    const bool heldBack =
+        !cancelled_.empty() && cancelled_.holdsBack(plotGridPosition(p.plot, own), p.plot.timeUs);
+    if (config_.autoAcquire && inAcquisitionZones(config_.zones, p.plot, own.convergenceRad) && !land &&
+        !heldBack) {
       startTrack(own, p.plot, p.tag, false);
     } else {
       free_.push_back({p.plot, p.tag, own, sweep_});
@@ -333,6 +336,12 @@ bool TrackManager::cancel(int id) {
   if (it == tracks_.end()) return false;
   if (it->active()) --active_;
   const TimeUs now = lastOwn_ ? lastOwn_->timeUs : 0;
+  if (it->active()) {
+    namespace tk = est::ttkf;
+    const tk::Belief b = it->filter.belief();
+    cancelled_.add({b.x[tk::kTgtX], b.x[tk::kTgtY]}, {b.x[tk::kTgtVx], b.x[tk::kTgtVy]},
+                   b.P.block<2, 2>(tk::kTgtX, tk::kTgtX), b.P.block<2, 2>(tk::kTgtVx, tk::kTgtVx), now);
+  }
   event(TrackEvent::Kind::Cancelled, now, id);
   tracks_.erase(it);
   return true;

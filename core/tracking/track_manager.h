@@ -119,8 +119,12 @@ class TrackManager {
   /// Chart-aided acquisition: unassociated plots on this land are not acquired automatically (they are
   /// echoes of the shore, not targets). Null: no chart. Manual acquisition is the operator's call.
   void setLandMask(std::shared_ptr<const radar::LandMask> land) { land_ = std::move(land); }
+  /// The operator's cancellation: the track is gone, and automatic acquisition keeps away from its
+  /// vessel for CancelledTracks::kHoldS (initiator.h).
   bool cancel(int trackId);
   void cancelAll();
+  /// Automatic acquisition on or off from now (the operator's switch; manual acquisition always works).
+  void setAutoAcquire(bool on) { config_.autoAcquire = on; }
 
   /// The track's belief predicted to t (not changing the track); lost tracks keep their last one.
   [[nodiscard]] est::ttkf::Belief beliefAt(const Track& t, TimeUs time) const;
@@ -168,6 +172,7 @@ class TrackManager {
   Hypothesiser hypothesiser_;
   TrackFilterFactory filters_;
   MofNConfirmation confirmation_;
+  CancelledTracks cancelled_;
   HitsInWindowDeleter deleter_;
   TrackUpdater updater_;
   std::vector<Track> tracks_;

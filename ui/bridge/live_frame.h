@@ -109,6 +109,7 @@ struct LiveFrame {
   std::vector<alerts::Alert> alerts;
   std::vector<alerts::AlertLogEntry> alertLog;
   bool alertAudible = false;
+  bool autoAcquire = true;              ///< the tracker acquires automatically (the operator's switch)
   std::array<LastFix, 2> lastFix{};     ///< GPS, Loran-C
   std::array<BlockStatus, 5> blocks{};  ///< per nav::DrkfBlock
   bool positionFixUsed = true;          ///< not frame.deadReckoning.active (a recent position fix)

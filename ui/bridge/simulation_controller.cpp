@@ -88,6 +88,9 @@ void SimulationController::acquireAt(double xM, double yM) {
 void SimulationController::cancelTrack(int trackId) {
   sim_.post(&SimulationWorker::cancelTrack, trackId);
 }
+void SimulationController::setAutoAcquire(bool on) {
+  sim_.post(&SimulationWorker::setAutoAcquire, on);
+}
 void SimulationController::setDrLimit(double metres) {
   sim_.post(&SimulationWorker::setDrLimit, metres);
 }

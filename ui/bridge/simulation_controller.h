@@ -36,6 +36,7 @@ class SimulationController : public QObject {
   void addTarget(double xM, double yM, double vxMps, double vyMps);
   void acquireAt(double xM, double yM);
   void cancelTrack(int trackId);
+  void setAutoAcquire(bool on);
   void setDrLimit(double metres);
   void setCpaLimits(double cpaM, double tcpaS);
   /// One alert acknowledged; every audible alert silenced for 30 s (docs/alerts.md).

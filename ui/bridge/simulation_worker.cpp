@@ -305,6 +305,7 @@ void SimulationWorker::maybeEmit(bool force) {
   }
   pending_.alerts = alerts_.alerts();
   pending_.alertAudible = alerts_.audible();
+  pending_.autoAcquire = engine_->trackers().config().autoAcquire;
   pending_.running = rate_ != 0.0;
   pending_.finished = engine_->finished();
   pending_.durationS = toSeconds(engine_->scenario().durationUs);
@@ -434,6 +435,13 @@ void SimulationWorker::acquireAt(double xM, double yM) {
 
 void SimulationWorker::cancelTrack(int trackId) {
   if (engine_) engine_->cancelTrack(trackId);
+}
+
+void SimulationWorker::setAutoAcquire(bool on) {
+  if (!engine_) return;
+  engine_->setAutoAcquire(on);
+  dirty_ = true;
+  maybeEmit(true);
 }
 
 void SimulationWorker::setDrLimit(double metres) {

@@ -50,6 +50,7 @@ class SimulationWorker : public QObject {
   void addTarget(double xM, double yM, double vxMps, double vyMps);
   void acquireAt(double xM, double yM);
   void cancelTrack(int trackId);
+  void setAutoAcquire(bool on);
   /// The 95% position error limit of the dead-reckoning indication and alert, metres.
   void setDrLimit(double metres);
   /// The CPA (m) and TCPA (s) limits of the CPA/TCPA alert from now on.

@@ -5,6 +5,8 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QScopeGuard>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QTest>
 #include <cmath>
 #include <vector>
@@ -21,6 +23,15 @@ inline constexpr int kTimeoutMs = 600000;
 #else
 inline constexpr int kTimeoutMs = 120000;
 #endif
+
+/// Every GUI test starts from nothing of the user's: QStandardPaths' test locations (settings, the alert
+/// log) under an application name of its own, its settings cleared.
+inline void isolateFromTheUser(const char* testName) {
+  QStandardPaths::setTestModeEnabled(true);
+  QCoreApplication::setOrganizationName(QStringLiteral("ReckonerTest"));
+  QCoreApplication::setApplicationName(QString::fromLatin1(testName));
+  QSettings().clear();
+}
 
 inline double simTime(const MainWindow& w) {
   return toSeconds(w.history().latest().frame.timeUs);

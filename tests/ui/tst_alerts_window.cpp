@@ -54,12 +54,7 @@ bool shows(MainWindow& w, alerts::AlertId id, std::optional<AlertState> state) {
 class TestAlertsWindow : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName(QStringLiteral("ReckonerTest"));
-    QCoreApplication::setApplicationName(QStringLiteral("tst_alerts_window"));
-    QSettings().clear();
-  }
+  void initTestCase() { isolateFromTheUser("tst_alerts_window"); }
 
   void anOfficerWorksTheAlertsOfTheDefaultRun() {
     MainWindow w(freshOptions());

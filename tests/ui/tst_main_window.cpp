@@ -34,12 +34,7 @@ using namespace reckoner::ui::test;
 class TestMainWindow : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName(QStringLiteral("ReckonerTest"));
-    QCoreApplication::setApplicationName(QStringLiteral("tst_main_window"));
-    QSettings().clear();
-  }
+  void initTestCase() { isolateFromTheUser("tst_main_window"); }
 
   void opensWithTheDefaultScenarioAndChart() {
     MainWindow w(freshOptions());

@@ -49,12 +49,7 @@ void answerNextMessageBox(QMessageBox::StandardButton button, bool* asked) {
 class TestWatchOfficer : public QObject {
   Q_OBJECT
  private slots:
-  void initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName(QStringLiteral("ReckonerTest"));
-    QCoreApplication::setApplicationName(QStringLiteral("tst_watch_officer"));
-    QSettings().clear();
-  }
+  void initTestCase() { isolateFromTheUser("tst_watch_officer"); }
 
   void theChartComesFirstAt1024x768And1920x1080() {
     for (const QSize size : {QSize(1024, 768), QSize(1920, 1080)}) {

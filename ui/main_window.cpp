@@ -90,6 +90,11 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
     view_->setHistory(&history_, *localFrame_);
     sensors_->setFitted(s);
     firstFrame_ = true;
+    // The operator's remembered limits replace the scenario's (Tracking > CPA/TCPA limits).
+    QSettings settings;
+    if (settings.contains(QStringLiteral("tracking/cpaNm")))
+      controller_->setCpaLimits(nmToMetres(settings.value(QStringLiteral("tracking/cpaNm")).toDouble()),
+                                60.0 * settings.value(QStringLiteral("tracking/tcpaMin")).toDouble());
   });
   connect(view_, &EcdisView::orderRequested, controller_, &SimulationController::orderOwnShip);
   connect(view_, &EcdisView::addTargetRequested, controller_, &SimulationController::addTarget);
@@ -234,6 +239,19 @@ bool MainWindow::saveScenario(const QString& path) {
   updateTitle();
   statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
   return true;
+}
+
+void MainWindow::setCpaLimits(double cpaNm, double tcpaMin) {
+  if (!std::isfinite(cpaNm) || !std::isfinite(tcpaMin) || cpaNm <= 0.0 || tcpaMin <= 0.0) {
+    reportError(tr("CPA/TCPA limits must be above 0 (got %1 NM, %2 min)").arg(cpaNm).arg(tcpaMin));
+    return;
+  }
+  QSettings settings;
+  settings.setValue(QStringLiteral("tracking/cpaNm"), cpaNm);
+  settings.setValue(QStringLiteral("tracking/tcpaMin"), tcpaMin);
+  controller_->setCpaLimits(nmToMetres(cpaNm), 60.0 * tcpaMin);
+  statusBar()->showMessage(tr("Dangerous targets: CPA under %1 NM within %2 min").arg(cpaNm).arg(tcpaMin),
+                           8000);
 }
 
 bool MainWindow::save() {

@@ -69,6 +69,9 @@ class MainWindow : public QMainWindow {
   bool save();
   /// Asks for a file name (".json" added when it has no suffix) and saves.
   bool saveAs();
+  /// The operator's CPA (NM) and TCPA (min) limits for dangerous targets and their alarm, for this run
+  /// and remembered for the next ones (Tracking > CPA/TCPA limits).
+  void setCpaLimits(double cpaNm, double tcpaMin);
 
   // For tests and the benchmark.
   [[nodiscard]] EcdisView* chart() const { return view_; }
@@ -120,6 +123,7 @@ class MainWindow : public QMainWindow {
   void buildDisplayToolbar();
   void buildRangeBox(QToolBar* bar);
   void buildTrackingMenu();
+  void askCpaLimits();
   void buildViewMenu();
   void buildHelpMenu();
   void buildRadarMenu();

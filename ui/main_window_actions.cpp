@@ -3,15 +3,19 @@
 #include <QActionGroup>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
+#include <QFormLayout>
 #include <QHeaderView>
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QSettings>
 #include <QSortFilterProxyModel>
 #include <QTabWidget>
 #include <QTableView>
@@ -22,6 +26,7 @@
 
 #include "charts/s57/s57_loader.h"
 #include "common/library_versions.h"
+#include "common/units.h"
 #include "files/scenario_json.h"
 #include "resources/embedded.h"
 #include "ui/main_window.h"
@@ -324,6 +329,8 @@ void MainWindow::buildTrackingMenu() {
     trackerKindActions_.push_back(a);
     connect(a, &QAction::triggered, this, [this, kind] { controller_->setTrackerKind(kind); });
   }
+  tracking->addAction(tr("CPA/TCPA limits…"), this, &MainWindow::askCpaLimits)
+      ->setObjectName(QStringLiteral("cpaLimits"));
   autoAcquireAction_ = tracking->addAction(tr("Automatic acquisition"));
   autoAcquireAction_->setObjectName(QStringLiteral("autoAcquire"));
   autoAcquireAction_->setCheckable(true);
@@ -332,6 +339,34 @@ void MainWindow::buildTrackingMenu() {
       tr("New echoes in the acquisition zones start tracks by themselves; off, "
          "only the operator acquires (right button: Acquire plot here)"));
   connect(autoAcquireAction_, &QAction::triggered, controller_, &SimulationController::setAutoAcquire);
+}
+
+void MainWindow::askCpaLimits() {
+  QDialog dialog(this);
+  dialog.setWindowTitle(tr("CPA/TCPA limits"));
+  auto* form = new QFormLayout(&dialog);
+  auto* cpa = new QDoubleSpinBox(&dialog);
+  cpa->setRange(0.1, 6.0);
+  cpa->setSingleStep(0.1);
+  cpa->setSuffix(tr(" NM"));
+  auto* tcpa = new QDoubleSpinBox(&dialog);
+  tcpa->setRange(1.0, 60.0);
+  tcpa->setDecimals(0);
+  tcpa->setSuffix(tr(" min"));
+  QSettings settings;
+  cpa->setValue(
+      settings.value(QStringLiteral("tracking/cpaNm"), metresToNm(controller_->scenario().tracker.dangerCpaM))
+          .toDouble());
+  tcpa->setValue(
+      settings.value(QStringLiteral("tracking/tcpaMin"), controller_->scenario().tracker.dangerTcpaS / 60.0)
+          .toDouble());
+  form->addRow(tr("Dangerous when CPA under"), cpa);
+  form->addRow(tr("and TCPA under"), tcpa);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  form->addRow(buttons);
+  if (dialog.exec() == QDialog::Accepted) setCpaLimits(cpa->value(), tcpa->value());
 }
 
 QString MainWindow::aboutText() {

@@ -129,6 +129,8 @@ class SimulationEngine {
   void cancelAllTracks() { manager_->cancelAll(); }
   /// Automatic acquisition on or off from now (not recorded into the scenario, like manual acquisition).
   void setAutoAcquire(bool on) { manager_->setAutoAcquire(on); }
+  /// The dangerous-target limits from now on (the operator's; not recorded into the scenario).
+  void setDangerLimits(double cpaM, double tcpaS) { manager_->setDangerLimits(cpaM, tcpaS); }
 
   // Operator changes to the scenario itself, effective one microsecond after the current time (the
   // epoch at the current time has been processed). Each is written into scenario() (replacing what

@@ -347,6 +347,12 @@ bool TrackManager::cancel(int id) {
   return true;
 }
 
+void TrackManager::setDangerLimits(double cpaM, double tcpaS) {
+  if (!std::isfinite(cpaM) || !std::isfinite(tcpaS) || cpaM < 0.0 || tcpaS < 0.0) return;
+  config_.dangerCpaM = cpaM;
+  config_.dangerTcpaS = tcpaS;
+}
+
 void TrackManager::cancelAll() {
   while (!tracks_.empty()) cancel(tracks_.back().id);
 }

@@ -125,6 +125,9 @@ class TrackManager {
   void cancelAll();
   /// Automatic acquisition on or off from now (the operator's switch; manual acquisition always works).
   void setAutoAcquire(bool on) { config_.autoAcquire = on; }
+  /// The operator's CPA and TCPA limits of the dangerous-target flag from now on (ignored unless both
+  /// are finite and >= 0, as TrackManagerConfig::check demands).
+  void setDangerLimits(double cpaM, double tcpaS);
 
   /// The track's belief predicted to t (not changing the track); lost tracks keep their last one.
   [[nodiscard]] est::ttkf::Belief beliefAt(const Track& t, TimeUs time) const;

@@ -134,6 +134,48 @@ class TestWatchOfficer : public QObject {
     QCOMPARE(help->actions().size(), 2);
   }
 
+  void theOfficerSetsTheCpaLimitsAndTheyAreKept() {
+    // The first CPA/TCPA alarm of a run to 900 s: its time and the CPA (NM) its text gives.
+    const auto firstCpaAlarm = [](MainWindow& w) -> std::pair<double, double> {
+      runUntil(w, 900.0);
+      for (const auto& e : w.history().alertHistory())
+        if (e.id.kind == alerts::AlertKind::CpaTcpa && e.event == alerts::AlertLogEntry::Event::Raised)
+          return {toSeconds(e.timeUs), QString::fromStdString(e.text)
+                                           .section(QStringLiteral("CPA "), 1)
+                                           .section(' ', 0, 0)
+                                           .toDouble()};
+      return {-1.0, -1.0};
+    };
+    // GIVEN the default run: at 1 NM the alarm for target 3 comes at 647 s
+    double defaultS = 0.0;
+    {
+      MainWindow w(freshOptions());
+      showAndWait(w);
+      defaultS = firstCpaAlarm(w).first;
+      QVERIFY(defaultS > 0.0);
+    }
+    // WHEN the officer sets 0.05 NM within 12 min THEN the alarm comes later, only under 0.05 NM
+    double limitedS = 0.0;
+    {
+      MainWindow w(freshOptions());
+      showAndWait(w);
+      w.setCpaLimits(0.05, 12.0);
+      const auto [t, cpaNm] = firstCpaAlarm(w);
+      qInfo("first CPA/TCPA alarm: %.0f s at 1 NM, %.0f s at 0.05 NM (CPA %.2f NM)", defaultS, t, cpaNm);
+      QVERIFY(t > defaultS);
+      QVERIFY(cpaNm <= 0.05);
+      limitedS = t;
+    }
+    // AND the next window keeps the limits: the same run gives the same alarm
+    MainWindow again(freshOptions());
+    showAndWait(again);
+    QCOMPARE(firstCpaAlarm(again).first, limitedS);
+    // AND impossible limits are refused with a message
+    again.setCpaLimits(-1.0, 12.0);
+    QVERIFY(again.lastError().contains(QStringLiteral("CPA/TCPA limits")));
+    QSettings().remove(QStringLiteral("tracking"));
+  }
+
   void everyBuiltInScenarioOpensFromTheFileMenu() {
     MainWindow w(freshOptions());
     showAndWait(w);

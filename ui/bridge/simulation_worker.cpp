@@ -457,7 +457,8 @@ void SimulationWorker::setDrLimit(double metres) {
 }
 
 void SimulationWorker::setCpaLimits(double cpaM, double tcpaS) {
-  if (!alertFeed_) return;
+  if (!alertFeed_ || !engine_) return;
+  engine_->setDangerLimits(cpaM, tcpaS);  // the tracker's flag and the alert keep one rule
   sim::AlertFeedSettings s = alertFeed_->settings();
   s.cpa.cpaM = cpaM;
   s.cpa.tcpaS = tcpaS;

@@ -5,25 +5,18 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "cli_process.h"
 #include "support/compare_near.h"
 
 class TestCli : public QObject {
   Q_OBJECT
 
-  struct Result {
-    int code;
-    QString out, err;
-  };
-  static Result cli(const QStringList& args) {
-    QProcess p;
-    p.start(RECKONER_CLI, args);
-    p.waitForFinished(120000);
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
-            QString::fromUtf8(p.readAllStandardError())};
-  }
+  using Result = reckoner::test::CliResult;
+  static Result cli(const QStringList& args) { return reckoner::test::runCli(args); }
   static QByteArray read(const QString& path) {
     QFile f(path);
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();

@@ -11,20 +11,13 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "cli_process.h"
+
 class TestCliHelp : public QObject {
   Q_OBJECT
 
-  struct Result {
-    int code;
-    QString out, err;
-  };
-  static Result cli(const QStringList& args) {
-    QProcess p;
-    p.start(RECKONER_CLI, args);
-    p.waitForFinished(120000);
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
-            QString::fromUtf8(p.readAllStandardError())};
-  }
+  using Result = reckoner::test::CliResult;
+  static Result cli(const QStringList& args) { return reckoner::test::runCli(args); }
 
   /// Every command and, as --help must show it, each of its options with the name of its value (the
   /// unit) and its positional arguments. The spellings are the command line's contract: scripts and

@@ -21,8 +21,12 @@ AlertManager::AlertManager(AlertConfig config) : config_(config) {
 }
 
 void AlertManager::report(TimeUs now, AlertId id, bool holds, const std::string& text) {
-  holds_[id] = holds;
   const auto it = alerts_.find(id);
+  // Only what holds is remembered: a source that comes and goes (a track) leaves nothing behind.
+  if (holds)
+    holds_.insert(id);
+  else
+    holds_.erase(id);
   if (holds) {
     if (it == alerts_.end()) {
       raise(now, id, text);
@@ -101,8 +105,7 @@ bool AlertManager::acknowledge(TimeUs now, AlertId id) {
   Alert& a = it->second;
   if (a.priority == Priority::Caution || a.state == AlertState::Acknowledged) return false;
   log(AlertLogEntry::Event::Acknowledged, now, a);
-  const auto h = holds_.find(id);
-  if (a.state == AlertState::Rectified || h == holds_.end() || !h->second) {
+  if (a.state == AlertState::Rectified || holds_.count(id) == 0) {
     remove(now, id);
     return true;
   }

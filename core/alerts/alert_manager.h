@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <deque>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -76,7 +77,7 @@ class AlertManager {
 
   AlertConfig config_;
   std::map<AlertId, Alert> alerts_;
-  std::map<AlertId, bool> holds_;
+  std::set<AlertId> holds_;  ///< the conditions that hold now
   std::deque<AlertLogEntry> history_, untaken_;
   std::size_t dropped_ = 0;
   std::map<AlertKind, int> raised_;

@@ -42,6 +42,13 @@ void AlertFeed::feed(const SimFrame& f, alerts::AlertManager& m) {
   m.tick(f.timeUs);
 }
 
+namespace {
+std::string trackText(int trackId, const char* what) {
+  std::string s = "track ";
+  return s.append(std::to_string(trackId)).append(what);
+}
+}  // namespace
+
 void AlertFeed::feedTracks(const SimFrame& f, alerts::AlertManager& m) {
   const TimeUs now = f.timeUs;
   std::set<int> present;
@@ -53,13 +60,16 @@ void AlertFeed::feedTracks(const SimFrame& f, alerts::AlertManager& m) {
       danger = cpa_.update(t.trackId, now, cpa);
     else
       cpa_.forget(t.trackId);
-    m.report(now, {AlertKind::CpaTcpa, t.trackId}, danger, alerts::cpaAlertText(t.trackId, cpa));
-    std::string id = "track ";
-    id += std::to_string(t.trackId);
-    m.report(now, {AlertKind::LostTarget, t.trackId}, t.status == track::TrackStatus::Lost, id + " lost");
+    // Texts only for conditions that hold (the manager ignores the text of one that does not): this
+    // runs for every track at every step.
+    const bool lost = t.status == track::TrackStatus::Lost;
+    const bool intruder = settings_.guardZones && t.status == track::TrackStatus::Tentative && !t.manual;
+    m.report(now, {AlertKind::CpaTcpa, t.trackId}, danger,
+             danger ? alerts::cpaAlertText(t.trackId, cpa) : "");
+    m.report(now, {AlertKind::LostTarget, t.trackId}, lost, lost ? trackText(t.trackId, " lost") : "");
     if (settings_.guardZones)
-      m.report(now, {AlertKind::GuardZone, t.trackId}, t.status == track::TrackStatus::Tentative && !t.manual,
-               id + ": new target in a guard zone");
+      m.report(now, {AlertKind::GuardZone, t.trackId}, intruder,
+               intruder ? trackText(t.trackId, ": new target in a guard zone") : "");
   }
   for (const int gone : tracks_) {
     if (present.count(gone) != 0) continue;
@@ -76,15 +86,20 @@ void AlertFeed::feedOwnShip(const SimFrame& f, alerts::AlertManager& m) const {
            "no position fix: dead reckoning");
   if (settings_.drLimitM > 0.0) {
     const double e95 = nav::positionError95M(f.estimate);
-    char text[96];
-    std::snprintf(text, sizeof text, "95%% position error %.0f m, limit %.0f m", e95, settings_.drLimitM);
-    m.report(now, {AlertKind::DeadReckoningLimit, 0}, e95 > settings_.drLimitM, text);
+    const bool above = e95 > settings_.drLimitM;
+    char text[96] = "";
+    if (above)
+      std::snprintf(text, sizeof text, "95%% position error %.0f m, limit %.0f m", e95, settings_.drLimitM);
+    m.report(now, {AlertKind::DeadReckoningLimit, 0}, above, text);
   } else {
     m.report(now, {AlertKind::DeadReckoningLimit, 0}, false);
   }
-  for (int b = 0; b < nav::kDrkfBlockCount; ++b)
-    m.report(now, {AlertKind::SensorNoise, b}, f.noisierThanConfigured[static_cast<std::size_t>(b)],
-             std::string(nav::blockName(static_cast<nav::DrkfBlock>(b))) + " larger than configured");
+  for (int b = 0; b < nav::kDrkfBlockCount; ++b) {
+    const bool noisy = f.noisierThanConfigured[static_cast<std::size_t>(b)];
+    m.report(
+        now, {AlertKind::SensorNoise, b}, noisy,
+        noisy ? std::string(nav::blockName(static_cast<nav::DrkfBlock>(b))) + " larger than configured" : "");
+  }
   m.report(now, {AlertKind::Capacity, 0}, f.capacityWarning, "track capacity near its limit");
 }
 

@@ -16,6 +16,9 @@ endif()
 # that the bootstrap installs them (Debian's Qt6 Charts also needs libqt6opengl6-dev and
 # libxkbcommon-dev, a known trap).
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets Charts Test)
+# The alerts' audible signal (ui/panels/alert_sound.cpp): Qt Multimedia where it is installed (the
+# bootstrap installs Debian's qt6-multimedia-dev); without it the window is silent.
+find_package(Qt6 6.4 QUIET COMPONENTS Multimedia)
 find_package(GDAL 3.6 REQUIRED)
 # reckoner-cli's command line (header-only; Debian's libcli11-dev).
 find_package(CLI11 CONFIG REQUIRED)

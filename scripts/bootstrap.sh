@@ -18,7 +18,7 @@ jobs=${RECKONER_JOBS:-$(nproc 2>/dev/null || echo 2)}
 packages=(
   build-essential cmake ninja-build ccache pkg-config git
   libeigen3-dev libgeographiclib-dev
-  qt6-base-dev qt6-charts-dev libqt6opengl6-dev libxkbcommon-dev qt6-qpa-plugins
+  qt6-base-dev qt6-charts-dev qt6-multimedia-dev libqt6opengl6-dev libxkbcommon-dev qt6-qpa-plugins
   libgdal-dev gdal-bin zlib1g-dev libbenchmark-dev libcli11-dev python3
 )
 

@@ -15,12 +15,14 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QSortFilterProxyModel>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableView>
 #include <QTextBrowser>
 #include <QTextStream>
+#include <QToolTip>
 #include <algorithm>
 #include <cmath>
 
@@ -31,13 +33,17 @@
 #include "io/text_format.h"
 #include "resources/embedded.h"
 #include "ui/panels/alert_panel.h"
+#include "ui/panels/alert_sound.h"
+#include "ui/panels/mariner_settings_dialog.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/sensor_panel.h"
 #include "ui/panels/target_table_model.h"
+#include "ui/panels/widget_palette.h"
 #include "ui/plots/error_plots.h"
 
 namespace reckoner::ui {
 namespace {
+
 constexpr int kRepaintMs = 33;  // <= 30 Hz
 constexpr int kPlotMs = 500;
 constexpr int kMaxRecent = 8;
@@ -66,6 +72,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
   setObjectName(QStringLiteral("mainWindow"));
   setCentralWidget(view_);
   view_->setObjectName(QStringLiteral("chart"));
+  sound_ =
+      new AlertSound(options.sound && QGuiApplication::platformName() != QLatin1String("offscreen"), this);
   buildDocks();
   buildActions();
   statusBar()->addWidget(cursorLabel_ = new QLabel(this), 1);
@@ -288,23 +296,16 @@ void MainWindow::setPalette(charts::Palette palette) {
   charts::MarinerSettings s = view_->settings();
   s.palette = palette;
   view_->setSettings(s);
-  QPalette pal = QApplication::palette();
-  if (palette != charts::Palette::Day) {
-    const bool night = palette == charts::Palette::Night;
-    const QColor window = night ? QColor(12, 12, 14) : QColor(40, 40, 48);
-    const QColor text = night ? QColor(150, 140, 110) : QColor(215, 215, 215);
-    pal.setColor(QPalette::Window, window);
-    pal.setColor(QPalette::Base, window.darker(120));
-    pal.setColor(QPalette::AlternateBase, window);
-    pal.setColor(QPalette::Button, window.lighter(130));
-    pal.setColor(QPalette::WindowText, text);
-    pal.setColor(QPalette::Text, text);
-    pal.setColor(QPalette::ButtonText, text);
-  }
+  const QPalette pal = widgetPalette(palette);
   QMainWindow::setPalette(pal);
+  QToolTip::setPalette(pal);
   for (QWidget* w : findChildren<QWidget*>()) w->setPalette(pal);
   ownPlots_->setDark(palette != charts::Palette::Day);
   targetPlots_->setDark(palette != charts::Palette::Day);
+  alertPanel_->setDisplayPalette(palette);
+  alertPanel_->refresh(history_);
+  ownPanel_->setDisplayPalette(palette);
+  if (!history_.alerts().empty()) updateAlarms();
   for (auto* combo : findChildren<QComboBox*>(QStringLiteral("palette")))
     combo->setCurrentIndex(static_cast<int>(palette));
 }
@@ -394,15 +395,13 @@ void MainWindow::updateClock() {
 void MainWindow::updateAlarms() {
   alertPanel_->refresh(history_);
   const auto& alerts = history_.alerts();
+  sound_->update(alerts);
   alarmBannerAction_->setVisible(!alerts.empty());
   if (alerts.empty()) return;
   const alerts::Alert& top = alerts.front();
   alarmBanner_->setText(alertTitle(top) +
                         (alerts.size() > 1 ? tr("  (+%1)").arg(alerts.size() - 1) : QString()));
-  const QColor c = alertColour(top.priority);
-  alarmBanner_->setStyleSheet(
-      QStringLiteral("QLabel { background: %1; color: %2; font-weight: bold; padding: 2px 8px; }")
-          .arg(c.name(), top.priority == alerts::Priority::Caution ? "black" : "white"));
+  alarmBanner_->setStyleSheet(alertLabelStyle(top.priority, view_->settings().palette, 2));
   alarmBanner_->setToolTip(tr("The most urgent alert; the Alerts dock lists them all"));
 }
 
@@ -483,6 +482,13 @@ void MainWindow::readSettings() {
       settings.value(QStringLiteral("display/vectorMinutes"), o.vectorMinutes).toDouble(), 1.0, 60.0);
   o.relativeVectors = settings.value(QStringLiteral("display/relativeVectors"), o.relativeVectors).toBool();
   view_->setOverlay(o);
+  charts::MarinerSettings mariner = loadMarinerSettings(settings, view_->settings());
+  mariner.palette = view_->settings().palette;
+  setMarinerSettings(mariner);
+  if (settings.contains(QStringLiteral("alerts/drLimitM")))
+    sensors_->setDrLimit(settings.value(QStringLiteral("alerts/drLimitM")).toDouble());
+  if (settings.contains(QStringLiteral("alerts/discrepancyLimitM")))
+    sensors_->setDiscrepancyLimit(settings.value(QStringLiteral("alerts/discrepancyLimitM")).toDouble());
   const double scale = settings.value(QStringLiteral("display/scale"), 25000.0).toDouble();
   view_->setView(view_->viewport().centre(), std::isfinite(scale) ? scale : 25000.0);
   const int rate = settings.value(QStringLiteral("simulation/rateIndex"), 3).toInt();
@@ -532,6 +538,26 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   }
   writeSettings();
   QMainWindow::closeEvent(event);
+}
+
+bool MainWindow::setMarinerSettings(const charts::MarinerSettings& s) {
+  if (const QString problem = marinerSettingsProblem(s); !problem.isEmpty()) {
+    reportError(problem);
+    return false;
+  }
+  view_->setSettings(s);
+  QSettings settings;
+  saveMarinerSettings(settings, s);
+  showMarinerSettings(s);
+  return true;
+}
+
+void MainWindow::showMarinerSettings(const charts::MarinerSettings& s) {
+  const QSignalBlocker blockCategory(categoryBox_);
+  const QSignalBlocker blockSafety(safetyBox_);
+  categoryBox_->setCurrentIndex(static_cast<int>(s.category));
+  safetyBox_->setRange(s.shallowContourM, s.deepContourM);
+  safetyBox_->setValue(s.safetyContourM);
 }
 
 void MainWindow::reportError(const QString& message) {

@@ -35,6 +35,7 @@ QT_END_NAMESPACE
 namespace reckoner::ui {
 
 class AlertPanel;
+class AlertSound;
 class ErrorPlots;
 class OwnShipPanel;
 class SensorPanel;
@@ -46,6 +47,8 @@ struct MainWindowOptions {
   bool restoreSession = true;  ///< reopen the last scenario and chart named in the settings
   /// On closing with unsaved operator changes, ask whether to save them (tests say no).
   bool askToSaveOnClose = true;
+  /// The alerts' audible signal (never on the offscreen platform; tests say no).
+  bool sound = true;
 };
 
 class MainWindow : public QMainWindow {
@@ -72,6 +75,10 @@ class MainWindow : public QMainWindow {
   /// The operator's CPA (NM) and TCPA (min) limits for dangerous targets and their alarm, for this run
   /// and remembered for the next ones (Tracking > CPA/TCPA limits).
   void setCpaLimits(double cpaNm, double tcpaMin);
+  /// The mariner's chart settings (shallow, safety and deep contours, safety depth, category...): shown
+  /// at once, in the display toolbar too, and remembered for the next runs (Chart > Mariner settings).
+  /// Settings that fail marinerSettingsProblem are refused with that message (false).
+  bool setMarinerSettings(const charts::MarinerSettings& s);
 
   // For tests and the benchmark.
   [[nodiscard]] EcdisView* chart() const { return view_; }
@@ -84,6 +91,7 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] QTableView* targetTable() const { return table_; }
   [[nodiscard]] TargetTableModel* targetModel() const { return model_; }
   [[nodiscard]] AlertPanel* alertPanel() const { return alertPanel_; }
+  [[nodiscard]] AlertSound* alertSound() const { return sound_; }
   /// The toolbar banner with the most urgent alert (shown while there is one).
   [[nodiscard]] QLabel* alarmBanner() const { return alarmBanner_; }
   /// The alert log file: every alert change, one line each, appended across runs (docs/alerts.md).
@@ -124,6 +132,8 @@ class MainWindow : public QMainWindow {
   void buildRangeBox(QToolBar* bar);
   void buildTrackingMenu();
   void askCpaLimits();
+  void editMarinerSettings();
+  void showMarinerSettings(const charts::MarinerSettings& s);  ///< in the display toolbar
   void buildViewMenu();
   void buildHelpMenu();
   void buildRadarMenu();
@@ -160,6 +170,7 @@ class MainWindow : public QMainWindow {
   ErrorPlots* targetPlots_ = nullptr;
   QTextBrowser* pick_ = nullptr;
   AlertPanel* alertPanel_ = nullptr;
+  AlertSound* sound_ = nullptr;
   QLabel* clock_ = nullptr;
   QLabel* alarmBanner_ = nullptr;
   QAction* alarmBannerAction_ = nullptr;  ///< the banner's toolbar action (shows and hides it)
@@ -167,6 +178,8 @@ class MainWindow : public QMainWindow {
   QLabel* cursorLabel_ = nullptr;
   QLabel* chartLabel_ = nullptr;
   QComboBox* rateBox_ = nullptr;
+  QComboBox* categoryBox_ = nullptr;     ///< display toolbar: the display category
+  QDoubleSpinBox* safetyBox_ = nullptr;  ///< display toolbar: the safety contour (shallow to deep)
   QAction* runAction_ = nullptr;
   std::vector<QAction*> trackerKindActions_;  ///< Tracking > Filter for new tracks
   QAction* autoAcquireAction_ = nullptr;      ///< Tracking > Automatic acquisition (follows the tracker)

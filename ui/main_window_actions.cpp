@@ -32,6 +32,7 @@
 #include "ui/main_window.h"
 #include "ui/map/range_scale.h"
 #include "ui/panels/alert_panel.h"
+#include "ui/panels/mariner_settings_dialog.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/sensor_panel.h"
 #include "ui/panels/target_table_model.h"
@@ -73,6 +74,12 @@ void MainWindow::buildDocks() {
   connect(sensors_, &SensorPanel::radarToggled, controller_, &SimulationController::setRadarPower);
   connect(sensors_, &SensorPanel::speedlogModeChosen, controller_, &SimulationController::setSpeedlogMode);
   connect(sensors_, &SensorPanel::drLimitChanged, controller_, &SimulationController::setDrLimit);
+  connect(sensors_, &SensorPanel::drLimitChanged, this,
+          [](double m) { QSettings().setValue(QStringLiteral("alerts/drLimitM"), m); });
+  connect(sensors_, &SensorPanel::discrepancyLimitChanged, controller_,
+          &SimulationController::setDiscrepancyLimit);
+  connect(sensors_, &SensorPanel::discrepancyLimitChanged, this,
+          [](double m) { QSettings().setValue(QStringLiteral("alerts/discrepancyLimitM"), m); });
 
   model_ = new TargetTableModel(this);
   proxy_ = new QSortFilterProxyModel(this);
@@ -270,29 +277,30 @@ void MainWindow::buildDisplayToolbar() {
   connect(palette, &QComboBox::activated, this,
           [this](int i) { setPalette(static_cast<charts::Palette>(i)); });
   display->addWidget(palette);
-  auto* category = new QComboBox(this);
-  category->setObjectName(QStringLiteral("category"));
-  category->addItems({tr("Base"), tr("Standard"), tr("All")});
-  category->setCurrentIndex(1);
-  connect(category, &QComboBox::activated, this, [this](int i) {
+  categoryBox_ = new QComboBox(this);
+  categoryBox_->setObjectName(QStringLiteral("category"));
+  categoryBox_->addItems({tr("Base"), tr("Standard"), tr("All")});
+  categoryBox_->setToolTip(tr("S-52 display category (Chart > Mariner settings for the rest)"));
+  connect(categoryBox_, &QComboBox::activated, this, [this](int i) {
     charts::MarinerSettings s = view_->settings();
     s.category = static_cast<charts::DisplayCategory>(i);
-    view_->setSettings(s);
+    setMarinerSettings(s);
   });
-  display->addWidget(category);
-  auto* safety = new QDoubleSpinBox(this);
-  safety->setObjectName(QStringLiteral("safetyContour"));
-  safety->setPrefix(tr("Safety "));
-  safety->setSuffix(QStringLiteral(" m"));
-  safety->setRange(0.0, 200.0);
-  safety->setValue(view_->settings().safetyContourM);
-  connect(safety, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+  display->addWidget(categoryBox_);
+  safetyBox_ = new QDoubleSpinBox(this);
+  safetyBox_->setObjectName(QStringLiteral("safetyContour"));
+  safetyBox_->setPrefix(tr("Safety "));
+  safetyBox_->setSuffix(QStringLiteral(" m"));
+  safetyBox_->setToolTip(
+      tr("Safety contour, between the shallow and the deep contour (Chart > Mariner settings sets those "
+         "and the safety depth)"));
+  connect(safetyBox_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
     charts::MarinerSettings s = view_->settings();
     s.safetyContourM = v;
-    s.safetyDepthM = v;
-    view_->setSettings(s);
+    setMarinerSettings(s);
   });
-  display->addWidget(safety);
+  display->addWidget(safetyBox_);
+  showMarinerSettings(view_->settings());
   QAction* courseUp = display->addAction(tr("Course up"));
   courseUp->setCheckable(true);
   connect(courseUp, &QAction::toggled, this,
@@ -390,6 +398,7 @@ QString MainWindow::shortcutsText() {
       "<tr><td>Up / Down</td><td>ordered speed +0.5 / -0.5 kn</td></tr>"
       "<tr><td>Esc</td><td>cancel adding or steering a target</td></tr>"
       "<tr><td>Ctrl+O / Ctrl+S / Ctrl+Shift+S</td><td>open / save / save as</td></tr>"
+      "<tr><td>Ctrl+M</td><td>mariner settings (contours, safety depth, category)</td></tr>"
       "<tr><td>Ctrl+Q</td><td>quit (asks to save unsaved changes)</td></tr>"
       "</table>");
 }
@@ -404,6 +413,11 @@ void MainWindow::buildHelpMenu() {
 
 void MainWindow::buildViewMenu() {
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+  QAction* mariner = viewMenu->addAction(tr("Mariner settings..."), this, &MainWindow::editMarinerSettings);
+  mariner->setObjectName(QStringLiteral("marinerSettings"));
+  mariner->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
+  mariner->setToolTip(tr("Shallow, safety and deep contours, safety depth, shades, category, text"));
+  viewMenu->addSeparator();
   // Seed 002's own-ship filters run beside the DRKF on the same sensors; one can be drawn with it.
   QMenu* alt = viewMenu->addMenu(tr("Also show own ship by"));
   alt->setObjectName(QStringLiteral("seed002Menu"));
@@ -427,6 +441,11 @@ void MainWindow::buildViewMenu() {
   addOverlayToggle(viewMenu, tr("Range rings"), &OverlaySettings::showRings);
   viewMenu->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu->addAction(d->toggleViewAction());
+}
+
+void MainWindow::editMarinerSettings() {
+  MarinerSettingsDialog dialog(view_->settings(), this);
+  if (dialog.exec() == QDialog::Accepted) setMarinerSettings(dialog.settings());
 }
 
 QAction* MainWindow::addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member) {

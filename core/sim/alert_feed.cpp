@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
+#include "estimation/models/drkf_state.h"
 #include "navigation/dr_horizon.h"
 
 namespace reckoner::sim {
@@ -16,6 +18,8 @@ void validate(const AlertFeedSettings& s) {
   alerts::validate(s.cpa);
   if (!std::isfinite(s.drLimitM) || s.drLimitM < 0.0)
     throw std::invalid_argument("alerts: dr_limit_m must be a finite number of at least 0");
+  if (!std::isfinite(s.positionDiscrepancyM) || s.positionDiscrepancyM < 0.0)
+    throw std::invalid_argument("alerts: position_discrepancy_m must be a finite number of at least 0");
 }
 
 AlertFeedSettings alertFeedSettingsFor(const Scenario& scenario) {
@@ -39,6 +43,7 @@ void AlertFeed::setSettings(const AlertFeedSettings& s) {
 void AlertFeed::feed(const SimFrame& f, alerts::AlertManager& m) {
   feedTracks(f, m);
   feedOwnShip(f, m);
+  feedDiscrepancy(f, m);
   m.tick(f.timeUs);
 }
 
@@ -101,6 +106,42 @@ void AlertFeed::feedOwnShip(const SimFrame& f, alerts::AlertManager& m) const {
         noisy ? std::string(nav::blockName(static_cast<nav::DrkfBlock>(b))) + " larger than configured" : "");
   }
   m.report(now, {AlertKind::Capacity, 0}, f.capacityWarning, "track capacity near its limit");
+}
+
+void AlertFeed::feedDiscrepancy(const SimFrame& f, alerts::AlertManager& m) {
+  for (const sensors::OwnShipSample& s : f.measurements) {
+    if (const auto* g = std::get_if<sensors::GpsSample>(&s)) gps_ = Fix{g->timeUs, g->position};
+    if (const auto* l = std::get_if<sensors::LoranSample>(&s)) loran_ = Fix{l->timeUs, l->position};
+  }
+  const double limit = settings_.positionDiscrepancyM;
+  const auto fresh = [&](const std::optional<Fix>& x) {
+    return x && toSeconds(f.timeUs - x->timeUs) <= kDiscrepancyFreshS;
+  };
+  double apartM = 0.0;
+  const bool comparable = limit > 0.0 && fresh(gps_) && fresh(loran_);
+  if (comparable) {
+    // The GPS fix moved to the Loran-C fix's time along the estimated velocity over ground.
+    const double dt = toSeconds(loran_->timeUs - gps_->timeUs);
+    const auto& x = f.estimate.x;
+    apartM = std::hypot(loran_->position.xM - (gps_->position.xM + est::drkf::groundVx(x) * dt),
+                        loran_->position.yM - (gps_->position.yM + est::drkf::groundVy(x) * dt));
+  }
+  if (!comparable) {
+    discrepant_ = false;
+  } else if (apartM > limit) {
+    discrepant_ = true;
+    closeSinceUs_.reset();
+  } else if (discrepant_ && apartM < kDiscrepancyClearFraction * limit) {
+    if (!closeSinceUs_) closeSinceUs_ = f.timeUs;
+    if (toSeconds(f.timeUs - *closeSinceUs_) >= kDiscrepancyClearAfterS) discrepant_ = false;
+  } else {
+    closeSinceUs_.reset();
+  }
+  if (!discrepant_) closeSinceUs_.reset();
+  char text[96] = "";
+  if (discrepant_)
+    std::snprintf(text, sizeof text, "GPS and Loran-C %.0f m apart, limit %.0f m", apartM, limit);
+  m.report(f.timeUs, {AlertKind::PositionDiscrepancy, 0}, discrepant_, text);
 }
 
 }  // namespace reckoner::sim

@@ -7,8 +7,12 @@
 //                       tracker acquires in zones only
 //   POSITION SOURCE LOST while own ship is dead reckoning (nav::DeadReckoningMonitor's rule)
 //   DEAD RECKONING LIMIT while the 95% position radius is above the limit (when one is set)
+//   POSITION DISCREPANCY while the primary (GPS) and secondary (Loran-C) fixes are further apart than
+//                       the limit (both fresh; the older moved to the newer's time by the estimated
+//                       velocity over ground; it clears after 30 s below 80% of the limit)
 //   SENSOR NOISE        per DRKF block while its NIS window is above its band
 //   CAPACITY            while the track bank is at its warning level
+#include <optional>
 #include <set>
 
 #include "alerts/alert_manager.h"
@@ -21,8 +25,18 @@ struct AlertFeedSettings {
   alerts::CpaAlertLimits cpa;
   double drLimitM = 0.0;    ///< the 95% radius above which DEAD RECKONING LIMIT holds; 0: no such alert
   bool guardZones = false;  ///< new tracks are guard-zone intrusions (the tracker acquires in zones)
+  /// GPS and Loran-C fixes further apart than this raise POSITION DISCREPANCY; 0: no such alert.
+  double positionDiscrepancyM = kDefaultPositionDiscrepancyM;
+  static constexpr double kDefaultPositionDiscrepancyM = 185.2;  ///< 0.1 NM
 };
-/// Throws std::invalid_argument naming the field (the CPA limits', or dr_limit_m not finite and >= 0).
+/// The discrepancy alert clears when the fixes come closer than this fraction of the limit.
+inline constexpr double kDiscrepancyClearFraction = 0.8;
+/// ... and only after this long (s) below it, so that fixes wandering about the limit raise one alert.
+inline constexpr double kDiscrepancyClearAfterS = 30.0;
+/// Fixes older than this (s) are not compared.
+inline constexpr double kDiscrepancyFreshS = 10.0;
+/// Throws std::invalid_argument naming the field (the CPA limits', or dr_limit_m or
+/// position_discrepancy_m not finite and >= 0).
 void validate(const AlertFeedSettings& s);
 
 /// The settings a scenario implies: its tracker's CPA/TCPA limits and whether it acquires in zones.
@@ -41,10 +55,19 @@ class AlertFeed {
  private:
   void feedTracks(const SimFrame& f, alerts::AlertManager& m);
   void feedOwnShip(const SimFrame& f, alerts::AlertManager& m) const;
+  void feedDiscrepancy(const SimFrame& f, alerts::AlertManager& m);
+
+  struct Fix {
+    TimeUs timeUs = 0;
+    geo::GridPoint position;
+  };
 
   AlertFeedSettings settings_;
   alerts::CpaAlertCondition cpa_;
-  std::set<int> tracks_;  ///< the tracks of the previous frame
+  std::set<int> tracks_;                ///< the tracks of the previous frame
+  std::optional<Fix> gps_, loran_;      ///< the latest fix of each position source
+  bool discrepant_ = false;             ///< POSITION DISCREPANCY holds (with its hysteresis)
+  std::optional<TimeUs> closeSinceUs_;  ///< since when, while it holds, the fixes are close again
 };
 
 }  // namespace reckoner::sim

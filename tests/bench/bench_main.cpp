@@ -355,6 +355,7 @@ void BM_EcdisWindow100x40Targets(benchmark::State& state) {
   }
   s.durationUs = 4 * 3600 * kMicrosPerSecond;
   ui::MainWindowOptions options;
+  options.sound = false;
   options.restoreSession = false;
   ui::MainWindow w(options);
   w.resize(1600, 1000);

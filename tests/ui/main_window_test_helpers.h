@@ -53,6 +53,7 @@ inline MainWindowOptions freshOptions() {
   MainWindowOptions o;
   o.restoreSession = false;
   o.askToSaveOnClose = false;
+  o.sound = false;
   return o;
 }
 

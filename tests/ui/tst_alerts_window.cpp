@@ -12,6 +12,7 @@
 
 #include "main_window_test_helpers.h"
 #include "ui/panels/alert_panel.h"
+#include "ui/panels/alert_sound.h"
 
 using namespace reckoner;
 using namespace reckoner::ui;
@@ -56,6 +57,36 @@ class TestAlertsWindow : public QObject {
  private slots:
   void initTestCase() { isolateFromTheUser("tst_alerts_window"); }
 
+  void theAudibleSignalFollowsTheMostUrgentAudibleAlert() {
+    alerts::Alert warning;
+    warning.priority = alerts::Priority::Warning;
+    alerts::Alert alarm;
+    alarm.priority = alerts::Priority::Alarm;
+    alerts::Alert caution;
+    caution.priority = alerts::Priority::Caution;
+    QCOMPARE(alertSoundPattern({}), AlertSoundPattern::Silent);
+    QCOMPARE(alertSoundPattern({caution}), AlertSoundPattern::Silent);
+    QCOMPARE(alertSoundPattern({caution, warning}), AlertSoundPattern::Warning);
+    QCOMPARE(alertSoundPattern({warning, alarm}), AlertSoundPattern::Alarm);
+    alarm.state = alerts::AlertState::Silenced;  // silenced or acknowledged: not audible
+    QCOMPARE(alertSoundPattern({warning, alarm}), AlertSoundPattern::Warning);
+    warning.state = alerts::AlertState::Acknowledged;
+    QCOMPARE(alertSoundPattern({warning, alarm}), AlertSoundPattern::Silent);
+    // An alarm's burst: three 150 ms tones with 100 ms between them, at 22.05 kHz, 16-bit mono, the
+    // tones loud and the gaps silent.
+    const int rate = 22050;
+    const QByteArray pcm = renderAlertBurst(AlertSoundPattern::Alarm, rate);
+    const AlertSoundTiming t = alertSoundTiming(AlertSoundPattern::Alarm);
+    QCOMPARE(pcm.size(), 2 * (3 * (t.toneMs * rate / 1000) + 2 * (t.gapMs * rate / 1000)));
+    const auto* samples = reinterpret_cast<const qint16*>(pcm.constData());
+    const int toneEnd = t.toneMs * rate / 1000;
+    qint16 peak = 0;
+    for (int i = 0; i < toneEnd; ++i) peak = std::max<qint16>(peak, samples[i]);
+    QVERIFY(peak > 10000);
+    for (int i = toneEnd; i < toneEnd + t.gapMs * rate / 1000; ++i) QCOMPARE(samples[i], qint16(0));
+    QVERIFY(renderAlertBurst(AlertSoundPattern::Silent, rate).isEmpty());
+  }
+
   void anOfficerWorksTheAlertsOfTheDefaultRun() {
     MainWindow w(freshOptions());
     QFile::remove(w.alertLogPath());
@@ -75,6 +106,10 @@ class TestAlertsWindow : public QObject {
     QVERIFY(w.alarmBanner()->text().startsWith(QStringLiteral("ALARM  CPA/TCPA  track")));
     QVERIFY(w.alertPanel()->list()->count() >= 1);
     QVERIFY(w.alertPanel()->list()->item(0)->font().bold());
+    // AND the alarm's audible pattern is on (decided, never played in a test)
+    QVERIFY(!w.alertSound()->canPlay());
+    QCOMPARE(w.alertSound()->pattern(), AlertSoundPattern::Alarm);
+    QVERIFY(w.alertSound()->burstCount() >= 1);
     saveWindowShot(w, QStringLiteral("alerts-cpa"));
 
     // WHEN acknowledged while the target is still dangerous THEN it stays, steady
@@ -93,6 +128,7 @@ class TestAlertsWindow : public QObject {
     QTest::mouseClick(button(w, "silence"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(shows(w, fix, AlertState::Silenced), kTimeoutMs);
     QVERIFY(!w.history().latest().alertAudible);
+    QTRY_COMPARE_WITH_TIMEOUT(w.alertSound()->pattern(), AlertSoundPattern::Silent, kTimeoutMs);
     runUntil(w, 1010.0);
     QVERIFY(shows(w, fix, AlertState::Unacknowledged));
     QVERIFY(w.history().latest().alertAudible);

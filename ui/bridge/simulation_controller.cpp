@@ -94,6 +94,9 @@ void SimulationController::setAutoAcquire(bool on) {
 void SimulationController::setDrLimit(double metres) {
   sim_.post(&SimulationWorker::setDrLimit, metres);
 }
+void SimulationController::setDiscrepancyLimit(double metres) {
+  sim_.post(&SimulationWorker::setDiscrepancyLimit, metres);
+}
 void SimulationController::setCpaLimits(double cpaM, double tcpaS) {
   sim_.post(&SimulationWorker::setCpaLimits, cpaM, tcpaS);
 }

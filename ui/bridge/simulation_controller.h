@@ -38,6 +38,7 @@ class SimulationController : public QObject {
   void cancelTrack(int trackId);
   void setAutoAcquire(bool on);
   void setDrLimit(double metres);
+  void setDiscrepancyLimit(double metres);
   void setCpaLimits(double cpaM, double tcpaS);
   /// One alert acknowledged; every audible alert silenced for 30 s (docs/alerts.md).
   void acknowledgeAlert(alerts::AlertId id);

@@ -121,6 +121,7 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
   alerts_ = alerts::AlertManager{};
   sim::AlertFeedSettings feedSettings = sim::alertFeedSettingsFor(engine_->scenario());
   feedSettings.drLimitM = drLimitM_;
+  feedSettings.positionDiscrepancyM = discrepancyLimitM_;
   alertFeed_.emplace(feedSettings);
   emit loaded(engine_->scenario());
   // The first frame shows the state at t = 0 + one step, so the picture is never empty.
@@ -450,6 +451,18 @@ void SimulationWorker::setDrLimit(double metres) {
   if (alertFeed_) {
     sim::AlertFeedSettings s = alertFeed_->settings();
     s.drLimitM = metres;
+    alertFeed_->setSettings(s);
+  }
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::setDiscrepancyLimit(double metres) {
+  if (!(metres >= 0.0) || !std::isfinite(metres)) return;
+  discrepancyLimitM_ = metres;
+  if (alertFeed_) {
+    sim::AlertFeedSettings s = alertFeed_->settings();
+    s.positionDiscrepancyM = metres;
     alertFeed_->setSettings(s);
   }
   dirty_ = true;

@@ -53,6 +53,8 @@ class SimulationWorker : public QObject {
   void setAutoAcquire(bool on);
   /// The 95% position error limit of the dead-reckoning indication and alert, metres.
   void setDrLimit(double metres);
+  /// The GPS to Loran-C distance above which POSITION DISCREPANCY holds, metres (0: off).
+  void setDiscrepancyLimit(double metres);
   /// The CPA (m) and TCPA (s) limits of the CPA/TCPA alert from now on.
   void setCpaLimits(double cpaM, double tcpaS);
   /// Operator actions on one alert (docs/alerts.md); applied at the current simulated time.
@@ -108,6 +110,7 @@ class SimulationWorker : public QObject {
   qint64 rasterisedNs_ = 0;
   std::shared_ptr<const RadarMatchShown> match_;
   double drLimitM_ = 185.2;  // 0.1 NM
+  double discrepancyLimitM_ = sim::AlertFeedSettings::kDefaultPositionDiscrepancyM;
   alerts::AlertManager alerts_;
   std::optional<sim::AlertFeed> alertFeed_;
   void alertsChanged();

@@ -20,16 +20,42 @@ bool waits(const alerts::Alert& a) {
 
 }  // namespace
 
-QColor alertColour(alerts::Priority p) {
+QColor alertColour(alerts::Priority p, charts::Palette palette) {
+  QColor day = Qt::gray;
   switch (p) {
     case alerts::Priority::Alarm:
-      return {0xc6, 0x28, 0x28};
+      day = QColor(0xc6, 0x28, 0x28);
+      break;
     case alerts::Priority::Warning:
-      return {0xef, 0x6c, 0x00};
+      day = QColor(0xef, 0x6c, 0x00);
+      break;
     case alerts::Priority::Caution:
-      return {0xf9, 0xa8, 0x25};
+      day = QColor(0xf9, 0xa8, 0x25);
+      break;
   }
-  return Qt::gray;
+  // Dusk keeps the hue at 70% of the day's brightness; night at a third, like the chart's night
+  // table, so that the banner is no brighter than the chart's own reds.
+  switch (palette) {
+    case charts::Palette::Day:
+      return day;
+    case charts::Palette::Dusk:
+      return day.darker(140);
+    case charts::Palette::Night:
+      return day.darker(300);
+  }
+  return day;
+}
+
+QString alertLabelStyle(alerts::Priority p, charts::Palette palette, int paddingPx) {
+  QString text = p == alerts::Priority::Caution ? QStringLiteral("black") : QStringLiteral("white");
+  if (palette == charts::Palette::Night)
+    text = QStringLiteral("#a09078");
+  else if (palette == charts::Palette::Dusk && p != alerts::Priority::Caution)
+    text = QStringLiteral("#d8d8d8");
+  return QStringLiteral("QLabel { background: %1; color: %2; font-weight: bold; padding: %3px %4px; }")
+      .arg(alertColour(p, palette).name(), text)
+      .arg(paddingPx)
+      .arg(2 * paddingPx);
 }
 
 AlertPanel::AlertPanel(QWidget* parent) : QWidget(parent) {
@@ -83,7 +109,8 @@ void AlertPanel::refresh(const SimHistory& h) {
         new QListWidgetItem(QStringLiteral("%1  %2  [%3]").arg(timeText(a.raisedUs), alertTitle(a), state));
     item->setToolTip(tr("%1, %2 since %3").arg(alertTitle(a), state, timeText(a.raisedUs)));
     item->setData(Qt::UserRole, QVariant::fromValue(a.id));
-    item->setForeground(alertColour(a.priority));
+    item->setForeground(
+        alertColour(a.priority, palette_ == charts::Palette::Night ? charts::Palette::Dusk : palette_));
     QFont f = item->font();
     f.setBold(waits(a));
     item->setFont(f);

@@ -9,6 +9,7 @@
 #include <QWidget>
 #include <optional>
 
+#include "charts/portrayal/portrayal.h"
 #include "ui/bridge/sim_history.h"
 
 Q_DECLARE_METATYPE(reckoner::alerts::AlertId)
@@ -25,6 +26,8 @@ class AlertPanel : public QWidget {
   [[nodiscard]] std::optional<alerts::AlertId> acknowledgeTarget() const;
   [[nodiscard]] QListWidget* list() const { return list_; }
   [[nodiscard]] QListWidget* historyList() const { return history_; }
+  /// The display palette: the priorities' colours dim at dusk and night (shown from the next refresh).
+  void setDisplayPalette(charts::Palette p) { palette_ = p; }
 
  signals:
   void acknowledgeRequested(reckoner::alerts::AlertId id);
@@ -41,9 +44,13 @@ class AlertPanel : public QWidget {
   std::vector<alerts::Alert> shown_;
   std::uint64_t historyShown_ = 0;  ///< SimHistory::alertHistoryCount() shown
   bool anyAudible_ = false;
+  charts::Palette palette_ = charts::Palette::Day;
 };
 
-/// The colour of a priority on the alert list and banner (day palette).
-QColor alertColour(alerts::Priority p);
+/// The colour of a priority on the alert list and banner, dimmed for dusk and night (a bright red on a
+/// near-black screen would blind the officer of the watch).
+QColor alertColour(alerts::Priority p, charts::Palette palette = charts::Palette::Day);
+/// The style sheet of a label that shows an alert of priority p (the banner, the DR indication).
+QString alertLabelStyle(alerts::Priority p, charts::Palette palette, int paddingPx);
 
 }  // namespace reckoner::ui

@@ -10,6 +10,7 @@
 #include "estimation/gaussian.h"
 #include "io/text_format.h"
 #include "navigation/drkf.h"
+#include "ui/panels/alert_panel.h"
 
 namespace reckoner::ui {
 namespace {
@@ -30,13 +31,16 @@ QString duration(double s) {
 }
 }  // namespace
 
+void OwnShipPanel::setDisplayPalette(charts::Palette p) {
+  dr_->setStyleSheet(alertLabelStyle(alerts::Priority::Alarm, p, 4));
+}
+
 OwnShipPanel::OwnShipPanel(QWidget* parent) : QWidget(parent) {
   auto* v = new QVBoxLayout(this);
   dr_ = new QLabel(this);
   dr_->setObjectName(QStringLiteral("drIndication"));
   dr_->setWordWrap(true);
-  dr_->setStyleSheet(
-      QStringLiteral("QLabel { background: #c62828; color: white; font-weight: bold; padding: 4px; }"));
+  setDisplayPalette(charts::Palette::Day);
   dr_->hide();
   v->addWidget(dr_);
   form_ = new QWidget(this);

@@ -6,6 +6,7 @@
 #include <QWidget>
 #include <array>
 
+#include "charts/portrayal/portrayal.h"
 #include "geo/local_frame.h"
 #include "ui/bridge/live_frame.h"
 
@@ -19,6 +20,8 @@ class OwnShipPanel : public QWidget {
   /// The dead-reckoning banner (tests read it).
   [[nodiscard]] QString drText() const { return dr_->text(); }
   [[nodiscard]] bool drShown() const { return dr_->isVisibleTo(this); }
+  /// The dead-reckoning banner's colours follow the display palette (dim at night).
+  void setDisplayPalette(charts::Palette p);
 
  private:
   QLabel* add(const QString& name);

@@ -4,6 +4,7 @@
 #include <QHBoxLayout>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
+#include <cmath>
 
 namespace reckoner::ui {
 
@@ -50,10 +51,41 @@ SensorPanel::SensorPanel(QWidget* parent) : QWidget(parent) {
   drLimit_->setDecimals(0);
   drLimit_->setSuffix(QStringLiteral(" m"));
   drLimit_->setValue(185.0);
+  drLimit_->setToolTip(
+      tr("An alarm is raised when the 95% radius of the dead-reckoned position grows past this limit "
+         "(remembered for the next runs)"));
   connect(drLimit_, &QDoubleSpinBox::valueChanged, this, &SensorPanel::drLimitChanged);
   form->addRow(tr("DR limit (95%)"), drLimit_);
+  discrepancy_ = new QDoubleSpinBox(this);
+  discrepancy_->setObjectName(QStringLiteral("discrepancyLimit"));
+  discrepancy_->setRange(0.0, 20000.0);
+  discrepancy_->setDecimals(0);
+  discrepancy_->setSuffix(QStringLiteral(" m"));
+  discrepancy_->setSpecialValueText(tr("off"));
+  discrepancy_->setValue(sim::AlertFeedSettings::kDefaultPositionDiscrepancyM);
+  discrepancy_->setToolTip(
+      tr("A warning is raised when the GPS (primary) and Loran-C (secondary) fixes are further apart "
+         "than this; 0 switches it off (remembered for the next runs)"));
+  connect(discrepancy_, &QDoubleSpinBox::valueChanged, this, &SensorPanel::discrepancyLimitChanged);
+  form->addRow(tr("GPS/Loran-C discrepancy"), discrepancy_);
   v->addLayout(form);
   v->addStretch(1);
+}
+
+double SensorPanel::drLimit() const {
+  return drLimit_->value();
+}
+
+void SensorPanel::setDrLimit(double metres) {
+  if (std::isfinite(metres)) drLimit_->setValue(metres);
+}
+
+double SensorPanel::discrepancyLimit() const {
+  return discrepancy_->value();
+}
+
+void SensorPanel::setDiscrepancyLimit(double metres) {
+  if (std::isfinite(metres)) discrepancy_->setValue(metres);
 }
 
 void SensorPanel::setFitted(const sim::Scenario& s) {

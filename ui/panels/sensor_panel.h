@@ -10,6 +10,7 @@
 #include <array>
 
 #include "navigation/drkf.h"
+#include "sim/alert_feed.h"
 #include "sim/scenario.h"
 
 namespace reckoner::ui {
@@ -30,6 +31,13 @@ class SensorPanel : public QWidget {
   }
   [[nodiscard]] QCheckBox* box(sensors::SensorId id) const { return boxes_[static_cast<std::size_t>(id)]; }
   [[nodiscard]] QCheckBox* radarBox() const { return radar_; }
+  /// The dead-reckoning alarm limit (95% radius, m), as the operator set it.
+  [[nodiscard]] double drLimit() const;
+  /// Sets it (clamped to the box's 10 m to 20 km), as if typed: drLimitChanged follows a change.
+  void setDrLimit(double metres);
+  /// The GPS to Loran-C distance for POSITION DISCREPANCY (m; 0 off), as drLimit.
+  [[nodiscard]] double discrepancyLimit() const;
+  void setDiscrepancyLimit(double metres);
   [[nodiscard]] QComboBox* logMode() const { return logMode_; }
 
  signals:
@@ -37,6 +45,7 @@ class SensorPanel : public QWidget {
   void radarToggled(bool on);
   void speedlogModeChosen(reckoner::sensors::SpeedlogMode mode);
   void drLimitChanged(double metres);
+  void discrepancyLimitChanged(double metres);
 
  private:
   std::array<QCheckBox*, sensors::kOwnShipSensorCount> boxes_{};
@@ -44,6 +53,7 @@ class SensorPanel : public QWidget {
   QCheckBox* radar_;
   QComboBox* logMode_;
   QDoubleSpinBox* drLimit_;
+  QDoubleSpinBox* discrepancy_;
 };
 
 }  // namespace reckoner::ui

@@ -139,6 +139,72 @@ class TestAlertFeed : public QObject {
         count(runWithAlerts(s, alertFeedSettingsFor(s), probe), AlertKind::DeadReckoningLimit, E::Raised), 0);
   }
 
+  void gpsAndLoranFurtherApartThanTheLimitRaiseOneDiscrepancy() {
+    AlertFeedSettings settings;
+    settings.positionDiscrepancyM = 185.0;
+    AlertFeed feed(settings);
+    alerts::AlertManager m;
+    const alerts::AlertId id{AlertKind::PositionDiscrepancy, 0};
+    // GIVEN own ship at 10 m/s east (velocity through the water, no current), GPS every second and a
+    // Loran-C fix half a second later: the Loran-C fix is where GPS puts the ship then, plus an offset
+    const auto frame = [](double tS, double loranOffsetM) {
+      SimFrame f;
+      f.timeUs = fromSeconds(tS);
+      f.estimate.x.setZero();
+      f.estimate.x[est::drkf::kVelX] = 10.0;
+      f.estimate.P.setIdentity();
+      sensors::GpsSample g;
+      g.timeUs = fromSeconds(tS - 0.5);
+      g.position = {10.0 * (tS - 0.5), 0.0};
+      sensors::LoranSample l;
+      l.timeUs = fromSeconds(tS);
+      l.position = {10.0 * tS, loranOffsetM};
+      f.measurements = {g, l};
+      return f;
+    };
+    // WHEN they agree (the 5 m the ship ran between the fixes is not a discrepancy) THEN nothing
+    for (int t = 1; t <= 20; ++t) feed.feed(frame(t, 20.0), m);
+    QVERIFY(!m.find(id));
+    // WHEN the Loran-C fix wanders 50 m either side of the limit for two minutes THEN one alert
+    for (int t = 21; t <= 140; ++t) feed.feed(frame(t, 185.0 + (t % 2 == 0 ? 50.0 : -50.0)), m);
+    QCOMPARE(m.raisedCount(AlertKind::PositionDiscrepancy), 1);
+    QVERIFY(m.find(id));
+    QVERIFY(m.find(id)->text.find("GPS and Loran-C") != std::string::npos);
+    // WHEN they agree again (below 80% of the limit) THEN the condition ends after 30 s
+    for (int t = 141; t <= 169; ++t) feed.feed(frame(t, 100.0), m);
+    QVERIFY(m.find(id)->state != alerts::AlertState::Rectified);
+    QVERIFY(m.find(id)->text.find("limit 185 m") != std::string::npos);
+    for (int t = 170; t <= 172; ++t) feed.feed(frame(t, 100.0), m);
+    QVERIFY(!m.find(id) || m.find(id)->state == alerts::AlertState::Rectified);
+    // AND a stale fix is never compared: Loran-C gone for 11 s leaves GPS alone, no alert
+    AlertFeed quiet(settings);
+    alerts::AlertManager m2;
+    SimFrame f = frame(1, 500.0);
+    quiet.feed(f, m2);
+    QVERIFY(m2.find(id));
+    for (int t = 2; t <= 12; ++t) {
+      SimFrame g = frame(t, 500.0);
+      g.measurements.pop_back();  // no Loran-C
+      quiet.feed(g, m2);
+    }
+    QVERIFY(!m2.find(id) || m2.find(id)->state == alerts::AlertState::Rectified);
+  }
+
+  void theDefaultRunHasNoDiscrepancyAtTheDefaultLimitButATightOneFindsLoranErrors() {
+    // The default scenario's Loran-C error is a Gauss-Markov process of 33 m sd per axis: far inside
+    // 0.1 NM, and often outside 30 m.
+    const Scenario s = builtin("default");
+    AlertFeedSettings settings = alertFeedSettingsFor(s);
+    using E = alerts::AlertLogEntry::Event;
+    alerts::AlertManager m;
+    QCOMPARE(count(runWithAlerts(s, settings, m), AlertKind::PositionDiscrepancy, E::Raised), 0);
+    settings.positionDiscrepancyM = 30.0;
+    alerts::AlertManager tight;
+    const int raised = count(runWithAlerts(s, settings, tight), AlertKind::PositionDiscrepancy, E::Raised);
+    qInfo("a 30 m discrepancy limit: %d alerts in the default run", raised);
+    QVERIFY(raised >= 1);
+  }
+
   void settingsComeFromTheScenarioAndAreChecked() {
     Scenario s = builtin("default");
     s.tracker.dangerCpaM = 926.0;
@@ -153,6 +219,14 @@ class TestAlertFeed : public QObject {
       QFAIL("a negative DR limit was accepted");
     } catch (const std::invalid_argument& e) {
       QVERIFY(std::string(e.what()).find("dr_limit_m") != std::string::npos);
+    }
+    a.drLimitM = 0.0;
+    a.positionDiscrepancyM = std::nan("");
+    try {
+      AlertFeed feed(a);
+      QFAIL("a NaN discrepancy limit was accepted");
+    } catch (const std::invalid_argument& e) {
+      QVERIFY(std::string(e.what()).find("position_discrepancy_m") != std::string::npos);
     }
   }
 };

@@ -113,12 +113,14 @@ void readTrackLife(Fields& f, sim::TrackerSpec& tr) {
   if (const JsonValue* a = f.get("auto_acquire")) tr.autoAcquire = f.boolean(*a, f.pathOf("auto_acquire"));
 }
 
-void readAcquisitionZones(Fields& f, sim::TrackerSpec& tr) {
-  const JsonValue* z = f.get("acquisition_zones");
-  if (!z) return;
-  if (!z->isArray()) f.fail(*z, f.pathOf("acquisition_zones"), "must be an array of zones");
+/// An array of ring sectors under `key` of f.
+std::vector<track::AcquisitionZone> readZones(Fields& f, const char* key) {
+  std::vector<track::AcquisitionZone> zones;
+  const JsonValue* z = f.get(key);
+  if (!z) return zones;
+  if (!z->isArray()) f.fail(*z, f.pathOf(key), "must be an array of zones");
   for (std::size_t i = 0; i < z->array.size(); ++i) {
-    Fields g(f.file(), z->array[i], f.pathOf("acquisition_zones") + "[" + std::to_string(i) + "]");
+    Fields g(f.file(), z->array[i], f.pathOf(key) + "[" + std::to_string(i) + "]");
     track::AcquisitionZone zone;
     zone.minRangeM = nmToMetres(g.numberOr("min_range_nm", 0.0, Fields::Check::NonNegative));
     zone.maxRangeM = nmToMetres(g.number("max_range_nm", Fields::Check::Positive));
@@ -127,7 +129,27 @@ void readAcquisitionZones(Fields& f, sim::TrackerSpec& tr) {
     zone.fromBearingRad = degToRad(g.numberOr("from_bearing_deg", 0.0));
     zone.toBearingRad = degToRad(g.numberOr("to_bearing_deg", 0.0));
     g.finish();
-    tr.zones.push_back(zone);
+    zones.push_back(zone);
+  }
+  return zones;
+}
+
+/// The zones ("acquisition_zones") and their later changes ("acquisition_zone_changes").
+void readAcquisitionZones(Fields& f, sim::TrackerSpec& tr, TimeUs durationUs) {
+  tr.zones = readZones(f, "acquisition_zones");
+  const JsonValue* ch = f.get("acquisition_zone_changes");
+  if (!ch) return;
+  if (!ch->isArray())
+    f.fail(*ch, f.pathOf("acquisition_zone_changes"), "must be an array of {\"t_s\", \"zones\"}");
+  for (std::size_t i = 0; i < ch->array.size(); ++i) {
+    Fields g(f.file(), ch->array[i], f.pathOf("acquisition_zone_changes") + "[" + std::to_string(i) + "]");
+    const TimeUs t = timeField(g, "t_s", durationUs);
+    if (!tr.zoneChanges.empty() && t <= tr.zoneChanges.back().first)
+      g.fail(*g.get("t_s"), g.pathOf("t_s"), "must increase from change to change");
+    g.require("zones");
+    auto zones = readZones(g, "zones");
+    g.finish();
+    tr.zoneChanges.emplace_back(t, std::move(zones));
   }
 }
 
@@ -217,7 +239,7 @@ void readTracker(Fields& top, sim::Scenario& s) {
   readTrackerModels(f, tr);
   readTrackerAssociation(f, tr);
   readTrackLife(f, tr);
-  readAcquisitionZones(f, tr);
+  readAcquisitionZones(f, tr, s.durationUs);
   tr.dangerCpaM =
       nmToMetres(f.numberOr("danger_cpa_nm", metresToNm(tr.dangerCpaM), Fields::Check::NonNegative));
   tr.dangerTcpaS = 60.0 * f.numberOr("danger_tcpa_min", tr.dangerTcpaS / 60.0, Fields::Check::NonNegative);

@@ -259,6 +259,20 @@ void writeMOfN(JsonWriter& w, std::string_view key, int hits, int sweeps) {
   w.key(key).beginObject().key("hits").value(hits).key("of_sweeps").value(sweeps).endObject();
 }
 
+/// Ring sectors as the reader takes them.
+void writeZones(JsonWriter& w, const std::vector<track::AcquisitionZone>& zones) {
+  w.beginArray();
+  for (const auto& z : zones) {
+    w.beginObject();
+    w.key("min_range_nm").value(metresToNm(z.minRangeM), kExact);
+    w.key("max_range_nm").value(metresToNm(z.maxRangeM), kExact);
+    w.key("from_bearing_deg").value(radToDeg(z.fromBearingRad), kExact);
+    w.key("to_bearing_deg").value(radToDeg(z.toBearingRad), kExact);
+    w.endObject();
+  }
+  w.endArray();
+}
+
 /// The tracker's track management: models, association, M of N, zones and the danger limits.
 void writeTrackManagement(JsonWriter& w, const sim::TrackerSpec& t) {
   w.key("own_acceleration");
@@ -274,14 +288,12 @@ void writeTrackManagement(JsonWriter& w, const sim::TrackerSpec& t) {
   writeMOfN(w, "keep", t.keepHits, t.keepSweeps);
   w.key("lost_hold_s").value(t.lostHoldS, kExact);
   w.key("auto_acquire").value(t.autoAcquire);
-  if (!t.zones.empty()) {
-    w.key("acquisition_zones").beginArray();
-    for (const auto& z : t.zones) {
-      w.beginObject();
-      w.key("min_range_nm").value(metresToNm(z.minRangeM), kExact);
-      w.key("max_range_nm").value(metresToNm(z.maxRangeM), kExact);
-      w.key("from_bearing_deg").value(radToDeg(z.fromBearingRad), kExact);
-      w.key("to_bearing_deg").value(radToDeg(z.toBearingRad), kExact);
+  if (!t.zones.empty()) writeZones(w.key("acquisition_zones"), t.zones);
+  if (!t.zoneChanges.empty()) {
+    w.key("acquisition_zone_changes").beginArray();
+    for (const auto& [when, zones] : t.zoneChanges) {
+      w.beginObject().key("t_s").value(toSeconds(when), kExact);
+      writeZones(w.key("zones"), zones);
       w.endObject();
     }
     w.endArray();

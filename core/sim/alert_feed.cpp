@@ -26,7 +26,6 @@ AlertFeedSettings alertFeedSettingsFor(const Scenario& scenario) {
   AlertFeedSettings s;
   s.cpa.cpaM = scenario.tracker.dangerCpaM;
   s.cpa.tcpaS = scenario.tracker.dangerTcpaS;
-  s.guardZones = !scenario.tracker.zones.empty();
   return s;
 }
 
@@ -68,7 +67,8 @@ void AlertFeed::feedTracks(const SimFrame& f, alerts::AlertManager& m) {
     // Texts only for conditions that hold (the manager ignores the text of one that does not): this
     // runs for every track at every step.
     const bool lost = t.status == track::TrackStatus::Lost;
-    const bool intruder = settings_.guardZones && t.status == track::TrackStatus::Tentative && !t.manual;
+    const bool intruder =
+        settings_.guardZones && !f.zones.empty() && t.status == track::TrackStatus::Tentative && !t.manual;
     m.report(now, {AlertKind::CpaTcpa, t.trackId}, danger,
              danger ? alerts::cpaAlertText(t.trackId, cpa) : "");
     m.report(now, {AlertKind::LostTarget, t.trackId}, lost, lost ? trackText(t.trackId, " lost") : "");

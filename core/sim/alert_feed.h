@@ -3,8 +3,8 @@
 // alerts::AlertManager (docs/alerts.md), so that the window and the command line raise the same alerts:
 //   CPA/TCPA            per confirmed track, with hysteresis (alerts::CpaAlertCondition)
 //   LOST TARGET         per track while it is lost
-//   GUARD ZONE          per track while it is a new (tentative, automatically acquired) track, when the
-//                       tracker acquires in zones only
+//   GUARD ZONE          per track while it is a new (tentative, automatically acquired) track, while the
+//                       tracker acquires in zones only (SimFrame::zones not empty)
 //   POSITION SOURCE LOST while own ship is dead reckoning (nav::DeadReckoningMonitor's rule)
 //   DEAD RECKONING LIMIT while the 95% position radius is above the limit (when one is set)
 //   POSITION DISCREPANCY while the primary (GPS) and secondary (Loran-C) fixes are further apart than
@@ -23,8 +23,8 @@ namespace reckoner::sim {
 
 struct AlertFeedSettings {
   alerts::CpaAlertLimits cpa;
-  double drLimitM = 0.0;    ///< the 95% radius above which DEAD RECKONING LIMIT holds; 0: no such alert
-  bool guardZones = false;  ///< new tracks are guard-zone intrusions (the tracker acquires in zones)
+  double drLimitM = 0.0;   ///< the 95% radius above which DEAD RECKONING LIMIT holds; 0: no such alert
+  bool guardZones = true;  ///< new tracks are guard-zone intrusions while the tracker acquires in zones
   /// GPS and Loran-C fixes further apart than this raise POSITION DISCREPANCY; 0: no such alert.
   double positionDiscrepancyM = kDefaultPositionDiscrepancyM;
   static constexpr double kDefaultPositionDiscrepancyM = 185.2;  ///< 0.1 NM

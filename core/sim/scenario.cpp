@@ -201,6 +201,17 @@ void checkFilter(ScenarioCheck& c, const FilterSpec& f) {
   c.number("filter.min_speed_mps", f.minSpeedMps, limits::kSpeedThresholdMps);
 }
 
+void checkZones(ScenarioCheck& c, const std::string& path, const std::vector<track::AcquisitionZone>& zones) {
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    const std::string z = path + "[" + std::to_string(i) + "]";
+    c.number(z + ".min_range_nm", metresToNm(zones[i].minRangeM), limits::kDistanceNm);
+    c.number(z + ".max_range_nm", metresToNm(zones[i].maxRangeM), limits::kRadarRangeNm);
+    c.number(z + ".from_bearing_deg", radToDeg(zones[i].fromBearingRad), limits::kBearingDeg);
+    c.number(z + ".to_bearing_deg", radToDeg(zones[i].toBearingRad), limits::kBearingDeg);
+    if (!(zones[i].maxRangeM > zones[i].minRangeM)) c.fail(z + ".max_range_nm", "must exceed min_range_nm");
+  }
+}
+
 void checkTracker(ScenarioCheck& c, const Scenario& s) {
   const TrackerSpec& tr = s.tracker;
   c.gaussMarkov("tracker.own_acceleration", "sigma_mps2", tr.ownAcceleration, limits::kAccelSdMps2);
@@ -212,12 +223,14 @@ void checkTracker(ScenarioCheck& c, const Scenario& s) {
   c.number("tracker.capacity", static_cast<double>(tr.capacity),
            {1.0, limits::kMaxTrackCapacity, false, "tracks"});
   c.number("tracker.lost_hold_s", tr.lostHoldS, limits::kHoldS);
-  for (std::size_t i = 0; i < tr.zones.size(); ++i) {
-    const std::string z = "tracker.acquisition_zones[" + std::to_string(i) + "]";
-    c.number(z + ".min_range_nm", metresToNm(tr.zones[i].minRangeM), limits::kDistanceNm);
-    c.number(z + ".max_range_nm", metresToNm(tr.zones[i].maxRangeM), limits::kRadarRangeNm);
-    c.number(z + ".from_bearing_deg", radToDeg(tr.zones[i].fromBearingRad), limits::kBearingDeg);
-    c.number(z + ".to_bearing_deg", radToDeg(tr.zones[i].toBearingRad), limits::kBearingDeg);
+  checkZones(c, "tracker.acquisition_zones", tr.zones);
+  TimeUs lastZones = -1;
+  for (std::size_t i = 0; i < tr.zoneChanges.size(); ++i) {
+    const std::string at = "tracker.acquisition_zone_changes[" + std::to_string(i) + "]";
+    c.time(at + ".t_s", tr.zoneChanges[i].first);
+    if (tr.zoneChanges[i].first <= lastZones) c.fail(at + ".t_s", "must increase from change to change");
+    lastZones = tr.zoneChanges[i].first;
+    checkZones(c, at + ".zones", tr.zoneChanges[i].second);
   }
   c.number("tracker.danger_cpa_nm", metresToNm(tr.dangerCpaM), limits::kDistanceNm);
   c.number("tracker.danger_tcpa_min", tr.dangerTcpaS / 60.0, limits::kTcpaMin);
@@ -317,6 +330,13 @@ track::TrackerKind trackerKindAt(const TrackerSpec& t, TimeUs time) {
     k = kind;
   }
   return k;
+}
+
+std::pair<const std::vector<track::AcquisitionZone>*, int> zonesAt(const TrackerSpec& t, TimeUs time) {
+  std::pair<const std::vector<track::AcquisitionZone>*, int> in{&t.zones, -1};
+  for (std::size_t i = 0; i < t.zoneChanges.size() && t.zoneChanges[i].first <= time; ++i)
+    in = {&t.zoneChanges[i].second, static_cast<int>(i)};
+  return in;
 }
 
 track::TrackManagerConfig trackManagerConfigFor(const TrackerSpec& t, double sweepPeriodS) {

@@ -77,6 +77,9 @@ struct TrackerSpec {
   double lostHoldS = 60.0;
   bool autoAcquire = true;
   std::vector<track::AcquisitionZone> zones;  ///< empty: the whole picture
+  /// Later changes of the zones (the operator's, drawn on the chart), in increasing time: from each
+  /// change's time on, its zones replace the previous ones.
+  std::vector<std::pair<TimeUs, std::vector<track::AcquisitionZone>>> zoneChanges;
   double dangerCpaM = 1852.0;
   double dangerTcpaS = 720.0;
   /// The filter of every track (track_filter.h) and the parameters of each kind.
@@ -91,6 +94,8 @@ struct TrackerSpec {
 
 /// The filter for tracks started at t.
 track::TrackerKind trackerKindAt(const TrackerSpec& t, TimeUs time);
+/// The acquisition zones in force at t, and the index of the change that set them (-1: the initial).
+std::pair<const std::vector<track::AcquisitionZone>*, int> zonesAt(const TrackerSpec& t, TimeUs time);
 
 /// The track manager configuration a scenario implies (sweep period from the radar).
 track::TrackManagerConfig trackManagerConfigFor(const TrackerSpec& t, double sweepPeriodS);

@@ -295,6 +295,7 @@ SimFrame SimulationEngine::step() {
     const TimeUs t = std::min({tOwn, nextSweepUs_, tPlot});
     if (t > end) break;
     manager_->setTrackerKind(trackerKindAt(scenario_.tracker, t));
+    applyZonesAt(t);
     if (t == tOwn) {
       ownShipEpoch(t, frame);
     } else if (t == nextSweepUs_) {
@@ -331,6 +332,7 @@ SimFrame SimulationEngine::step() {
   }
   frame.trackEvents = manager_->takeEvents();
   frame.capacityWarning = manager_->capacityWarning();
+  frame.zones = manager_->zones();
   for (const auto& u : frame.updates) deadReckoning_.addEpoch(u);
   for (const auto& r : frame.radarFixes)
     if (r.valid && r.update.applied()) deadReckoning_.addRadarFix(r.timeUs);
@@ -503,6 +505,23 @@ void SimulationEngine::setTrackerKind(track::TrackerKind kind) {
   const TimeUs t = commandTimeUs();
   while (!changes.empty() && changes.back().first >= t) changes.pop_back();
   changes.emplace_back(t, kind);
+}
+
+void SimulationEngine::applyZonesAt(TimeUs t) {
+  const auto [zones, change] = zonesAt(scenario_.tracker, t);
+  if (change == zonesApplied_) return;
+  manager_->setZones(*zones);
+  zonesApplied_ = change;
+}
+
+bool SimulationEngine::setAcquisitionZones(const std::vector<track::AcquisitionZone>& zones) {
+  if (!std::all_of(zones.begin(), zones.end(), track::validZone)) return false;
+  auto& changes = scenario_.tracker.zoneChanges;
+  const TimeUs t = commandTimeUs();
+  while (!changes.empty() && changes.back().first >= t) changes.pop_back();
+  changes.emplace_back(t, zones);
+  zonesApplied_ = -2;  // the next event applies whatever is in force then
+  return true;
 }
 
 void SimulationEngine::setRadarMatching(bool on) {

@@ -99,6 +99,8 @@ struct SimFrame {
   std::vector<SweepSnapshot> sweeps;         ///< sweeps that ended during this cycle
   std::vector<track::TrackEvent> trackEvents;
   bool capacityWarning = false;
+  /// The acquisition (guard) zones in force at timeUs (true bearings from own ship).
+  std::vector<track::AcquisitionZone> zones;
   /// Dead reckoning at timeUs: no recent position fix (nav::DeadReckoningMonitor's rule).
   nav::DeadReckoningStatus deadReckoning;
 };
@@ -146,6 +148,9 @@ class SimulationEngine {
   void setRadarPower(bool on);
   /// The filter of tracks started from now on (tracks keep theirs).
   void setTrackerKind(track::TrackerKind kind);
+  /// The acquisition (guard) zones from now on (empty: the whole picture); false, changing nothing,
+  /// when one is not a ring sector (track::validZone).
+  bool setAcquisitionZones(const std::vector<track::AcquisitionZone>& zones);
   /// The chart contours for radar matching (scenario.radarMatching); null: none.
   void setCoastline(std::shared_ptr<const radar::Coastline> coast) { coast_ = std::move(coast); }
   /// Radar matching on or off from now (an operator change, recorded in radarMatching.active).
@@ -164,6 +169,7 @@ class SimulationEngine {
   [[nodiscard]] TimeUs commandTimeUs() const { return timeUs_ + 1; }
 
  private:
+  void applyZonesAt(TimeUs t);
   struct Clock {
     bool fitted = false;
     TimeUs periodUs = 0;
@@ -201,6 +207,7 @@ class SimulationEngine {
   sensors::RadarSimulator radar_;
   std::optional<track::TrackManager> manager_;
   TimeUs nextSweepUs_ = 0;
+  int zonesApplied_ = -1;  ///< the zone change in force in the tracker (zonesAt; -1 the initial zones)
   std::deque<PendingPlot> pending_;
   TimeUs timeUs_ = 0;
   TimeUs gridTimeUs_ = -1;

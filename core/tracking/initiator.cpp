@@ -16,6 +16,11 @@ bool AcquisitionZone::contains(double rangeM, double trueBearingRad) const {
   return wrapTwoPi(trueBearingRad - fromBearingRad) <= span;
 }
 
+bool validZone(const AcquisitionZone& z) {
+  return z.minRangeM >= 0.0 && z.maxRangeM > z.minRangeM && std::isfinite(z.maxRangeM) &&
+         std::isfinite(z.fromBearingRad) && std::isfinite(z.toBearingRad);
+}
+
 bool inAcquisitionZones(const std::vector<AcquisitionZone>& zones, const GridPlot& plot,
                         double convergenceRad) {
   if (zones.empty()) return true;

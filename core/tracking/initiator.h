@@ -21,7 +21,10 @@ struct AcquisitionZone {
   double fromBearingRad = 0.0;
   double toBearingRad = 0.0;
   [[nodiscard]] bool contains(double rangeM, double trueBearingRad) const;
+  friend bool operator==(const AcquisitionZone&, const AcquisitionZone&) = default;
 };
+/// 0 <= min range < max range (finite) and finite bearings.
+[[nodiscard]] bool validZone(const AcquisitionZone& z);
 
 /// True when the plot lies in one of the zones (its true bearing: grid bearing + convergenceRad at
 /// own ship); no zones: everywhere.

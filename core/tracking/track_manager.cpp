@@ -58,10 +58,14 @@ std::string TrackManagerConfig::check() const {
   if (association == Association::Nearest && !(filter.gateProbability > 0.0))
     return "nearest-neighbour association needs a gate (gate probability > 0)";
   for (const auto& z : zones)
-    if (!(z.minRangeM >= 0.0) || !(z.maxRangeM > z.minRangeM) || !std::isfinite(z.fromBearingRad) ||
-        !std::isfinite(z.toBearingRad))
-      return "acquisition zones need 0 <= min range < max range and finite bearings";
+    if (!validZone(z)) return "acquisition zones need 0 <= min range < max range and finite bearings";
   return {};
+}
+
+bool TrackManager::setZones(const std::vector<AcquisitionZone>& zones) {
+  if (!std::all_of(zones.begin(), zones.end(), validZone)) return false;
+  config_.zones = zones;
+  return true;
 }
 
 TrackManager::TrackManager(const TrackManagerConfig& config)

@@ -125,6 +125,10 @@ class TrackManager {
   void cancelAll();
   /// Automatic acquisition on or off from now (the operator's switch; manual acquisition always works).
   void setAutoAcquire(bool on) { config_.autoAcquire = on; }
+  /// The acquisition (guard) zones from now on; false, changing nothing, when one is not a ring sector
+  /// (TrackManagerConfig::check's rule).
+  bool setZones(const std::vector<AcquisitionZone>& zones);
+  [[nodiscard]] const std::vector<AcquisitionZone>& zones() const { return config_.zones; }
   /// The operator's CPA and TCPA limits of the dangerous-target flag from now on (ignored unless both
   /// are finite and >= 0, as TrackManagerConfig::check demands).
   void setDangerLimits(double cpaM, double tcpaS);

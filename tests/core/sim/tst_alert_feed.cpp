@@ -7,6 +7,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "common/units.h"
 #include "files/scenario_json.h"
 #include "navigation/dr_horizon.h"
 #include "resources/embedded.h"
@@ -205,6 +206,25 @@ class TestAlertFeed : public QObject {
     QVERIFY(raised >= 1);
   }
 
+  void newTracksInAGuardZoneRaiseItsWarningWhileThereAreZones() {
+    // GIVEN the default run acquiring in one zone all round own ship out to 6 NM, and from 600 s on
+    // (the operator removed it) in the whole picture
+    Scenario s = builtin("default");
+    s.tracker.zones = {track::AcquisitionZone{0.0, nmToMetres(6.0), 0.0, 0.0}};
+    s.tracker.zoneChanges = {{fromSeconds(600.0), {}}};
+    alerts::AlertManager m;
+    const Run r = runWithAlerts(s, alertFeedSettingsFor(s), m);
+    using E = alerts::AlertLogEntry::Event;
+    // THEN the new tracks before 600 s raised GUARD ZONE, none after
+    int before = 0, after = 0;
+    for (const auto& e : r.log)
+      if (e.id.kind == AlertKind::GuardZone && e.event == E::Raised)
+        ++(e.timeUs < fromSeconds(600.0) ? before : after);
+    qInfo("GUARD ZONE raised %d times before the zone was removed, %d after", before, after);
+    QVERIFY(before >= 3);
+    QCOMPARE(after, 0);
+  }
+
   void settingsComeFromTheScenarioAndAreChecked() {
     Scenario s = builtin("default");
     s.tracker.dangerCpaM = 926.0;
@@ -212,7 +232,7 @@ class TestAlertFeed : public QObject {
     AlertFeedSettings a = alertFeedSettingsFor(s);
     QCOMPARE(a.cpa.cpaM, 926.0);
     QCOMPARE(a.cpa.tcpaS, 360.0);
-    QVERIFY(!a.guardZones);
+    QVERIFY(a.guardZones);
     a.drLimitM = -1.0;
     try {
       AlertFeed feed(a);

@@ -156,7 +156,14 @@ class TestSimulationEngine : public QObject {
     const auto stepTo = [&](double tS) {
       while (!live.finished() && toSeconds(live.timeUs()) < tS) liveFrames.push_back(live.step());
     };
+    stepTo(30);
+    // Guard zones drawn on the chart: a ring sector ahead, later none (the whole picture again).
+    const track::AcquisitionZone ahead{200.0, 5000.0, degToRad(60.0), degToRad(180.0)};
+    QVERIFY(live.setAcquisitionZones({ahead}));
+    QVERIFY(!live.setAcquisitionZones({track::AcquisitionZone{500.0, 100.0, 0.0, 0.0}}));  // min > max
     stepTo(60);
+    QCOMPARE(liveFrames.back().zones.size(), std::size_t(1));
+    QVERIFY(liveFrames.back().zones.front() == ahead);
     live.orderOwnShip(HelmOrder{degToRad(200.0), 4.0});
     stepTo(90);
     live.setSensorPower(SensorId::Gps, false);
@@ -173,6 +180,7 @@ class TestSimulationEngine : public QObject {
     stepTo(130);
     live.setRadarPower(true);
     live.orderOwnShip(HelmOrder{degToRad(90.0), 6.0});
+    QVERIFY(live.setAcquisitionZones({}));
     QVERIFY(live.orderTarget(1, HelmOrder{degToRad(300.0), 3.0, degToRad(1.0), 0.05}));
     QVERIFY(!live.orderTarget(99, HelmOrder{0.0, 1.0}));
     stepTo(1800);
@@ -191,6 +199,10 @@ class TestSimulationEngine : public QObject {
     QCOMPARE(reopened.targets.size(), original.targets.size() + 1);
     QCOMPARE(reopened.gps.power.at(fromSeconds(90.0)), true);  // the epoch at 90 s had GPS
     QCOMPARE(reopened.gps.power.at(fromSeconds(91.0)), false);
+    QCOMPARE(reopened.tracker.zoneChanges.size(), std::size_t(2));
+    QVERIFY(reopened.tracker.zoneChanges[0].second == std::vector<track::AcquisitionZone>{ahead});
+    QVERIFY(reopened.tracker.zoneChanges[1].second.empty());
+    QVERIFY(liveFrames[1000].zones.empty());
     SimulationEngine again(reopened, reopened.seed);
     const std::vector<SimFrame> againFrames = runAll(again);
     const double diff = runDifference(liveFrames, againFrames);

@@ -111,6 +111,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
     controller_->orderTarget(target, course, speed, degToRad(1.0), 0.05);
   });
   connect(view_, &EcdisView::acquireRequested, controller_, &SimulationController::acquireAt);
+  connect(view_, &EcdisView::zonesEdited, controller_, &SimulationController::setAcquisitionZones);
   connect(view_, &EcdisView::cancelTrackRequested, controller_, &SimulationController::cancelTrack);
   connect(view_, &EcdisView::trackSelected, this, &MainWindow::selectTrack);
   connect(view_, &EcdisView::pickRequested, this, &MainWindow::showPick);

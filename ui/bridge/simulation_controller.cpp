@@ -94,6 +94,10 @@ void SimulationController::setAutoAcquire(bool on) {
 void SimulationController::setDrLimit(double metres) {
   sim_.post(&SimulationWorker::setDrLimit, metres);
 }
+void SimulationController::setAcquisitionZones(const std::vector<track::AcquisitionZone>& zones) {
+  sim_.post(&SimulationWorker::setAcquisitionZones, zones);
+  emit scenarioEdited();
+}
 void SimulationController::setDiscrepancyLimit(double metres) {
   sim_.post(&SimulationWorker::setDiscrepancyLimit, metres);
 }

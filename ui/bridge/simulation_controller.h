@@ -39,6 +39,8 @@ class SimulationController : public QObject {
   void setAutoAcquire(bool on);
   void setDrLimit(double metres);
   void setDiscrepancyLimit(double metres);
+  /// The guard (acquisition) zones from now on, recorded in the scenario (an operator change).
+  void setAcquisitionZones(const std::vector<track::AcquisitionZone>& zones);
   void setCpaLimits(double cpaM, double tcpaS);
   /// One alert acknowledged; every audible alert silenced for 30 s (docs/alerts.md).
   void acknowledgeAlert(alerts::AlertId id);

@@ -457,6 +457,14 @@ void SimulationWorker::setDrLimit(double metres) {
   maybeEmit(true);
 }
 
+void SimulationWorker::setAcquisitionZones(const std::vector<track::AcquisitionZone>& zones) {
+  if (!engine_ || !engine_->setAcquisitionZones(zones)) return;
+  // Shown at once, as the sensor switches are, though the tracker applies them from the next event.
+  pending_.frame.zones = *sim::zonesAt(engine_->scenario().tracker, engine_->commandTimeUs()).first;
+  dirty_ = true;
+  maybeEmit(true);
+}
+
 void SimulationWorker::setDiscrepancyLimit(double metres) {
   if (!(metres >= 0.0) || !std::isfinite(metres)) return;
   discrepancyLimitM_ = metres;

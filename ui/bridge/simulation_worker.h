@@ -55,6 +55,7 @@ class SimulationWorker : public QObject {
   void setDrLimit(double metres);
   /// The GPS to Loran-C distance above which POSITION DISCREPANCY holds, metres (0: off).
   void setDiscrepancyLimit(double metres);
+  void setAcquisitionZones(const std::vector<track::AcquisitionZone>& zones);
   /// The CPA (m) and TCPA (s) limits of the CPA/TCPA alert from now on.
   void setCpaLimits(double cpaM, double tcpaS);
   /// Operator actions on one alert (docs/alerts.md); applied at the current simulated time.

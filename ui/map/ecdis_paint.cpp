@@ -100,6 +100,7 @@ QColor EcdisView::colour(const char* role) const {
       {"danger", {qRgb(220, 0, 0), qRgb(255, 60, 60), qRgb(170, 30, 30)}},
       {"plot", {qRgb(200, 120, 0), qRgb(255, 190, 60), qRgb(150, 100, 30)}},
       {"tool", {qRgb(120, 0, 140), qRgb(220, 120, 230), qRgb(130, 70, 140)}},
+      {"zone", {qRgb(190, 110, 0), qRgb(240, 170, 60), qRgb(150, 100, 40)}},
       {"text", {qRgb(0, 0, 0), qRgb(230, 230, 230), qRgb(150, 150, 130)}},
       {"panel", {qRgb(255, 255, 255), qRgb(30, 30, 40), qRgb(10, 10, 12)}},
       {"gps", {qRgb(0, 120, 120), qRgb(60, 220, 220), qRgb(40, 120, 120)}},
@@ -117,6 +118,7 @@ void EcdisView::paintOverlay(QPainter& p, const charts::Viewport& view) {
     const auto& x = history_->latest().frame.estimate.x;
     const Local own = localAt(x[est::drkf::kPosX], x[est::drkf::kPosY]);
     if (overlay_.showRadarPicture) paintRadarPicture(p);
+    paintZones(p);
     paintRings(p, own);
     if (overlay_.showRadarEchoes) paintRadarEchoes(p);
     if (overlay_.showPlots) paintPlots(p);

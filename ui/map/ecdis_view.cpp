@@ -29,6 +29,7 @@ EcdisView::EcdisView(QWidget* parent) : ChartView(parent) {
 void EcdisView::setHistory(const SimHistory* history, const geo::LocalFrame& frame) {
   history_ = history;
   frame_ = frame;
+  pendingZones_.reset();
   update();
 }
 
@@ -122,6 +123,8 @@ std::optional<int> EcdisView::trackNear(QPointF p, double tolPx) const {
 }
 
 void EcdisView::frameUpdated() {
+  if (pendingZones_ && history_ && !history_->empty() && history_->latest().frame.zones == *pendingZones_)
+    pendingZones_.reset();
   if (pendingOrder_ && history_ && !history_->empty() && frame_) {
     // An order given here shows at once; the frames take over once one carries it (commands reach
     // the worker before its next step), or a few frames later in any case.
@@ -277,7 +280,17 @@ void EcdisView::mousePressEvent(QMouseEvent* e) {
       }
       return;
     }
-    if (const auto t = trackNear(e->position())) setSelectedTrack(t);
+    if (const auto t = trackNear(e->position())) {
+      setSelectedTrack(t);
+    } else if (const auto m = polarMap()) {
+      // A guard zone's edge is dragged; its middle only with Shift (a plain drag there pans).
+      const ZoneHit hit = hitZone(shownZones(), e->position(), *m);
+      if (hit.zone >= 0 && (hit.edge != ZoneEdge::Inside || (e->modifiers() & Qt::ShiftModifier)) &&
+          zoneEditor_.press(shownZones(), e->position(), *m)) {
+        update();
+        return;
+      }
+    }
   }
   ChartView::mousePressEvent(e);
 }
@@ -288,6 +301,10 @@ void EcdisView::mouseMoveEvent(QMouseEvent* e) {
   if (addTargetFrom_) addTargetTo_ = e->position();
   if (draggingHandle_) {
     handleDrag_ = e->position();
+    update();
+    return;
+  }
+  if (const auto m = polarMap(); m && zoneEditor_.move(e->position(), *m)) {
     update();
     return;
   }
@@ -308,6 +325,12 @@ void EcdisView::mouseReleaseEvent(QMouseEvent* e) {
       const double speed = std::hypot(g.xM - ox, g.yM - oy) / gi.scale / (overlay_.vectorMinutes * 60.0);
       requestOrder(course, speed);
     }
+    update();
+    return;
+  }
+  if (zoneEditor_.dragging() && e->button() == Qt::LeftButton) {
+    if (const auto m = polarMap())
+      if (auto zones = zoneEditor_.release(e->position(), *m)) editZones(*zones);
     update();
     return;
   }
@@ -353,6 +376,7 @@ QMenu* EcdisView::buildContextMenu(QPointF at) {
           ->setObjectName(QStringLiteral("steerTarget"));
     }
   }
+  addZoneActions(menu, at);
   menu->addSeparator();
   menu->addAction(tr("Steer towards here"), this, [this, g] {
     if (!history_ || history_->empty() || !frame_) return;

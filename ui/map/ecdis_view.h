@@ -19,6 +19,7 @@
 #include "geo/local_frame.h"
 #include "ui/bridge/sim_history.h"
 #include "ui/map/chart_view.h"
+#include "ui/map/guard_zones.h"
 
 namespace reckoner::ui {
 
@@ -98,6 +99,11 @@ class EcdisView : public ChartView {
   QMenu* buildContextMenu(QPointF at);
   [[nodiscard]] bool addingTarget() const { return addTargetFrom_.has_value(); }
   [[nodiscard]] bool steeringTarget() const { return steerTarget_.has_value(); }
+  /// Own ship's polar frame on screen (range and true bearing from the estimated position); nullopt
+  /// before the first frame.
+  [[nodiscard]] std::optional<PolarMap> polarMap() const;
+  /// The guard zones drawn: being dragged, else just edited (until a frame has them), else the frame's.
+  [[nodiscard]] std::vector<track::AcquisitionZone> shownZones() const;
 
  signals:
   /// Helm order from the mouse or keyboard: true heading, speed through the water.
@@ -111,6 +117,8 @@ class EcdisView : public ChartView {
   void pickRequested(QPointF widgetPoint);
   void overlayChanged(const reckoner::ui::OverlaySettings& s);
   void cursorReadout(const QString& text);
+  /// The guard zones as the operator edited them on the chart (drag an edge; the context menu).
+  void zonesEdited(const std::vector<reckoner::track::AcquisitionZone>& zones);
 
  protected:
   void paintOverlay(QPainter& painter, const charts::Viewport& view) override;
@@ -150,6 +158,9 @@ class EcdisView : public ChartView {
   static QPolygonF ellipse95(const Local& at, double pxx, double pxy, double pyy, int points);
   [[nodiscard]] QColor colour(const char* role) const;
   void paintRings(QPainter& p, const Local& own);
+  void paintZones(QPainter& p);
+  void addZoneActions(QMenu* menu, QPointF at);
+  void editZones(const std::vector<track::AcquisitionZone>& zones);
   void paintOwnShip(QPainter& p);
   void paintPastTrack(QPainter& p);
   void paintTruth(QPainter& p, const Local& own);
@@ -181,6 +192,8 @@ class EcdisView : public ChartView {
   std::optional<int> steerTarget_;  // steer-target mode: the target's truth id (addTargetFrom_: its track)
   int steerTrack_ = 0;              // ... and the track the operator chose it by (the number shown)
   std::optional<QPointF> cursor_;
+  GuardZoneEditor zoneEditor_;
+  std::optional<std::vector<track::AcquisitionZone>> pendingZones_;  // edited, not yet in a frame
   double appliedRotation_ = 0.0;
   double lastHeadingRad_ = 0.0;  // grid
   struct PendingOrder {

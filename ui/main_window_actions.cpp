@@ -37,6 +37,7 @@
 #include "ui/panels/sensor_panel.h"
 #include "ui/panels/target_table_model.h"
 #include "ui/plots/error_plots.h"
+#include "ui/plots/png_export_dialog.h"
 
 namespace reckoner::ui {
 namespace {
@@ -192,9 +193,11 @@ void MainWindow::buildFileMenu() {
     const QString who = plots == ownPlots_ ? tr("own-ship") : tr("target");
     const QString stem = plots == ownPlots_ ? QStringLiteral("ownship") : QStringLiteral("target");
     file->addAction(tr("Export %1 plots (PNG)…").arg(who), this, [this, plots, stem] {
+      const std::optional<QSize> size = askPlotExportSize(this);  // the charts alone, at this size
+      if (!size) return;
       const QString p =
           QFileDialog::getSaveFileName(this, tr("Export plots"), stem + ".png", tr("PNG (*.png)"));
-      if (!p.isEmpty() && !plots->exportPng(p)) reportError(tr("%1: cannot write the image").arg(p));
+      if (!p.isEmpty() && !plots->exportPng(p, *size)) reportError(tr("%1: cannot write the image").arg(p));
     });
     file->addAction(tr("Export %1 plot data (CSV)…").arg(who), this, [this, plots, stem] {
       const QString p =

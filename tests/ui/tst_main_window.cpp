@@ -376,7 +376,7 @@ class TestMainWindow : public QObject {
     w.ownPlots()->quantityBox()->setCurrentIndex(8);  // speedlog error
     QCOMPARE(w.ownPlots()->pointCount(), whole);
     QTemporaryDir dir;
-    QVERIFY(w.ownPlots()->exportPng(dir.filePath("own.png")));
+    QVERIFY(w.ownPlots()->exportPng(dir.filePath("own.png"), QSize(800, 600)));
     QVERIFY(w.ownPlots()->exportCsv(dir.filePath("own.csv")));
     QFile csv(dir.filePath("own.csv"));
     QVERIFY(csv.open(QIODevice::ReadOnly));

@@ -2,49 +2,56 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QCoreApplication>
 #include <QFile>
+#include <QGraphicsLayout>
+#include <QGraphicsScene>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLineSeries>
 #include <QPainter>
+#include <QScrollArea>
 #include <QTextStream>
 #include <QVBoxLayout>
-#include <QValueAxis>
 #include <algorithm>
 #include <cmath>
 
+#include "common/angles.h"
 #include "estimation/chi_square.h"
+#include "ui/plots/png_export_dialog.h"
 
 namespace reckoner::ui {
 namespace {
 constexpr std::size_t kMaxPoints = 1500;
+constexpr int kMinChartHeightPx = 220;
 
 struct Quantity {
   const char* name;
-  const char* unit;
+  const char* unit;  ///< "" for none
+  const char* axis;  ///< the value axis's name, before its unit
 };
 const Quantity kOwnQuantities[] = {
-    {"Position x (east)", "m"},
-    {"Position y (north)", "m"},
-    {"Velocity x over ground", "m/s"},
-    {"Velocity y over ground", "m/s"},
-    {"Current x", "m/s"},
-    {"Current y", "m/s"},
-    {"Loran-C error x", "m"},
-    {"Loran-C error y", "m"},
-    {"Speedlog error", "m/s"},
+    {"Position x (east)", "m", "x east"},
+    {"Position y (north)", "m", "y north"},
+    {"Velocity x over ground", "m/s", "v east"},
+    {"Velocity y over ground", "m/s", "v north"},
+    {"Current x", "m/s", "current east"},
+    {"Current y", "m/s", "current north"},
+    {"Loran-C error x", "m", "Loran-C x"},
+    {"Loran-C error y", "m", "Loran-C y"},
+    {"Speedlog error", "m/s", "log error"},
     // Seed 004's radar fixes (matched pictures) against the truth at their time; NEES of 3 dof.
-    {"Radar fix x (east)", "m"},
-    {"Radar fix y (north)", "m"},
-    {"Radar fix heading (grid)", "deg"},
-    {"Radar echo residual (rms, in sd)", "sd"},
+    {"Radar fix x (east)", "m", "fix x"},
+    {"Radar fix y (north)", "m", "fix y"},
+    {"Radar fix heading (grid)", "deg", "fix heading"},
+    {"Radar echo residual (rms, in sd)", "sd", "residual"},
 };
 constexpr int kFirstRadarQuantity = 9;
+constexpr int kRadarHeadingQuantity = 11;
 const Quantity kTargetQuantities[] = {
-    {"Target position x (east)", "m"},
-    {"Target position y (north)", "m"},
-    {"Target velocity x", "m/s"},
-    {"Target velocity y", "m/s"},
+    {"Target position x (east)", "m", "x east"},
+    {"Target position y (north)", "m", "y north"},
+    {"Target velocity x", "m/s", "v east"},
+    {"Target velocity y", "m/s", "v north"},
 };
 
 /// Calls f for the samples (with a member tS, in time order) from time t0 on, every stride-th one when
@@ -114,39 +121,6 @@ Estimate trackQuantity(const TrackSample& s, int q) {
   }
 }
 
-void fitAxes(QChart* chart, const std::vector<QLineSeries*>& series) {
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (const QLineSeries* s : series)
-    for (const QPointF& p : s->points()) {
-      if (!std::isfinite(p.y())) continue;
-      x0 = std::min(x0, p.x());
-      x1 = std::max(x1, p.x());
-      y0 = std::min(y0, p.y());
-      y1 = std::max(y1, p.y());
-    }
-  if (x0 > x1) return;
-  if (x1 - x0 < 1.0) x1 = x0 + 1.0;
-  const double pad = std::max(1e-9, (y1 - y0) * 0.05);
-  auto axes = chart->axes();
-  for (QAbstractAxis* a : axes) {
-    auto* v = qobject_cast<QValueAxis*>(a);
-    if (!v) continue;
-    if (a->orientation() == Qt::Horizontal)
-      v->setRange(x0, x1);
-    else
-      v->setRange(y0 - pad, y1 + pad);
-  }
-}
-
-QLineSeries* addSeries(QChart* chart, const QString& name, QColor colour,
-                       Qt::PenStyle style = Qt::SolidLine) {
-  auto* s = new QLineSeries;
-  s->setName(name);
-  QPen pen(colour, 1.5, style);
-  s->setPen(pen);
-  chart->addSeries(s);
-  return s;
-}
 }  // namespace
 
 ErrorPlots::ErrorPlots(Subject subject, QWidget* parent) : QWidget(parent), subject_(subject) {
@@ -168,59 +142,36 @@ ErrorPlots::ErrorPlots(Subject subject, QWidget* parent) : QWidget(parent), subj
   bar->addWidget(quantity_, 1);
   bar->addWidget(window_);
   v->addLayout(bar);
-  valueView_ = makeChart(tr("Estimate and truth"), valueChart_);
-  errorView_ = makeChart(tr("Error and ±2 sd"), errorChart_);
-  neesView_ = makeChart(tr("NEES and 95% chi-square band"), neesChart_);
-  v->addWidget(valueView_, 1);
-  v->addWidget(errorView_, 1);
-  v->addWidget(neesView_, 1);
-  est_ = addSeries(valueChart_, tr("estimate"), QColor(0, 90, 200));
-  truth_ = addSeries(valueChart_, tr("truth"), QColor(40, 40, 40), Qt::DashLine);
-  error_ = addSeries(errorChart_, tr("error"), QColor(0, 90, 200));
-  plus2_ = addSeries(errorChart_, tr("+2 sd"), QColor(200, 60, 0), Qt::DashLine);
-  minus2_ = addSeries(errorChart_, tr("-2 sd"), QColor(200, 60, 0), Qt::DashLine);
-  nees_ = addSeries(neesChart_, tr("NEES"), QColor(0, 90, 200));
-  neesLo_ = addSeries(neesChart_, tr("2.5%"), QColor(0, 140, 0), Qt::DashLine);
-  neesHi_ = addSeries(neesChart_, tr("97.5%"), QColor(0, 140, 0), Qt::DashLine);
-  for (QLineSeries* s : {est_, truth_, error_, plus2_, minus2_, nees_, neesLo_, neesHi_})
-    pens_.emplace_back(s, s->pen());
-  for (QChart* c : {valueChart_, errorChart_, neesChart_}) {
-    auto* ax = new QValueAxis;
-    ax->setTitleText(tr("time s"));
-    ax->setLabelFormat(QStringLiteral("%.0f"));
-    auto* ay = new QValueAxis;
-    c->addAxis(ax, Qt::AlignBottom);
-    c->addAxis(ay, Qt::AlignLeft);
-    for (QAbstractSeries* s : c->series()) {
-      s->attachAxis(ax);
-      s->attachAxis(ay);
-    }
+  // The charts keep a height their axes can be read at; a short dock scrolls them.
+  auto* scroll = new QScrollArea(this);
+  scroll->setObjectName(QStringLiteral("plotScroll"));
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  auto* stack = new QWidget(scroll);
+  auto* column = new QVBoxLayout(stack);
+  column->setContentsMargins(0, 0, 0, 0);
+  column->setSpacing(2);
+  charts_.setTitlesVisible(false);
+  for (int c = 0; c < PlotCharts::kCharts; ++c) {
+    QChart* chart = charts_.chart(static_cast<PlotCharts::Chart>(c));
+    auto* view = new QChartView(chart, stack);  // owns the chart
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setMinimumHeight(kMinChartHeightPx);
+    column->addWidget(view, 1);
+    views_[static_cast<std::size_t>(c)] = view;
+    // A new plot area (a resize, new labels) may hold more or fewer ticks: fit again once laid out.
+    connect(
+        chart, &QChart::plotAreaChanged, this, [this] { charts_.fit(); }, Qt::QueuedConnection);
   }
+  scroll->setWidget(stack);
+  v->addWidget(scroll, 1);
   connect(quantity_, &QComboBox::currentIndexChanged, this, &ErrorPlots::refresh);
   connect(window_, &QComboBox::currentIndexChanged, this, &ErrorPlots::refresh);
 }
 
-QChartView* ErrorPlots::makeChart(const QString& title, QChart*& chart) {
-  chart = new QChart;
-  chart->setTitle(title);
-  chart->legend()->setAlignment(Qt::AlignRight);
-  chart->setMargins(QMargins(2, 2, 2, 2));
-  auto* view = new QChartView(chart, this);
-  view->setRenderHint(QPainter::Antialiasing);
-  view->setMinimumHeight(120);
-  return view;
-}
-
 void ErrorPlots::setDark(bool dark) {
-  for (QChart* c : {valueChart_, errorChart_, neesChart_}) {
-    c->setTheme(dark ? QChart::ChartThemeDark : QChart::ChartThemeLight);
-    c->setMargins(QMargins(2, 2, 2, 2));
-  }
-  for (auto& [series, pen] : pens_) {
-    QPen p = pen;
-    if (dark) p.setColor(p.color().lighter(130));
-    series->setPen(p);
-  }
+  charts_.setStyle(dark ? PlotStyle::Dark : PlotStyle::Day);
 }
 
 void ErrorPlots::setTrack(std::optional<int> trackId) {
@@ -258,63 +209,97 @@ std::vector<ErrorPlots::Row> ErrorPlots::rows(std::vector<double>* nees, bool de
   return out;
 }
 
+double ErrorPlots::errorOf(const Row& r) const {
+  const double e = r.est - r.truth;
+  const bool angle = subject_ == Subject::OwnShip && quantity_->currentIndex() == kRadarHeadingQuantity;
+  return angle ? radToDeg(wrapPi(degToRad(e))) : e;
+}
+
+PlotData ErrorPlots::plotData(const std::vector<Row>& samples, const std::vector<double>& nees) const {
+  PlotData d;
+  const int q = std::max(0, quantity_->currentIndex());
+  const Quantity& quantity = subject_ == Subject::OwnShip ? kOwnQuantities[q] : kTargetQuantities[q];
+  d.title = quantity_->currentText();
+  d.axisName = QString::fromUtf8(quantity.axis);
+  d.unit = QString::fromUtf8(quantity.unit);
+  d.neesDof = subject_ == Subject::Target ? 4.0 : q >= kFirstRadarQuantity ? 3.0 : 11.0;
+  d.neesBandLo = est::chiSquareQuantile(0.025, d.neesDof);
+  d.neesBandHi = est::chiSquareQuantile(0.975, d.neesDof);
+  d.est.reserve(static_cast<qsizetype>(samples.size()));
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const Row& r = samples[i];
+    d.est << QPointF(r.t, r.est);
+    if (std::isfinite(r.truth)) {
+      d.truth << QPointF(r.t, r.truth);
+      d.error << QPointF(r.t, errorOf(r));
+    }
+    if (std::isfinite(r.sd)) {
+      d.estLo << QPointF(r.t, r.est - 2.0 * r.sd);
+      d.estHi << QPointF(r.t, r.est + 2.0 * r.sd);
+      d.sdLo << QPointF(r.t, -2.0 * r.sd);
+      d.sdHi << QPointF(r.t, 2.0 * r.sd);
+    }
+    if (std::isfinite(nees[i])) d.nees << QPointF(r.t, nees[i]);
+  }
+  return d;
+}
+
 void ErrorPlots::refresh() {
   std::vector<double> nees;
   const std::vector<Row> samples = rows(&nees, true);
-  QList<QPointF> est, truth, err, plus, minus, ne, lo, hi;
-  est.reserve(static_cast<qsizetype>(samples.size()));
-  const double dof = subject_ == Subject::Target                        ? 4.0
-                     : quantity_->currentIndex() >= kFirstRadarQuantity ? 3.0
-                                                                        : 11.0;
-  const double qLo = est::chiSquareQuantile(0.025, dof), qHi = est::chiSquareQuantile(0.975, dof);
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const Row& r = samples[i];
-    est << QPointF(r.t, r.est);
-    if (std::isfinite(r.truth)) {
-      truth << QPointF(r.t, r.truth);
-      err << QPointF(r.t, r.est - r.truth);
-    }
-    if (std::isfinite(r.sd)) {
-      plus << QPointF(r.t, 2.0 * r.sd);
-      minus << QPointF(r.t, -2.0 * r.sd);
-    }
-    if (std::isfinite(nees[i])) ne << QPointF(r.t, nees[i]);
-  }
-  if (!samples.empty()) {
-    lo << QPointF(samples.front().t, qLo) << QPointF(samples.back().t, qLo);
-    hi << QPointF(samples.front().t, qHi) << QPointF(samples.back().t, qHi);
-  }
-  est_->replace(est);
-  truth_->replace(truth);
-  error_->replace(err);
-  plus2_->replace(plus);
-  minus2_->replace(minus);
-  nees_->replace(ne);
-  neesLo_->replace(lo);
-  neesHi_->replace(hi);
-  const QString label =
-      subject_ == Subject::OwnShip
-          ? QString::fromUtf8(kOwnQuantities[std::max(0, quantity_->currentIndex())].unit)
-          : QString::fromUtf8(kTargetQuantities[std::max(0, quantity_->currentIndex())].unit);
-  valueChart_->setTitle(tr("%1: estimate and truth (%2)").arg(quantity_->currentText(), label));
-  errorChart_->setTitle(tr("Error and ±2 sd (%1)").arg(label));
-  neesChart_->setTitle(tr("NEES (%1 dof) and its 95% chi-square band").arg(dof, 0, 'f', 0));
-  fitAxes(valueChart_, {est_, truth_});
-  fitAxes(errorChart_, {error_, plus2_, minus2_});
-  fitAxes(neesChart_, {nees_, neesLo_, neesHi_});
+  shown_ = plotData(samples, nees);
+  charts_.show(shown_);
 }
 
 int ErrorPlots::pointCount() const {
-  return static_cast<int>(est_->count() + error_->count() + nees_->count());
+  return static_cast<int>(shown_.est.size() + shown_.error.size() + shown_.nees.size());
 }
 
-bool ErrorPlots::exportPng(const QString& path) const {
-  QImage image(width(), height(), QImage::Format_ARGB32_Premultiplied);
+QImage ErrorPlots::renderImage(QSize sizePx) const {
+  const QSize size = sizePx.expandedTo(QSize(kMinPlotExportPx, kMinPlotExportPx))
+                         .boundedTo(QSize(kMaxPlotExportPx, kMaxPlotExportPx));
+  QGraphicsScene scene;  // owns the report's charts
+  PlotCharts report;
+  report.setStyle(PlotStyle::Report);
+  report.setTitlesVisible(true);
+  // Text a report can read once the picture is scaled to a page: larger with the picture.
+  report.setFontScale(std::clamp(std::min(size.width() / 1200.0, size.height() / 800.0), 1.0, 3.0));
+  const int h = size.height() / PlotCharts::kCharts;
+  for (int c = 0; c < PlotCharts::kCharts; ++c) {
+    QChart* chart = report.chart(static_cast<PlotCharts::Chart>(c));
+    scene.addItem(chart);
+    const int top = c * h, bottom = c + 1 == PlotCharts::kCharts ? size.height() : top + h;
+    chart->setGeometry(QRectF(0, top, size.width(), bottom - top));
+  }
+  PlotData titled = shown_;
+  const QString subject = subject_ == Subject::OwnShip ? tr("Own ship")
+                          : track_                     ? tr("Track %1").arg(*track_)
+                                                       : tr("Selected target");
+  titled.title = tr("%1 · %2").arg(subject, titled.title);
+  report.show(titled);
+  // Lay out, fit the ticks to the plot areas, and again while the new labels move them. The charts'
+  // own posted events (their legends' new names) are delivered first; nobody else's.
+  for (int pass = 0; pass < 4; ++pass) {
+    for (int c = 0; c < PlotCharts::kCharts; ++c) {
+      QChart* chart = report.chart(static_cast<PlotCharts::Chart>(c));
+      QCoreApplication::sendPostedEvents(chart->legend());
+      QCoreApplication::sendPostedEvents(chart);
+      chart->layout()->activate();
+    }
+    if (!report.fit()) break;
+  }
+  QImage image(size, QImage::Format_ARGB32_Premultiplied);
   image.fill(Qt::white);
   QPainter p(&image);
-  const_cast<ErrorPlots*>(this)->render(&p);
+  p.setRenderHint(QPainter::Antialiasing);
+  const QRectF all(QPointF(0, 0), QSizeF(size));
+  scene.render(&p, all, all);
   p.end();
-  return image.save(path, "PNG");
+  return image;
+}
+
+bool ErrorPlots::exportPng(const QString& path, QSize sizePx) const {
+  return renderImage(sizePx).save(path, "PNG");
 }
 
 bool ErrorPlots::exportCsv(const QString& path) const {
@@ -328,7 +313,7 @@ bool ErrorPlots::exportCsv(const QString& path) const {
     const Row& r = samples[i];
     out << QString::number(r.t, 'f', 3) << ',' << QString::number(r.est, 'g', 10) << ','
         << (std::isfinite(r.truth) ? QString::number(r.truth, 'g', 10) : QString()) << ','
-        << (std::isfinite(r.truth) ? QString::number(r.est - r.truth, 'g', 10) : QString()) << ','
+        << (std::isfinite(r.truth) ? QString::number(errorOf(r), 'g', 10) : QString()) << ','
         << QString::number(r.sd, 'g', 10) << ','
         << (std::isfinite(nees[i]) ? QString::number(nees[i], 'g', 8) : QString()) << '\n';
   }

@@ -3,20 +3,20 @@
 // truth against time (seed 000 figures 1 and 4), its error with the +-2 sd band from the covariance
 // (figures 2 and 5) and the NEES with its chi-square band; the same for the selected target. A rolling
 // window or the whole run. Series are rebuilt from SimHistory in one replace() per refresh (never a
-// point at a time), decimated to at most ~1500 points. Export: PNG of the plots, CSV of the
-// current quantity and window at full resolution.
+// point at a time), decimated to at most ~1500 points; the charts themselves are ui/plots/plot_charts.h.
+// Export: PNG of the three charts (not the panel) at a size asked for, CSV of the current quantity and
+// window at full resolution.
 #include <QComboBox>
+#include <QImage>
 #include <QWidget>
+#include <array>
 #include <optional>
 
 #include "ui/bridge/sim_history.h"
+#include "ui/plots/plot_charts.h"
 
 QT_BEGIN_NAMESPACE
-class QChart;
 class QChartView;
-class QLineSeries;
-class QAreaSeries;
-class QValueAxis;
 QT_END_NAMESPACE
 
 namespace reckoner::ui {
@@ -33,14 +33,21 @@ class ErrorPlots : public QWidget {
   /// Rebuilds the series from the history (call at a modest rate, e.g. 2 Hz).
   void refresh();
 
-  /// Dark chart theme for the dusk and night palettes.
+  /// The dark style for the dusk and night palettes (the PNG export keeps the report style).
   void setDark(bool dark);
   /// Number of points in the estimate, error and NEES series (tests).
   [[nodiscard]] int pointCount() const;
-  bool exportPng(const QString& path) const;
+  /// The three charts as shown now, stacked, drawn at sizePx (each dimension 200 to 8000 px) in the
+  /// report style (white background, black text, whatever the palette), the axes' ticks fitted to
+  /// that size, the subject in the first title; without the panel's combo boxes.
+  [[nodiscard]] QImage renderImage(QSize sizePx) const;
+  /// renderImage(sizePx) written as PNG.
+  bool exportPng(const QString& path, QSize sizePx) const;
   bool exportCsv(const QString& path) const;
   [[nodiscard]] QComboBox* quantityBox() const { return quantity_; }
   [[nodiscard]] QComboBox* windowBox() const { return window_; }
+  [[nodiscard]] const PlotCharts& charts() const { return charts_; }
+  [[nodiscard]] QChartView* chartView(PlotCharts::Chart c) const { return views_[c]; }
 
  private:
   struct Row {
@@ -48,17 +55,19 @@ class ErrorPlots : public QWidget {
   };
   /// The rows of the current quantity and window; decimated to about kMaxPoints for display.
   [[nodiscard]] std::vector<Row> rows(std::vector<double>* nees, bool decimate) const;
-  QChartView* makeChart(const QString& title, QChart*& chart);
+  /// What the charts show of the rows.
+  [[nodiscard]] PlotData plotData(const std::vector<Row>& samples, const std::vector<double>& nees) const;
+  /// estimate - truth, wrapped to (-180, 180] for an angle in degrees.
+  [[nodiscard]] double errorOf(const Row& r) const;
 
   Subject subject_;
   const SimHistory* history_ = nullptr;
   std::optional<int> track_;
   QComboBox* quantity_;
   QComboBox* window_;
-  QChart *valueChart_ = nullptr, *errorChart_ = nullptr, *neesChart_ = nullptr;
-  QChartView *valueView_ = nullptr, *errorView_ = nullptr, *neesView_ = nullptr;
-  QLineSeries *est_, *truth_, *error_, *plus2_, *minus2_, *nees_, *neesLo_, *neesHi_;
-  std::vector<std::pair<QLineSeries*, QPen>> pens_;  // re-applied after a theme change
+  PlotCharts charts_;
+  std::array<QChartView*, PlotCharts::kCharts> views_{};
+  PlotData shown_;
 };
 
 }  // namespace reckoner::ui

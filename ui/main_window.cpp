@@ -76,7 +76,10 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
       new AlertSound(options.sound && QGuiApplication::platformName() != QLatin1String("offscreen"), this);
   buildDocks();
   buildActions();
-  statusBar()->addWidget(cursorLabel_ = new QLabel(this), 1);
+  // The cursor readout is a permanent widget: messages take the bar's left part and neither hides the
+  // other.
+  statusBar()->addPermanentWidget(cursorLabel_ = new QLabel(this));
+  cursorLabel_->setObjectName(QStringLiteral("cursorReadout"));
   statusBar()->addPermanentWidget(chartLabel_ = new QLabel(this));
   chartProgress_ = new QProgressBar(this);  // in the status bar while charts load
   chartProgress_->hide();
@@ -439,6 +442,8 @@ void MainWindow::showPickedFeatures(const std::vector<charts::PickedFeature>& fe
                      .arg(features.size())
                      .arg(QString::fromStdString(io::formatLatitude(where.latDeg)),
                           QString::fromStdString(io::formatLongitude(where.lonDeg)));
+  if (const QString from = view_->fromOwnShipText(where); !from.isEmpty())
+    html += tr("<br>%1 from own ship").arg(from.toHtmlEscaped());
   for (const auto& f : features) {
     html += QStringLiteral("<p><b>%1</b> (%2) — %3")
                 .arg(escape(f.className), escape(f.objectClass), escape(f.cell));

@@ -79,6 +79,11 @@ class MainWindow : public QMainWindow {
   /// at once, in the display toolbar too, and remembered for the next runs (Chart > Mariner settings).
   /// Settings that fail marinerSettingsProblem are refused with that message (false).
   bool setMarinerSettings(const charts::MarinerSettings& s);
+  /// View > Units: distances and speeds everywhere in these units, remembered for the next runs.
+  void setDisplayUnits(const DisplayUnits& units);
+  /// View > CCRP: own ship's reference point, metres aft of the bow and to starboard of the centreline
+  /// (remembered); refused with a message outside the hull.
+  void setCcrp(double fromBowM, double toStarboardM);
 
   // For tests and the benchmark.
   [[nodiscard]] EcdisView* chart() const { return view_; }
@@ -137,6 +142,16 @@ class MainWindow : public QMainWindow {
   void buildViewMenu();
   void buildHelpMenu();
   void buildRadarMenu();
+  // main_window_display.cpp: the display modes.
+  void buildDisplayModes(QToolBar* bar);
+  void buildDisplayMenu(QMenu* viewMenu);
+  void buildUnitsMenu(QMenu* units);
+  /// The display's actions shared by the toolbar and the View menu, made at the first call.
+  QAction* displayAction(const char* name);
+  void connectDisplay();
+  void readDisplaySettings();
+  void rememberDisplaySettings(const OverlaySettings& o);
+  void askCcrp();
   /// A checkable action in `menu` that switches one overlay setting.
   QAction* addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member);
 

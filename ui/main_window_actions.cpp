@@ -270,7 +270,7 @@ void MainWindow::buildRangeBox(QToolBar* bar) {
 }
 
 void MainWindow::buildDisplayToolbar() {
-  // Display: palette, category, safety contour, orientation, vectors.
+  // Display: range, palette, category, safety contour, and the display modes (main_window_display.cpp).
   QToolBar* display = addToolBar(tr("Display"));
   display->setObjectName(QStringLiteral("displayToolbar"));
   buildRangeBox(display);
@@ -304,24 +304,7 @@ void MainWindow::buildDisplayToolbar() {
   });
   display->addWidget(safetyBox_);
   showMarinerSettings(view_->settings());
-  QAction* courseUp = display->addAction(tr("Course up"));
-  courseUp->setCheckable(true);
-  connect(courseUp, &QAction::toggled, this,
-          [this](bool on) { editOverlay(view_, [on](OverlaySettings& s) { s.courseUp = on; }); });
-  QAction* relative = display->addAction(tr("Relative vectors"));
-  relative->setCheckable(true);
-  connect(relative, &QAction::toggled, this,
-          [this](bool on) { editOverlay(view_, [on](OverlaySettings& s) { s.relativeVectors = on; }); });
-  auto* minutes = new QDoubleSpinBox(this);
-  minutes->setObjectName(QStringLiteral("vectorMinutes"));
-  minutes->setRange(1.0, 60.0);
-  minutes->setDecimals(0);
-  minutes->setSuffix(tr(" min vectors"));
-  minutes->setValue(view_->overlay().vectorMinutes);
-  connect(minutes, &QDoubleSpinBox::valueChanged, this,
-          [this](double v) { editOverlay(view_, [v](OverlaySettings& s) { s.vectorMinutes = v; }); });
-  display->addWidget(minutes);
-  display->addAction(tr("Centre own ship"), this, [this] { view_->centreOnOwnShip(); });
+  buildDisplayModes(display);
 }
 
 void MainWindow::buildTrackingMenu() {
@@ -399,6 +382,9 @@ QString MainWindow::shortcutsText() {
       "<tr><td>+ / -</td><td>shorter / longer range</td></tr>"
       "<tr><td>Left / Right</td><td>ordered course -5 / +5 deg (Shift: 1 deg)</td></tr>"
       "<tr><td>Up / Down</td><td>ordered speed +0.5 / -0.5 kn</td></tr>"
+      "<tr><td>O</td><td>next orientation: north up, course up, head up</td></tr>"
+      "<tr><td>M</td><td>true / relative motion</td></tr>"
+      "<tr><td>C or R</td><td>centre own ship and follow it (true-motion reset)</td></tr>"
       "<tr><td>Esc</td><td>cancel adding or steering a target</td></tr>"
       "<tr><td>Ctrl+O / Ctrl+S / Ctrl+Shift+S</td><td>open / save / save as</td></tr>"
       "<tr><td>Ctrl+M</td><td>mariner settings (contours, safety depth, category)</td></tr>"
@@ -440,8 +426,9 @@ void MainWindow::buildViewMenu() {
   addOverlayToggle(viewMenu, tr("Covariance ellipses (95%)"), &OverlaySettings::showEllipses);
   addOverlayToggle(viewMenu, tr("Raw radar plots"), &OverlaySettings::showPlots);
   addOverlayToggle(viewMenu, tr("Past track"), &OverlaySettings::showPastTrack);
-  addOverlayToggle(viewMenu, tr("Follow own ship"), &OverlaySettings::followOwnShip);
   addOverlayToggle(viewMenu, tr("Range rings"), &OverlaySettings::showRings);
+  viewMenu->addSeparator();
+  buildDisplayMenu(viewMenu);
   viewMenu->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu->addAction(d->toggleViewAction());
 }

@@ -65,7 +65,7 @@ class TestMainWindow : public QObject {
     const double ox = f.estimate.x[est::drkf::kPosX], oy = f.estimate.x[est::drkf::kPosY];
     const geo::GridInfo gi = v->frame()->gridInfo({ox, oy});
     const double wantCourse = degToRad(45.0), wantSpeed = knotsToMps(8.0);
-    const double len = wantSpeed * v->overlay().vectorMinutes * 60.0 * gi.scale;
+    const double len = wantSpeed * v->handleMinutes() * 60.0 * gi.scale;  // the handle's time base
     const double g = wantCourse - gi.convergenceRad;
     const QPointF target = v->gridToWidget(ox + len * std::sin(g), oy + len * std::cos(g));
     const double headingBefore = f.truth.headingRad;

@@ -12,6 +12,7 @@
 #include "common/units.h"
 #include "estimation/chi_square.h"
 #include "ui/map/ecdis_view.h"
+#include "ui/map/label_placer.h"
 #include "ui/map/range_scale.h"
 
 namespace reckoner::ui {
@@ -22,14 +23,6 @@ constexpr double kPxPerMm = 1.0 / 0.28;  // pixels per millimetre at the S-52 re
 double chi2Scale95() {
   static const double k = std::sqrt(est::chiSquareQuantile(0.95, 2.0));
   return k;
-}
-
-/// Nice scale-bar length (1, 2 or 5 times a power of ten) not longer than maxM.
-double niceLength(double maxM) {
-  const double p = std::pow(10.0, std::floor(std::log10(maxM)));
-  for (double m : {5.0, 2.0, 1.0})
-    if (m * p <= maxM) return m * p;
-  return p;
 }
 
 /// A track's symbol by status (IEC 62388): tentative a broken circle, confirmed a full circle, lost a
@@ -114,22 +107,28 @@ QColor EcdisView::colour(const char* role) const {
 
 void EcdisView::paintOverlay(QPainter& p, const charts::Viewport& view) {
   p.setRenderHint(QPainter::Antialiasing, true);
-  if (history_ && !history_->empty() && frame_) {
-    const auto& x = history_->latest().frame.estimate.x;
-    const Local own = localAt(x[est::drkf::kPosX], x[est::drkf::kPosY]);
+  labelObstacles_.clear();
+  pendingLabels_.clear();
+  if (haveOwnShip()) {
+    const geo::GridPoint c = ccrpGrid();
+    const Local ccrp = localAt(c.xM, c.yM);
     if (overlay_.showRadarPicture) paintRadarPicture(p);
     paintZones(p);
-    paintRings(p, own);
+    paintRings(p, ccrp);
     if (overlay_.showRadarEchoes) paintRadarEchoes(p);
     if (overlay_.showPlots) paintPlots(p);
     paintTargets(p);
     paintOwnShip(p);
   }
+  // The boxes first (labels keep out of them), the labels last.
   paintScaleBar(p, view);
-  paintReadouts(p);
+  labelObstacles_.push_back(paintModes(p));
+  if (const QRectF box = paintReadouts(p); !box.isEmpty()) labelObstacles_.push_back(box);
+  paintLabels(p);
 }
 
 void EcdisView::paintRings(QPainter& p, const Local& own) {
+  // Range rings, the VRM and the EBL from the CCRP.
   const double pxm = own.pxPerMetre();
   QPen pen(colour("tool"), 1.0, Qt::DotLine);
   p.setPen(pen);
@@ -142,8 +141,7 @@ void EcdisView::paintRings(QPainter& p, const Local& own) {
       p.drawEllipse(own.p, r, r);
     }
   }
-  const auto& x = history_->latest().frame.estimate.x;
-  const double gamma = frame_->gridInfo({x[est::drkf::kPosX], x[est::drkf::kPosY]}).convergenceRad;
+  const double gamma = frame_->gridInfo(ccrpGrid()).convergenceRad;
   p.setPen(QPen(colour("tool"), 1.5, Qt::DashLine));
   if (overlay_.vrmRangeM) {
     const double r = *overlay_.vrmRangeM * pxm;
@@ -157,16 +155,29 @@ void EcdisView::paintRings(QPainter& p, const Local& own) {
 }
 
 void EcdisView::paintOwnShip(QPainter& p) {
+  // The estimate (the ship's centre) carries the ellipse and the truth line; the CCRP the vectors and
+  // the symbol's reference.
   const auto& x = history_->latest().frame.estimate.x;
-  const Local own = localAt(x[est::drkf::kPosX], x[est::drkf::kPosY]);
+  const Local est = localAt(x[est::drkf::kPosX], x[est::drkf::kPosY]);
+  const geo::GridPoint c = ccrpGrid();
+  const Local ccrp = localAt(c.xM, c.yM);
   if (overlay_.showPastTrack) paintPastTrack(p);
-  if (overlay_.showTruth) paintTruth(p, own);
+  if (overlay_.showTruth) paintTruth(p, est);
   paintFixes(p);
-  if (overlay_.showEllipses) paintOwnEllipse(p, own);
+  if (overlay_.showEllipses) paintOwnEllipse(p, est);
   if (overlay_.seed002Shown > 0 && history_->latest().seed002) paintSeed002(p);
-  paintCourseVector(p, own);
-  paintOrderedVector(p, own);
-  paintOwnSymbol(p, own);
+  paintCourseVector(p, ccrp);
+  paintOwnSymbol(p, est, ccrp);
+  paintOrderedVector(p, ccrp);  // above the COG vector and the symbol
+  if (!ownOutline(est).isEmpty()) {
+    // The CCRP on the true-scale outline, above the vectors that start there: a circle with a cross,
+    // on a disc of the panel colour.
+    p.setPen(QPen(colour("own"), 1.5));
+    p.setBrush(colour("panel"));
+    p.drawEllipse(ccrp.p, 4.0, 4.0);
+    p.drawLine(ccrp.p + QPointF(-7, 0), ccrp.p + QPointF(7, 0));
+    p.drawLine(ccrp.p + QPointF(0, -7), ccrp.p + QPointF(0, 7));
+  }
 }
 
 void EcdisView::paintPastTrack(QPainter& p) {
@@ -286,58 +297,85 @@ void EcdisView::paintCourseVector(QPainter& p, const Local& own) {
 }
 
 void EcdisView::paintOrderedVector(QPainter& p, const Local& own) {
-  // The ordered vector (dashed) and its handle; while dragged, the course and speed it orders.
-  const auto h = handlePosition();
+  // The ordered vector: long dashes in the order colour on a casing of the panel colour, drawn above
+  // the COG vector so that it shows where the two lie together, and the round handle at its tip with
+  // a cross. Its readout ("Order 045.0° 12.0 kn") is always shown beside the handle: while dragged,
+  // what the drag would order.
+  const double minutes = handleDrag_ ? dragMinutes_ : handleMinutes();
+  const auto h = handleAt(minutes);
   if (!h) return;
   const QPointF hp = handleDrag_.value_or(*h);
-  p.setPen(QPen(colour("order"), 1.5, Qt::DashLine));
+  QColor casing = colour("panel");
+  casing.setAlpha(220);
+  p.setBrush(Qt::NoBrush);
+  p.setPen(QPen(casing, 5.0, Qt::SolidLine, Qt::RoundCap));
+  p.drawLine(own.p, hp);
+  QPen dashes(colour("order"), 2.5, Qt::CustomDashLine, Qt::FlatCap);
+  dashes.setDashPattern({4.0, 2.0});
+  p.setPen(dashes);
   p.drawLine(own.p, hp);
   p.setPen(QPen(colour("order"), 2.0));
   p.setBrush(colour("panel"));
   p.drawEllipse(hp, kHandleRadiusPx, kHandleRadiusPx);
-  if (!handleDrag_) return;
-  const auto& x = history_->latest().frame.estimate.x;
-  const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
-  const double gamma = frame_->gridInfo({ox, oy}).convergenceRad;
-  const geo::GridPoint g = widgetToGrid(hp);
-  const double course = wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gamma);
-  const double speed = std::hypot(g.xM - ox, g.yM - oy) / (overlay_.vectorMinutes * 60.0);
-  p.setPen(colour("text"));
-  p.drawText(hp + QPointF(10, -10), QStringLiteral("%1° %2 kn")
-                                        .arg(radToDeg(course), 5, 'f', 1, QChar('0'))
-                                        .arg(speed / kMpsPerKnot, 0, 'f', 1));
+  const double k = kHandleRadiusPx * 0.6;
+  p.drawLine(hp + QPointF(-k, 0), hp + QPointF(k, 0));
+  p.drawLine(hp + QPointF(0, -k), hp + QPointF(0, k));
+  const auto [course, speed] = handleDrag_ ? orderAt(hp, minutes) : orderedCourseSpeed();
+  QString text = QStringLiteral("Order ") + formatCourseSpeed(course, speed, units_);
+  if (std::abs(minutes - overlay_.vectorMinutes) > 1e-9)  // the handle's shortened time base
+    text += minutes >= 1.0 ? QStringLiteral(" (%1 min)").arg(minutes)
+                           : QStringLiteral(" (%1 s)").arg(minutes * 60.0);
+  labelObstacles_.push_back(QRectF(hp - QPointF(kHandleRadiusPx, kHandleRadiusPx),
+                                   QSizeF(2 * kHandleRadiusPx, 2 * kHandleRadiusPx)));
+  // First in line: the order's readout gets the best place, the target labels keep out of it.
+  pendingLabels_.insert(pendingLabels_.begin(),
+                        PendingLabel{text, hp, kHandleRadiusPx + 2.0, colour("order"), 9.0, true});
 }
 
-void EcdisView::paintOwnSymbol(QPainter& p, const Local& own) {
-  // Own-ship symbol: true-scale outline when it is larger than 6 mm, else two concentric circles;
-  // the heading line runs to the edge of the screen.
-  // The heading is the filter's: the direction of its velocity through the water (what the gyro
-  // measures), kept from the last time the ship was moving clearly enough to have one.
+QPolygonF EcdisView::ownOutline(const Local& est) const {
+  // The true-scale outline around the estimated point (the ship's centre), when it is larger than the
+  // 6 mm symbol; else none.
+  if (overlay_.ownLengthM * est.pxPerMetre() <= kSymbolMm * kPxPerMm) return {};
+  const double hdg = headingGridRad();
+  const double L = overlay_.ownLengthM, B = overlay_.ownBeamM;
+  const double s = std::sin(hdg), c = std::cos(hdg);
+  const auto pt = [&](double along, double across) {
+    return est.offset(along * s + across * c, along * c - across * s);
+  };
+  return {pt(L * 0.5, 0), pt(L * 0.3, B * 0.5), pt(-L * 0.5, B * 0.5), pt(-L * 0.5, -B * 0.5),
+          pt(L * 0.3, -B * 0.5)};
+}
+
+QRectF EcdisView::ownSymbolBox() const {
+  if (!haveOwnShip()) return {};
+  const auto& x = history_->latest().frame.estimate.x;
+  const QPolygonF hull = ownOutline(localAt(x[est::drkf::kPosX], x[est::drkf::kPosY]));
+  if (!hull.isEmpty()) return hull.boundingRect();
+  const double r = kSymbolMm * kPxPerMm / 2.0;
+  return {ccrpWidget() - QPointF(r, r), QSizeF(2 * r, 2 * r)};
+}
+
+void EcdisView::paintOwnSymbol(QPainter& p, const Local& est, const Local& ccrp) {
+  // Own-ship symbol: true-scale outline (around the estimate) with the CCRP marked, when it is larger
+  // than 6 mm, else two concentric circles at the CCRP; the heading line runs from the CCRP to the
+  // edge of the screen. The heading is the filter's: the direction of its velocity through the water
+  // (what the gyro measures), held from the last time the ship was moving clearly enough to have one.
   const LiveFrame& live = history_->latest();
-  const auto& x = live.frame.estimate.x;
-  const double pxm = own.pxPerMetre();
-  const double hx = x[est::drkf::kVelX], hy = x[est::drkf::kVelY];
-  if (std::hypot(hx, hy) > 0.3) lastHeadingRad_ = bearingOf(hx, hy);
-  const double hdg = lastHeadingRad_;
-  const double lengthPx = overlay_.ownLengthM * pxm;
+  const double pxm = ccrp.pxPerMetre();
+  const double hdg = headingGridRad();
   p.setPen(QPen(colour("own"), 2.0));
   p.setBrush(Qt::NoBrush);
   const double far = 2.0 * std::hypot(width(), height()) / std::max(pxm, 1e-9);
-  p.drawLine(own.p, own.offset(far * std::sin(hdg), far * std::cos(hdg)));
-  if (lengthPx > kSymbolMm * kPxPerMm) {
-    const double L = overlay_.ownLengthM, B = overlay_.ownBeamM;
-    const double s = std::sin(hdg), c = std::cos(hdg);
-    const auto pt = [&](double along, double across) {
-      return own.offset(along * s + across * c, along * c - across * s);
-    };
-    QPolygonF hull{pt(L * 0.5, 0), pt(L * 0.3, B * 0.5), pt(-L * 0.5, B * 0.5), pt(-L * 0.5, -B * 0.5),
-                   pt(L * 0.3, -B * 0.5)};
+  p.drawLine(ccrp.p, ccrp.offset(far * std::sin(hdg), far * std::cos(hdg)));
+  const QPolygonF hull = ownOutline(est);
+  if (!hull.isEmpty()) {
     p.drawPolygon(hull);
   } else {
     const double r = kSymbolMm * kPxPerMm / 2.0;
-    p.drawEllipse(own.p, r, r);
-    p.drawEllipse(own.p, r / 2.0, r / 2.0);
+    p.drawEllipse(ccrp.p, r, r);
+    p.drawEllipse(ccrp.p, r / 2.0, r / 2.0);
   }
+  labelObstacles_.push_back(ownSymbolBox());
   // Positioning mode beside the symbol: DR when no position fix is being used.
   if (!live.positionFixUsed) {
     QFont font = p.font();
@@ -345,8 +383,9 @@ void EcdisView::paintOwnSymbol(QPainter& p, const Local& own) {
     font.setBold(true);
     p.setFont(font);
     p.setPen(colour("danger"));
-    p.drawText(own.p + QPointF(-kSymbolMm * kPxPerMm - 22.0, -kSymbolMm * kPxPerMm / 2.0),
-               QStringLiteral("DR"));
+    const QPointF at = ccrp.p + QPointF(-kSymbolMm * kPxPerMm - 22.0, -kSymbolMm * kPxPerMm / 2.0);
+    p.drawText(at, QStringLiteral("DR"));
+    labelObstacles_.push_back(QRectF(at - QPointF(0, 12), QSizeF(22, 14)));
   }
 }
 
@@ -378,16 +417,18 @@ void EcdisView::paintTarget(QPainter& p, const sim::TrackSnapshot& t, const Targ
   const double width = danger ? 2.5 : 1.6;
   const double r = k.radiusPx;
 
-  // Past positions: sweep-end estimates every 30 s over the last 3 minutes.
+  // Past positions: the sweep-end estimates nearest before every interval back from now, as many as
+  // set (View > Target past positions).
   const auto& hist = history_->track(t.trackId);
   p.setPen(Qt::NoPen);
   p.setBrush(c);
-  double next = k.nowS - 30.0;
+  const double interval = std::max(1.0, overlay_.targetPastIntervalS);
+  double next = k.nowS - interval;
   int dots = 0;
-  for (auto it = hist.rbegin(); it != hist.rend() && dots < 6; ++it) {
+  for (auto it = hist.rbegin(); it != hist.rend() && dots < overlay_.targetPastCount; ++it) {
     if (it->tS > next) continue;
     p.drawEllipse(gridToWidget(it->estPos[0], it->estPos[1]), 1.8, 1.8);
-    next = it->tS - 30.0;
+    next = it->tS - interval;
     ++dots;
   }
 
@@ -419,10 +460,44 @@ void EcdisView::paintTarget(QPainter& p, const sim::TrackSnapshot& t, const Targ
   p.setBrush(Qt::NoBrush);
   if (!(danger && alarm && !k.flashOn)) paintTrackSymbol(p, t.status, at.p, r, QPen(c, width));
   if (selected_ == t.trackId) paintSelectionBrackets(p, at.p, r + 5.0, QPen(colour("text"), 1.5));
-  p.setPen(c);
-  // Label: the track number, and M while input estimation flags a manoeuvre.
-  p.drawText(at.p + QPointF(r + 3, -r - 2),
-             t.manoeuvring ? QStringLiteral("%1 M").arg(t.trackId) : QString::number(t.trackId));
+  const double box = selected_ == t.trackId ? r + 5.0 : r;
+  labelObstacles_.push_back(QRectF(at.p - QPointF(box, box), QSizeF(2 * box, 2 * box)));
+  // Label: the track number, and M while input estimation flags a manoeuvre (placed in paintLabels).
+  if (overlay_.showTargetLabels)
+    pendingLabels_.push_back(
+        PendingLabel{t.manoeuvring ? QStringLiteral("%1 M").arg(t.trackId) : QString::number(t.trackId), at.p,
+                     box, c, 8.0, false});
+}
+
+void EcdisView::paintLabels(QPainter& p) {
+  // Every label in a place of its own (label_placer.h): none covers another, a symbol or a box.
+  std::vector<LabelRequest> requests;
+  requests.reserve(pendingLabels_.size());
+  QFont font = p.font();
+  for (const PendingLabel& l : pendingLabels_) {
+    font.setPointSizeF(l.pointSize);
+    const QFontMetricsF fm(font);
+    const double pad = l.boxed ? 3.0 : 0.0;
+    requests.push_back(
+        {l.anchor, l.clearancePx, QSizeF(fm.horizontalAdvance(l.text) + 2 * pad, fm.height())});
+  }
+  const std::vector<QRectF> boxes = placeLabels(requests, labelObstacles_, QRectF(rect()));
+  placedLabels_.clear();
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const PendingLabel& l = pendingLabels_[i];
+    font.setPointSizeF(l.pointSize);
+    p.setFont(font);
+    if (l.boxed) {
+      QColor bg = colour("panel");
+      bg.setAlpha(210);
+      p.setPen(QPen(l.colour, 1.0));
+      p.setBrush(bg);
+      p.drawRect(boxes[i]);
+    }
+    p.setPen(l.boxed ? colour("text") : l.colour);
+    p.drawText(boxes[i], Qt::AlignCenter, l.text);
+    placedLabels_.push_back({l.text, boxes[i]});
+  }
 }
 
 void EcdisView::paintPlots(QPainter& p) {
@@ -435,72 +510,6 @@ void EcdisView::paintPlots(QPainter& p) {
     c.setAlpha(std::max(40, 255 - 40 * (newest - s.sweep)));
     p.setBrush(c);
     p.drawEllipse(gridToWidget(s.xM, s.yM), 2.5, 2.5);
-  }
-}
-
-void EcdisView::paintScaleBar(QPainter& p, const charts::Viewport& view) {
-  const double mpp = view.metresPerPixel();
-  if (!(mpp > 0.0)) return;
-  const double maxM = mpp * width() * 0.25;
-  const bool nm = maxM >= 1852.0 * 0.2;
-  const double len = nm ? nmToMetres(niceLength(metresToNm(maxM))) : niceLength(maxM);
-  const double px = len / mpp;
-  // Bottom right (the not-for-navigation notice takes the bottom left).
-  const QPointF a(width() - 16 - px, height() - 14), b(width() - 16, height() - 14);
-  p.setPen(QPen(colour("text"), 2.0));
-  p.drawLine(a, b);
-  p.drawLine(a, a - QPointF(0, 6));
-  p.drawLine(b, b - QPointF(0, 6));
-  const QString label = nm ? QStringLiteral("%1 NM").arg(metresToNm(len), 0, 'g', 3)
-                           : QStringLiteral("%1 m").arg(len, 0, 'f', 0);
-  p.drawText(a + QPointF(2, -8), label);
-  if (std::abs(view.rotationRad()) > 1e-9) {
-    // North arrow when the chart is not north-up.
-    const QPointF c(width() - 24.0, 70.0);
-    const double r = view.rotationRad();
-    const QPointF tip = c + QPointF(-14 * std::sin(r), -14 * std::cos(r));
-    p.drawLine(c, tip);
-    p.drawText(tip + QPointF(-4, -4), QStringLiteral("N"));
-  }
-}
-
-void EcdisView::paintReadouts(QPainter& p) {
-  QStringList lines;
-  if (cursor_) lines << QStringLiteral("Cursor ") + cursorText(*cursor_);
-  if (overlay_.eblBearingRad)
-    lines << QStringLiteral("EBL %1°").arg(radToDeg(*overlay_.eblBearingRad), 5, 'f', 1, QChar('0'));
-  if (overlay_.vrmRangeM)
-    lines << QStringLiteral("VRM %1 NM").arg(metresToNm(*overlay_.vrmRangeM), 0, 'f', 2);
-  if (addTargetFrom_ && steerTarget_)
-    lines << QStringLiteral(
-                 "Steer track %1: move to set its new vector (%2 min), click to order, Esc to cancel")
-                 .arg(steerTrack_)
-                 .arg(overlay_.vectorMinutes);
-  else if (addTargetFrom_)
-    lines << QStringLiteral("New target: move to set its vector (%1 min), click to place, Esc to cancel")
-                 .arg(overlay_.vectorMinutes);
-  if (lines.isEmpty()) return;
-  QFont font = p.font();
-  font.setPointSizeF(9.0);
-  p.setFont(font);
-  const QFontMetrics fm(font);
-  int w = 0;
-  for (const QString& l : lines) w = std::max(w, fm.horizontalAdvance(l));
-  const QRect box(6, 6, w + 12, static_cast<int>(lines.size()) * fm.height() + 8);
-  QColor bg = colour("panel");
-  bg.setAlpha(200);
-  p.setPen(Qt::NoPen);
-  p.setBrush(bg);
-  p.drawRect(box);
-  p.setPen(colour("text"));
-  for (int i = 0; i < lines.size(); ++i)
-    p.drawText(box.left() + 6, box.top() + 4 + fm.ascent() + i * fm.height(), lines[i]);
-  if (addTargetFrom_ && addTargetTo_) {
-    const QPointF from = gridToWidget(addTargetFrom_->xM, addTargetFrom_->yM);
-    p.setPen(QPen(colour("target"), 2.0, Qt::DashLine));
-    p.setBrush(Qt::NoBrush);
-    p.drawEllipse(from, 8.0, 8.0);
-    p.drawLine(from, *addTargetTo_);
   }
 }
 

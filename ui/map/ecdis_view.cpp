@@ -5,6 +5,7 @@
 #include <QContextMenuEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
 
@@ -34,16 +35,29 @@ void EcdisView::setHistory(const SimHistory* history, const geo::LocalFrame& fra
 }
 
 void EcdisView::setOverlay(const OverlaySettings& s) {
-  const bool rotate = s.courseUp != overlay_.courseUp;
+  const OverlaySettings before = overlay_;
   overlay_ = s;
-  if (rotate && !s.courseUp) {
+  if (s.orientation != before.orientation) rotationStale_ = true;
+  // A new place for own ship (or following again) moves the view now; other changes wait for own ship
+  // to leave the middle (true motion).
+  const bool place = s.motion != before.motion || s.offCentred != before.offCentred ||
+                     (s.followOwnShip && !before.followOwnShip) || s.ccrpFromBowM != before.ccrpFromBowM ||
+                     s.ccrpToStarboardM != before.ccrpToStarboardM;
+  emit overlayChanged(overlay_);
+  if (haveOwnShip()) {
+    applyMotion(wantedRotation(), place);
+    emitCcrpOffset();
+  } else if (s.orientation == Orientation::NorthUp && viewport().rotationRad() != 0.0) {
     const charts::Viewport v = viewport();
     setView(v.centre(), v.scaleDenominator(), 0.0);
-    appliedRotation_ = 0.0;
   }
-  if (rotate && s.courseUp) appliedRotation_ = 1e9;  // force the next frame to rotate
-  emit overlayChanged(overlay_);
-  frameUpdated();
+  emitOrderShown();
+  update();
+}
+
+void EcdisView::setUnits(const DisplayUnits& units) {
+  units_ = units;
+  update();
 }
 
 void EcdisView::setSelectedTrack(std::optional<int> trackId) {
@@ -80,7 +94,7 @@ EcdisView::Local EcdisView::localAt(double xM, double yM) const {
 
 std::pair<double, double> EcdisView::orderedCourseSpeed() const {
   if (pendingOrder_) return {pendingOrder_->course, pendingOrder_->speed};
-  if (!history_ || history_->empty() || !frame_) return {0.0, 0.0};
+  if (!haveOwnShip()) return {0.0, 0.0};
   const sim::SimFrame& f = history_->latest().frame;
   const double gamma = frame_->gridInfo(f.truth.position).convergenceRad;
   if (f.order) return {wrapTwoPi(f.order->headingRad + gamma), f.order->speedMps};
@@ -90,21 +104,62 @@ std::pair<double, double> EcdisView::orderedCourseSpeed() const {
 }
 
 void EcdisView::requestOrder(double trueCourseRad, double speedMps) {
+  if (!std::isfinite(trueCourseRad) || !std::isfinite(speedMps)) return;
   pendingOrder_ = PendingOrder{wrapTwoPi(trueCourseRad), std::max(0.0, speedMps),
                                history_ && !history_->empty() ? history_->latest().sequence : 0};
   emit orderRequested(pendingOrder_->course, pendingOrder_->speed);
+  emitOrderShown();
   update();
 }
 
-std::optional<QPointF> EcdisView::handlePosition() const {
-  if (!history_ || history_->empty() || !frame_) return std::nullopt;
-  const auto& x = history_->latest().frame.estimate.x;
-  const Local own = localAt(x[est::drkf::kPosX], x[est::drkf::kPosY]);
+void EcdisView::emitOrderShown() {
+  const auto shown = orderedCourseSpeed();
+  if (lastOrderShown_ && std::abs(angleDiff(lastOrderShown_->first, shown.first)) < 1e-9 &&
+      std::abs(lastOrderShown_->second - shown.second) < 1e-9)
+    return;
+  lastOrderShown_ = shown;
+  emit orderShown(shown.first, shown.second);
+}
+
+std::optional<QPointF> EcdisView::handleAt(double minutes) const {
+  if (!haveOwnShip()) return std::nullopt;
+  const geo::GridPoint c = ccrpGrid();
+  const Local own = localAt(c.xM, c.yM);
   const auto [course, speed] = orderedCourseSpeed();
-  const double gamma = frame_->gridInfo({x[est::drkf::kPosX], x[est::drkf::kPosY]}).convergenceRad;
-  const double len = speed * overlay_.vectorMinutes * 60.0;
-  const double g = course - gamma;
+  const geo::GridInfo gi = frame_->gridInfo(c);
+  const double len = speed * minutes * 60.0 * gi.scale;  // grid metres
+  const double g = course - gi.convergenceRad;
   return own.offset(len * std::sin(g), len * std::cos(g));
+}
+
+double EcdisView::handleMinutes() const {
+  double minutes = overlay_.vectorMinutes;
+  if (!haveOwnShip()) return minutes;
+  // Shortened only while own ship is on screen: a handle off screen with own ship is of no use either.
+  const QRectF inside = QRectF(rect()).adjusted(24.0, 24.0, -24.0, -24.0);
+  if (!inside.contains(ccrpWidget())) return minutes;
+  while (minutes > 0.5) {
+    const auto h = handleAt(minutes);
+    if (!h || inside.contains(*h)) break;
+    minutes = std::max(0.5, minutes / 2.0);
+  }
+  return minutes;
+}
+
+std::optional<QPointF> EcdisView::handlePosition() const {
+  return handleAt(handleMinutes());
+}
+
+std::pair<double, double> EcdisView::bearingRangeFromCcrp(const geo::GridPoint& g) const {
+  const geo::GridPoint c = ccrpGrid();
+  const geo::GridInfo gi = frame_->gridInfo(c);
+  return {wrapTwoPi(bearingOf(g.xM - c.xM, g.yM - c.yM) + gi.convergenceRad),
+          std::hypot(g.xM - c.xM, g.yM - c.yM) / gi.scale};
+}
+
+std::pair<double, double> EcdisView::orderAt(QPointF p, double minutes) const {
+  const auto [course, rangeM] = bearingRangeFromCcrp(widgetToGrid(p));
+  return {course, rangeM / (minutes * 60.0)};
 }
 
 std::optional<int> EcdisView::trackNear(QPointF p, double tolPx) const {
@@ -125,7 +180,7 @@ std::optional<int> EcdisView::trackNear(QPointF p, double tolPx) const {
 void EcdisView::frameUpdated() {
   if (pendingZones_ && history_ && !history_->empty() && history_->latest().frame.zones == *pendingZones_)
     pendingZones_.reset();
-  if (pendingOrder_ && history_ && !history_->empty() && frame_) {
+  if (pendingOrder_ && haveOwnShip()) {
     // An order given here shows at once; the frames take over once one carries it (commands reach
     // the worker before its next step), or a few frames later in any case.
     const LiveFrame& live = history_->latest();
@@ -136,44 +191,31 @@ void EcdisView::frameUpdated() {
                          std::abs(f.order->speedMps - pendingOrder_->speed) < 1e-6;
     if (carried || live.sequence > pendingOrder_->sequence + 5) pendingOrder_.reset();
   }
-  if (history_ && !history_->empty() && frame_) {
-    const auto& x = history_->latest().frame.estimate.x;
-    const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
-    const charts::Viewport v = viewport();
-    double rotation = v.rotationRad();
-    if (overlay_.courseUp) {
-      // Course-up, stabilised: the chart turns when the course has moved more than 5 degrees.
-      const double gamma = frame_->gridInfo({ox, oy}).convergenceRad;
-      const double cog = wrapTwoPi(
-          bearingOf(x[est::drkf::kVelX] + x[est::drkf::kCurX], x[est::drkf::kVelY] + x[est::drkf::kCurY]) +
-          gamma);
-      if (std::abs(angleDiff(cog, appliedRotation_)) > degToRad(5.0) || appliedRotation_ > 100.0) {
-        rotation = cog;
-        appliedRotation_ = cog;
-      }
-    }
-    if (overlay_.followOwnShip) {
-      // True motion with reset: recentre when own ship leaves the middle 60% of the screen.
-      const QPointF p = gridToWidget(ox, oy);
-      const bool outside = std::abs(p.x() - width() / 2.0) > 0.3 * width() ||
-                           std::abs(p.y() - height() / 2.0) > 0.3 * height();
-      if (outside || rotation != v.rotationRad()) {
-        const geo::GeoPoint g = frame_->toGeodetic({ox, oy});
-        setView({g.latDeg, g.lonDeg}, v.scaleDenominator(), rotation);
-      }
-    } else if (rotation != v.rotationRad()) {
-      setView(v.centre(), v.scaleDenominator(), rotation);
-    }
+  if (haveOwnShip()) {
+    lastHeadingRad_ = headingGridRad();
+    applyMotion(wantedRotation(), false);
+    emitCcrpOffset();
+    if (cursor_) emit cursorReadout(cursorText(*cursor_));  // own ship moved: the readout with it
   }
+  emitOrderShown();
   update();
 }
 
+void EcdisView::emitCcrpOffset() {
+  const geo::GridPoint off = ccrpOffsetGrid();
+  if (lastCcrpOffset_ && lastCcrpOffset_->xM == off.xM && lastCcrpOffset_->yM == off.yM) return;
+  lastCcrpOffset_ = off;
+  emit ccrpOffsetChanged(off.xM, off.yM, frame_->gridInfo(ccrpGrid()).convergenceRad);
+}
+
 void EcdisView::centreOnOwnShip() {
-  if (!history_ || history_->empty() || !frame_) return;
-  const auto& x = history_->latest().frame.estimate.x;
-  const geo::GeoPoint g = frame_->toGeodetic({x[est::drkf::kPosX], x[est::drkf::kPosY]});
-  const charts::Viewport v = viewport();
-  setView({g.latDeg, g.lonDeg}, v.scaleDenominator(), v.rotationRad());
+  if (!overlay_.followOwnShip) {
+    OverlaySettings s = overlay_;
+    s.followOwnShip = true;
+    setOverlay(s);  // places own ship
+    return;
+  }
+  if (haveOwnShip()) applyMotion(wantedRotation(), true);
 }
 
 void EcdisView::fitOwnShipAndTargets() {
@@ -214,33 +256,32 @@ void EcdisView::fitOwnShipAndTargets() {
 
 void EcdisView::setRangeNm(double rangeNm) {
   if (!(rangeNm > 0.0) || !std::isfinite(rangeNm)) return;
-  charts::LatLon centre = viewport().centre();
-  if (history_ && !history_->empty() && frame_) {
-    const auto& x = history_->latest().frame.estimate.x;
-    const geo::GeoPoint own = frame_->toGeodetic({x[est::drkf::kPosX], x[est::drkf::kPosY]});
-    centre = {own.latDeg, own.lonDeg};
-  }
-  setView(centre, scaleForRange(rangeNm, width(), height()), viewport().rotationRad());
+  const charts::Viewport v = viewport();
+  setView(v.centre(), scaleForRange(rangeNm, width(), height()), v.rotationRad());
+  // From own ship: at its place while following, else at the centre.
+  if (haveOwnShip())
+    placeAt(ccrpGrid(), overlay_.followOwnShip ? ownShipPlace() : QPointF(width() / 2.0, height() / 2.0),
+            v.rotationRad());
 }
 
 void EcdisView::stepRange(int step) {
   setRangeNm(kRangeScales[steppedRangeIndex(displayedRangeNm(viewport()), step)].rangeNm);
 }
 
+QString EcdisView::fromOwnShipText(charts::LatLon where) const {
+  if (!haveOwnShip()) return {};
+  // From own ship's CCRP along the geodesic: the grid is only valid near its zone, and the point may be
+  // anywhere on the chart.
+  const geo::GeoPoint own = frame_->toGeodetic(ccrpGrid());
+  const geo::RangeBearing rb = geo::rangeBearing(own, {where.latDeg, where.lonDeg});
+  if (!std::isfinite(rb.rangeM) || !std::isfinite(rb.trueBearingRad)) return {};
+  return formatBearing(rb.trueBearingRad) + QLatin1Char(' ') + formatDistance(rb.rangeM, units_);
+}
+
 QString EcdisView::cursorText(QPointF at) const {
   const charts::LatLon ll = viewport().toLatLon({at.x(), at.y()});
   QString s = latLonText(ll.latDeg, ll.lonDeg);
-  if (history_ && !history_->empty() && frame_) {
-    // From own ship along the geodesic: the grid is only valid near its zone, and the cursor may be
-    // anywhere on the chart.
-    const auto& x = history_->latest().frame.estimate.x;
-    const geo::GeoPoint own = frame_->toGeodetic({x[est::drkf::kPosX], x[est::drkf::kPosY]});
-    const geo::RangeBearing rb = geo::rangeBearing(own, {ll.latDeg, ll.lonDeg});
-    if (std::isfinite(rb.rangeM))
-      s += QStringLiteral("   %1° %2 NM")
-               .arg(radToDeg(rb.trueBearingRad), 5, 'f', 1, QChar('0'))
-               .arg(metresToNm(rb.rangeM), 0, 'f', 2);
-  }
+  if (const QString from = fromOwnShipText(ll); !from.isEmpty()) s += QStringLiteral("   ") + from;
   return s;
 }
 
@@ -265,19 +306,15 @@ void EcdisView::mousePressEvent(QMouseEvent* e) {
   if (e->button() == Qt::LeftButton) {
     if (const auto h = handlePosition(); h && QLineF(*h, e->position()).length() <= kHandleRadiusPx + 3.0) {
       draggingHandle_ = true;
+      dragMinutes_ = handleMinutes();
       handleDrag_ = e->position();
       update();
       return;
     }
     if (e->modifiers() & Qt::ControlModifier) {
       // Steer towards the point at the ordered speed.
-      if (history_ && !history_->empty() && frame_) {
-        const auto& x = history_->latest().frame.estimate.x;
-        const geo::GridPoint g = widgetToGrid(e->position());
-        const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
-        const double gamma = frame_->gridInfo({ox, oy}).convergenceRad;
-        requestOrder(wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gamma), orderedCourseSpeed().second);
-      }
+      if (haveOwnShip())
+        requestOrder(bearingRangeFromCcrp(widgetToGrid(e->position())).first, orderedCourseSpeed().second);
       return;
     }
     if (const auto t = trackNear(e->position())) {
@@ -308,7 +345,16 @@ void EcdisView::mouseMoveEvent(QMouseEvent* e) {
     update();
     return;
   }
+  const charts::LatLon before = viewport().centre();
   ChartView::mouseMoveEvent(e);
+  const charts::LatLon after = viewport().centre();
+  if ((e->buttons() & Qt::LeftButton) && overlay_.followOwnShip &&
+      (after.latDeg != before.latDeg || after.lonDeg != before.lonDeg)) {
+    // The operator pans: the view stops following own ship (it would snap back at the next frame).
+    OverlaySettings s = overlay_;
+    s.followOwnShip = false;
+    setOverlay(s);
+  }
   update();
 }
 
@@ -316,13 +362,8 @@ void EcdisView::mouseReleaseEvent(QMouseEvent* e) {
   if (draggingHandle_ && e->button() == Qt::LeftButton) {
     draggingHandle_ = false;
     handleDrag_.reset();
-    if (history_ && !history_->empty() && frame_) {
-      const auto& x = history_->latest().frame.estimate.x;
-      const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
-      const geo::GridPoint g = widgetToGrid(e->position());
-      const geo::GridInfo gi = frame_->gridInfo({ox, oy});
-      const double course = wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gi.convergenceRad);
-      const double speed = std::hypot(g.xM - ox, g.yM - oy) / gi.scale / (overlay_.vectorMinutes * 60.0);
+    if (haveOwnShip()) {
+      const auto [course, speed] = orderAt(e->position(), dragMinutes_);
       requestOrder(course, speed);
     }
     update();
@@ -335,6 +376,17 @@ void EcdisView::mouseReleaseEvent(QMouseEvent* e) {
     return;
   }
   ChartView::mouseReleaseEvent(e);
+}
+
+void EcdisView::wheelEvent(QWheelEvent* e) {
+  // In relative motion the zoom keeps own ship where it is (it is put back there at every frame).
+  const double steps = e->angleDelta().y() / 120.0;
+  if (steps != 0 && overlay_.followOwnShip && overlay_.motion == Motion::Relative && haveOwnShip()) {
+    zoomAbout(std::pow(1.25, steps), ccrpWidget());
+    e->accept();
+    return;
+  }
+  ChartView::wheelEvent(e);
 }
 
 QMenu* EcdisView::buildContextMenu(QPointF at) {
@@ -378,22 +430,18 @@ QMenu* EcdisView::buildContextMenu(QPointF at) {
   }
   addZoneActions(menu, at);
   menu->addSeparator();
+  // (The grid point, not the widget point: in relative motion the chart moves under the menu.)
   menu->addAction(tr("Steer towards here"), this, [this, g] {
-    if (!history_ || history_->empty() || !frame_) return;
-    const auto& x = history_->latest().frame.estimate.x;
-    const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
-    const double gamma = frame_->gridInfo({ox, oy}).convergenceRad;
-    requestOrder(wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gamma), orderedCourseSpeed().second);
+    if (haveOwnShip()) requestOrder(bearingRangeFromCcrp(g).first, orderedCourseSpeed().second);
   });
   menu->addAction(tr("EBL and VRM to here"), this,
                   [this, g] {
-                    if (!history_ || history_->empty() || !frame_) return;
-                    const auto& x = history_->latest().frame.estimate.x;
-                    const double ox = x[est::drkf::kPosX], oy = x[est::drkf::kPosY];
-                    const geo::GridInfo gi = frame_->gridInfo({ox, oy});
+                    if (!haveOwnShip()) return;
+                    // From the CCRP: the EBL's bearing and the VRM's radius are the cursor readout's.
+                    const auto [bearing, rangeM] = bearingRangeFromCcrp(g);
                     OverlaySettings s = overlay_;
-                    s.eblBearingRad = wrapTwoPi(bearingOf(g.xM - ox, g.yM - oy) + gi.convergenceRad);
-                    s.vrmRangeM = std::hypot(g.xM - ox, g.yM - oy) / gi.scale;
+                    s.eblBearingRad = bearing;
+                    s.vrmRangeM = rangeM;
                     setOverlay(s);
                   })
       ->setObjectName(QStringLiteral("eblVrm"));

@@ -1,8 +1,11 @@
 #include "ui/panels/own_ship_panel.h"
 
 #include <QFormLayout>
+#include <QGridLayout>
+#include <QPushButton>
 #include <QVBoxLayout>
 #include <cmath>
+#include <optional>
 
 #include "common/angles.h"
 #include "common/units.h"
@@ -18,10 +21,17 @@ QString latLon(const geo::GeoPoint& g) {
   return QString::fromStdString(io::formatLatitude(g.latDeg) + ' ' + io::formatLongitude(g.lonDeg));
 }
 
-QString courseSpeed(double vx, double vy, double gamma) {
-  return QStringLiteral("%1° %2 kn")
-      .arg(radToDeg(wrapTwoPi(bearingOf(vx, vy) + gamma)), 5, 'f', 1, QChar('0'))
-      .arg(std::hypot(vx, vy) / kMpsPerKnot, 0, 'f', 2);
+QString courseSpeed(double vx, double vy, double gamma, const DisplayUnits& u) {
+  return formatBearing(bearingOf(vx, vy) + gamma) + QLatin1Char(' ') + formatSpeed(std::hypot(vx, vy), u, 2);
+}
+
+/// A number typed by the operator ("12.5" or "12,5"); nullopt when it is not one.
+std::optional<double> typedNumber(const QString& text) {
+  QString t = text.trimmed();
+  t.replace(QLatin1Char(','), QLatin1Char('.'));
+  bool ok = false;
+  const double v = t.toDouble(&ok);
+  return ok && std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
 }
 
 QString duration(double s) {
@@ -43,6 +53,7 @@ OwnShipPanel::OwnShipPanel(QWidget* parent) : QWidget(parent) {
   setDisplayPalette(charts::Palette::Day);
   dr_->hide();
   v->addWidget(dr_);
+  v->addWidget(buildOrderRow());
   form_ = new QWidget(this);
   auto* f = new QFormLayout(form_);
   f->setContentsMargins(0, 0, 0, 0);
@@ -66,6 +77,90 @@ OwnShipPanel::OwnShipPanel(QWidget* parent) : QWidget(parent) {
   radarFix_ = add(tr("Radar fix (chart matching)"));
 }
 
+QWidget* OwnShipPanel::buildOrderRow() {
+  auto* box = new QWidget(this);
+  auto* grid = new QGridLayout(box);
+  grid->setContentsMargins(0, 0, 0, 4);
+  order_ = new QLabel(QStringLiteral("Order –"), box);
+  order_->setObjectName(QStringLiteral("orderReadout"));
+  QFont bold = order_->font();
+  bold.setBold(true);
+  order_->setFont(bold);
+  grid->addWidget(order_, 0, 0, 1, 5);
+  courseEdit_ = new QLineEdit(box);
+  courseEdit_->setObjectName(QStringLiteral("orderCourse"));
+  courseEdit_->setPlaceholderText(tr("course"));
+  courseEdit_->setToolTip(tr("True course to order, 0 to 360 degrees (Enter orders it)"));
+  courseEdit_->setMaximumWidth(70);
+  speedEdit_ = new QLineEdit(box);
+  speedEdit_->setObjectName(QStringLiteral("orderSpeed"));
+  speedEdit_->setPlaceholderText(tr("speed"));
+  speedEdit_->setMaximumWidth(70);
+  speedUnit_ = new QLabel(box);
+  auto* apply = new QPushButton(tr("Order"), box);
+  apply->setObjectName(QStringLiteral("orderApply"));
+  grid->addWidget(courseEdit_, 1, 0);
+  grid->addWidget(new QLabel(QStringLiteral("°"), box), 1, 1);
+  grid->addWidget(speedEdit_, 1, 2);
+  grid->addWidget(speedUnit_, 1, 3);
+  grid->addWidget(apply, 1, 4);
+  grid->setColumnStretch(5, 1);
+  orderError_ = new QLabel(box);
+  orderError_->setObjectName(QStringLiteral("orderError"));
+  orderError_->setWordWrap(true);
+  orderError_->setStyleSheet(QStringLiteral("QLabel { color: #c62828; font-weight: bold; }"));
+  orderError_->hide();
+  grid->addWidget(orderError_, 2, 0, 1, 6);
+  connect(courseEdit_, &QLineEdit::returnPressed, this, &OwnShipPanel::applyTypedOrder);
+  connect(speedEdit_, &QLineEdit::returnPressed, this, &OwnShipPanel::applyTypedOrder);
+  connect(apply, &QPushButton::clicked, this, &OwnShipPanel::applyTypedOrder);
+  setUnits(units_);
+  return box;
+}
+
+void OwnShipPanel::setUnits(const DisplayUnits& units) {
+  units_ = units;
+  speedUnit_->setText(unitName(units.speed));
+  speedEdit_->setToolTip(tr("Speed through the water to order, 0 to %1 %2 (Enter orders it)")
+                             .arg(formatSpeed(kMaxOrderSpeedMps, units, 1, false), unitName(units.speed)));
+  showOrder(orderCourseRad_, orderSpeedMps_);
+}
+
+void OwnShipPanel::showOrder(double trueCourseRad, double speedMps) {
+  orderCourseRad_ = trueCourseRad;
+  orderSpeedMps_ = speedMps;
+  order_->setText(tr("Order %1").arg(formatCourseSpeed(trueCourseRad, speedMps, units_)));
+}
+
+bool OwnShipPanel::applyTypedOrder() {
+  double course = orderCourseRad_, speed = orderSpeedMps_;
+  QString problem;
+  if (!courseEdit_->text().trimmed().isEmpty()) {
+    const auto c = typedNumber(courseEdit_->text());
+    if (!c || *c < 0.0 || *c > 360.0)
+      problem = tr("Course \"%1\": give degrees from 0 to 360").arg(courseEdit_->text().trimmed());
+    else
+      course = wrapTwoPi(degToRad(*c));
+  }
+  if (problem.isEmpty() && !speedEdit_->text().trimmed().isEmpty()) {
+    const auto v = typedNumber(speedEdit_->text());
+    const double limit = speedIn(kMaxOrderSpeedMps, units_.speed);
+    if (!v || *v < 0.0 || *v > limit + 1e-9)
+      problem = tr("Speed \"%1\": give %2 from 0 to %3")
+                    .arg(speedEdit_->text().trimmed(), unitName(units_.speed))
+                    .arg(limit, 0, 'f', 1);
+    else
+      speed = mpsFrom(*v, units_.speed);
+  }
+  orderError_->setText(problem);
+  orderError_->setVisible(!problem.isEmpty());
+  if (!problem.isEmpty()) return false;
+  courseEdit_->clear();
+  speedEdit_->clear();
+  emit orderTyped(course, speed);
+  return true;
+}
+
 QLabel* OwnShipPanel::add(const QString& name) {
   auto* l = new QLabel(QStringLiteral("–"), form_);
   l->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -84,19 +179,18 @@ void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame)
   error_->setText(QStringLiteral("%1 m / %2 m")
                       .arg(std::hypot(x[dk::kPosX] - t[dk::kPosX], x[dk::kPosY] - t[dk::kPosY]), 0, 'f', 1)
                       .arg(live.error95M, 0, 'f', 1));
-  estCog_->setText(courseSpeed(x[dk::kVelX] + x[dk::kCurX], x[dk::kVelY] + x[dk::kCurY], gamma));
-  trueCog_->setText(courseSpeed(f.truth.groundVxMps(), f.truth.groundVyMps(), gamma));
+  estCog_->setText(courseSpeed(x[dk::kVelX] + x[dk::kCurX], x[dk::kVelY] + x[dk::kCurY], gamma, units_));
+  trueCog_->setText(courseSpeed(f.truth.groundVxMps(), f.truth.groundVyMps(), gamma, units_));
   heading_->setText(
-      QStringLiteral("%1° / %2°")
-          .arg(radToDeg(wrapTwoPi(bearingOf(x[dk::kVelX], x[dk::kVelY]) + gamma)), 5, 'f', 1, QChar('0'))
-          .arg(radToDeg(wrapTwoPi(f.truth.headingRad + gamma)), 5, 'f', 1, QChar('0')));
-  current_->setText(QStringLiteral("%1 / %2 kn @ %3° / %4°")
-                        .arg(std::hypot(x[dk::kCurX], x[dk::kCurY]) / kMpsPerKnot, 0, 'f', 2)
-                        .arg(std::hypot(t[dk::kCurX], t[dk::kCurY]) / kMpsPerKnot, 0, 'f', 2)
-                        .arg(radToDeg(wrapTwoPi(bearingOf(x[dk::kCurX], x[dk::kCurY]) + gamma)), 0, 'f', 0)
-                        .arg(radToDeg(wrapTwoPi(bearingOf(t[dk::kCurX], t[dk::kCurY]) + gamma)), 0, 'f', 0));
-  log_->setText(
-      QStringLiteral("%1 / %2 m/s").arg(x[dk::kLogBias], 0, 'f', 3).arg(t[dk::kLogBias], 0, 'f', 3));
+      QStringLiteral("%1 / %2").arg(formatBearing(bearingOf(x[dk::kVelX], x[dk::kVelY]) + gamma),
+                                    formatBearing(f.truth.headingRad + gamma)));
+  current_->setText(QStringLiteral("%1 / %2 @ %3 / %4")
+                        .arg(formatSpeed(std::hypot(x[dk::kCurX], x[dk::kCurY]), units_, 2, false),
+                             formatSpeed(std::hypot(t[dk::kCurX], t[dk::kCurY]), units_, 2),
+                             formatBearing(bearingOf(x[dk::kCurX], x[dk::kCurY]) + gamma, 0),
+                             formatBearing(bearingOf(t[dk::kCurX], t[dk::kCurY]) + gamma, 0)));
+  log_->setText(QStringLiteral("%1 / %2").arg(formatSpeed(x[dk::kLogBias], units_, 3, false),
+                                              formatSpeed(t[dk::kLogBias], units_, 3)));
   loran_->setText(QStringLiteral("(%1, %2) / (%3, %4) m")
                       .arg(x[dk::kLoranX], 0, 'f', 1)
                       .arg(x[dk::kLoranY], 0, 'f', 1)

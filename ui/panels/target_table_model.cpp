@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "common/angles.h"
-#include "common/units.h"
+#include "tracking/cpa.h"
 
 namespace reckoner::ui {
 
@@ -14,13 +14,42 @@ void TargetTableModel::setTracks(const std::vector<sim::TrackSnapshot>& tracks) 
                         std::equal(tracks.begin(), tracks.end(), tracks_.begin(),
                                    [](const auto& a, const auto& b) { return a.trackId == b.trackId; });
   if (sameRows) {
-    tracks_ = tracks;
+    raw_ = tracks;
+    refreshKinematics();
     if (!tracks_.empty()) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
     return;
   }
   beginResetModel();
-  tracks_ = tracks;
+  raw_ = tracks;
+  refreshKinematics();
   endResetModel();
+}
+
+void TargetTableModel::refreshKinematics() {
+  tracks_ = raw_;
+  if (ccrpDxM_ == 0.0 && ccrpDyM_ == 0.0) return;  // the CCRP is the estimated point: the tracker's figures
+  for (sim::TrackSnapshot& t : tracks_) {
+    est::ttkf::Belief b = t.estimate;
+    b.x[est::ttkf::kOwnX] += ccrpDxM_;
+    b.x[est::ttkf::kOwnY] += ccrpDyM_;
+    t.kinematics = track::kinematicsOf(b, convergenceRad_);
+  }
+}
+
+void TargetTableModel::setUnits(const DisplayUnits& units) {
+  if (units == units_) return;
+  units_ = units;
+  emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
+  if (!tracks_.empty()) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+}
+
+void TargetTableModel::setCcrpOffset(double dxM, double dyM, double convergenceRad) {
+  if (dxM == ccrpDxM_ && dyM == ccrpDyM_ && convergenceRad == convergenceRad_) return;
+  ccrpDxM_ = dxM;
+  ccrpDyM_ = dyM;
+  convergenceRad_ = convergenceRad;
+  refreshKinematics();
+  if (!tracks_.empty()) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
 }
 
 int TargetTableModel::trackIdAt(int row) const {
@@ -92,7 +121,7 @@ QVariant TargetTableModel::data(const QModelIndex& index, int role) const {
     case Filter:
       return QString::fromLatin1(track::trackerKindName(t.kind));
     case Range:
-      return QString::number(metresToNm(k.rangeM), 'f', 2);
+      return formatDistance(k.rangeM, units_, 2, false);
     case Bearing:
       return QString::number(radToDeg(k.trueBearingRad), 'f', 1);
     case Course:
@@ -100,13 +129,13 @@ QVariant TargetTableModel::data(const QModelIndex& index, int role) const {
                                                        : QString::number(radToDeg(k.trueCourseRad), 'f', 1);
     case Speed:
       return t.status == track::TrackStatus::Tentative ? QString()
-                                                       : QString::number(k.speedMps / kMpsPerKnot, 'f', 1);
+                                                       : formatSpeed(k.speedMps, units_, 1, false);
     case Cpa:
-      return cpaKnown ? QString::number(metresToNm(k.cpa.cpaM), 'f', 2) : QString();
+      return cpaKnown ? formatDistance(k.cpa.cpaM, units_, 2, false) : QString();
     case Tcpa:
       return cpaKnown ? QString::number(k.cpa.tcpaS / 60.0, 'f', 1) : QString();
     case SdCpa:
-      return cpaKnown ? QString::number(metresToNm(k.cpa.sdCpaM), 'f', 2) : QString();
+      return cpaKnown ? formatDistance(k.cpa.sdCpaM, units_, 2, false) : QString();
     case SdTcpa:
       return cpaKnown ? QString::number(k.cpa.sdTcpaS / 60.0, 'f', 1) : QString();
     default:
@@ -116,10 +145,12 @@ QVariant TargetTableModel::data(const QModelIndex& index, int role) const {
 
 QVariant TargetTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
   if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
-  static const char* const kNames[] = {"Track",    "Status",    "Filter",     "Range NM",
-                                       "Brg °T",   "Course °T", "Speed kn",   "CPA NM",
-                                       "TCPA min", "sd CPA NM", "sd TCPA min"};
-  return section >= 0 && section < ColumnCount ? QString::fromUtf8(kNames[section]) : QVariant();
+  const QString d = unitName(units_.distance), v = unitName(units_.speed);
+  const QString names[] = {
+      tr("Track"),    tr("Status"),           tr("Filter"),          tr("Range %1").arg(d),
+      tr("Brg °T"),   tr("Course °T"),        tr("Speed %1").arg(v), tr("CPA %1").arg(d),
+      tr("TCPA min"), tr("sd CPA %1").arg(d), tr("sd TCPA min")};
+  return section >= 0 && section < ColumnCount ? QVariant(names[section]) : QVariant();
 }
 
 }  // namespace reckoner::ui

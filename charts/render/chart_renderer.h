@@ -1,8 +1,9 @@
 #pragma once
 // Draws chart cells into a QImage with the portrayal table, colour table and mariner's settings:
-// coarse cells first and finer ones over their own coverage (the largest scale wins where cells
-// overlap), areas, lines and points by display priority, display category and SCAMIN honoured, cell
-// boundaries and an overscale indication. Safe to use from a worker thread (QImage, not QPixmap).
+// over the world background (GSHHG land and water, a graticule; world_layer.h), coarse cells first and finer
+// ones over their own coverage (the largest scale wins where cells overlap), areas, lines and points by
+// display priority, display category and SCAMIN honoured, cell boundaries and an overscale indication. Safe
+// to use from a worker thread (QImage, not QPixmap).
 //
 // Speed: a ChartRenderer projects each cell once to Mercator and sorts its features by drawing order
 // (a PreparedCell, kept while the renderer lives), so a redraw is one affine map per vertex, with
@@ -62,7 +63,6 @@ class ChartRenderer {
   /// The world background (GSHHG land and water, shorelines, graticule) under the cells; on by
   /// default. Off: the plain NODTA background.
   void setWorldBackground(bool on) { worldBackground_ = on; }
-  [[nodiscard]] bool worldBackground() const { return worldBackground_; }
 
  private:
   const PreparedCell& preparedOf(const CellPtr& cell);

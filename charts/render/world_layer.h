@@ -31,13 +31,12 @@ class PreparedWorld {
     std::vector<Part> areas, lines;
   };
   explicit PreparedWorld(std::shared_ptr<const world::Shoreline> shoreline);
-  [[nodiscard]] const world::Shoreline& shoreline() const { return *shoreline_; }
   [[nodiscard]] const std::vector<Bin>& bins() const { return bins_; }
   [[nodiscard]] const std::vector<MercatorPoint>& points() const { return points_; }
 
  private:
   Part add(const std::vector<LatLon>& pts, int level);
-  std::shared_ptr<const world::Shoreline> shoreline_;
+  std::shared_ptr<const world::Shoreline> shoreline_;  // kept alive: the renderer's cache is keyed by it
   std::vector<Bin> bins_;
   std::vector<MercatorPoint> points_;
 };
@@ -56,8 +55,6 @@ class WorldLayer {
   /// note naming the source, or the problem when there is no shoreline. Fills in the world fields of
   /// `stats`.
   void draw(paint::Ctx& c, RenderStats& stats);
-  /// Shorelines projected so far (one per resolution drawn).
-  [[nodiscard]] std::size_t preparedCount() const { return prepared_.size(); }
 
  private:
   const PreparedWorld& preparedOf(const std::shared_ptr<const world::Shoreline>& s);

@@ -20,6 +20,7 @@ packages=(
   libeigen3-dev libgeographiclib-dev
   qt6-base-dev qt6-charts-dev qt6-multimedia-dev libqt6opengl6-dev libxkbcommon-dev qt6-qpa-plugins
   libgdal-dev gdal-bin zlib1g-dev libbenchmark-dev libcli11-dev python3
+  gmt-gshhg-low  # GSHHG shorelines (LGPL data), read at run time for the world background (docs/charts.md)
 )
 
 install_deps() {

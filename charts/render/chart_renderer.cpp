@@ -1,5 +1,6 @@
-// The render loop: cells from coarse to fine, each one's coverage blanked, its features culled and
-// handed to the painters (painting.h) in drawing order, then its labels and boundary; the notices.
+// The render loop: the world background, then cells from coarse to fine, each one's coverage blanked, its
+// features culled and handed to the painters (painting.h) in drawing order, then its labels and
+// boundary; the notices.
 #include "charts/render/chart_renderer.h"
 
 #include <QBrush>
@@ -12,6 +13,7 @@
 
 #include "charts/render/painting.h"
 #include "charts/render/prepared_cell.h"
+#include "charts/render/world_layer.h"
 
 namespace reckoner::charts {
 
@@ -177,7 +179,7 @@ void drawOverscale(const Ctx& c, double overscale) {
 }  // namespace
 
 ChartRenderer::ChartRenderer(const PortrayalTable& table, const ColourTable& colours)
-    : table_(table), colours_(colours) {}
+    : table_(table), colours_(colours), world_(std::make_unique<WorldLayer>()) {}
 
 ChartRenderer::~ChartRenderer() = default;
 
@@ -206,8 +208,10 @@ RenderStats ChartRenderer::render(QImage& image, const std::vector<CellPtr>& cel
   QPainter p(&image);
   p.setRenderHint(QPainter::Antialiasing, true);
   p.setRenderHint(QPainter::TextAntialiasing, true);
-  const Rgb nodta = colours_.colour(s.palette, "NODTA");
-  image.fill(QColor(nodta.r, nodta.g, nodta.b));
+  if (!worldBackground_) {  // the world background fills the image itself
+    const Rgb nodta = colours_.colour(s.palette, "NODTA");
+    image.fill(QColor(nodta.r, nodta.g, nodta.b));
+  }
   const Bounds vb = view.visibleBounds();
 
   // Coarse cells first, finer ones on top; each finer cell first blanks its own coverage.
@@ -226,6 +230,9 @@ RenderStats ChartRenderer::render(QImage& image, const std::vector<CellPtr>& cel
   Ctx c{p, view, view.mercatorToScreen(), visLo, visHi, s, colours_, safety, paint::makeFonts(), {}, {}};
   MarinerSettings shades = s;
   shades.safetyContourM = safety;
+  // Under the cells, the world background: wherever no cell's coverage reaches, the view still shows
+  // land, water and a graticule.
+  if (worldBackground_) world_->draw(c, stats);
 
   for (const PreparedCell* pc : order) {
     ++stats.cellsDrawn;

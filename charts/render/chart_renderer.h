@@ -1,8 +1,9 @@
 #pragma once
 // Draws chart cells into a QImage with the portrayal table, colour table and mariner's settings:
-// coarse cells first and finer ones over their own coverage (the largest scale wins where cells
-// overlap), areas, lines and points by display priority, display category and SCAMIN honoured, cell
-// boundaries and an overscale indication. Safe to use from a worker thread (QImage, not QPixmap).
+// over the world background (GSHHG land and water, a graticule; world_layer.h), coarse cells first and finer
+// ones over their own coverage (the largest scale wins where cells overlap), areas, lines and points by
+// display priority, display category and SCAMIN honoured, cell boundaries and an overscale indication. Safe
+// to use from a worker thread (QImage, not QPixmap).
 //
 // Speed: a ChartRenderer projects each cell once to Mercator and sorts its features by drawing order
 // (a PreparedCell, kept while the renderer lives), so a redraw is one affine map per vertex, with
@@ -13,6 +14,7 @@
 #include <atomic>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "charts/model/chart_model.h"
@@ -29,9 +31,16 @@ struct RenderStats {
   double overscale = 1.0;  ///< compilation scale / display scale of the finest cell drawn (> 1: overscale)
   bool notForNavigation = false;  ///< a drawn cell says so (DSID_COMT) and the notice is on screen
   bool cancelled = false;         ///< the cancel flag was raised during the render; the image is incomplete
+  /// The world background under the cells (docs/charts.md, "World background"): the GSHHG resolution
+  /// drawn ('c', 'l' or 'i'; 0 when none or switched off), the bins of it in view, and why the
+  /// resolution the view wants is not drawn (the file named), empty when it is.
+  char worldResolution = 0;
+  int worldBinsDrawn = 0;
+  std::string worldProblem;
 };
 
 class PreparedCell;
+class WorldLayer;
 
 class ChartRenderer {
  public:
@@ -51,12 +60,17 @@ class ChartRenderer {
   /// Drops prepared cells that are not in `keep` (after the user closes a chart).
   void retainOnly(const std::vector<CellPtr>& keep);
   [[nodiscard]] std::size_t preparedCount() const { return prepared_.size(); }
+  /// The world background (GSHHG land and water, shorelines, graticule) under the cells; on by
+  /// default. Off: the plain NODTA background.
+  void setWorldBackground(bool on) { worldBackground_ = on; }
 
  private:
   const PreparedCell& preparedOf(const CellPtr& cell);
   const PortrayalTable& table_;
   const ColourTable& colours_;
   std::map<const ChartCell*, std::unique_ptr<PreparedCell>> prepared_;
+  std::unique_ptr<WorldLayer> world_;
+  bool worldBackground_ = true;
 };
 
 /// One-shot rendering (prepares the cells each time; a view keeps a ChartRenderer instead).

@@ -28,35 +28,35 @@ std::string versionText() {
   return GDALVersionInfo("RELEASE_NAME");
 }
 namespace fs = std::filesystem;
+
 namespace {
+void CPL_STDCALL captureError(CPLErr level, CPLErrorNum, const char* msg) {
+  auto* self = static_cast<ErrorCapture*>(CPLGetErrorHandlerUserData());
+  if (self && level >= CE_Failure) self->note(msg ? msg : "unknown GDAL error");
+}
+}  // namespace
 
-/// Collects GDAL errors of the calling thread while alive (CPLPushErrorHandlerEx: per thread, so
-/// nothing reaches stderr behind the caller's back).
-class ErrorCapture {
- public:
-  ErrorCapture() { CPLPushErrorHandlerEx(&ErrorCapture::handler, this); }
-  ~ErrorCapture() { CPLPopErrorHandler(); }
-  ErrorCapture(const ErrorCapture&) = delete;
-  ErrorCapture& operator=(const ErrorCapture&) = delete;
-  /// The first error as GDAL wrote it: possibly several lines, possibly with raw input bytes.
-  [[nodiscard]] const std::string& firstError() const { return first_; }
-  /// The first error on one line (io::oneLine), with the /vsimem/ folder GDAL read from replaced by
-  /// the folder the files came from.
-  [[nodiscard]] std::string firstErrorLine(const std::string& memDir, const std::string& realDir) const {
-    std::string m = first_;
-    if (!memDir.empty())
-      for (std::size_t at = m.find(memDir); at != std::string::npos; at = m.find(memDir, at + realDir.size()))
-        m.replace(at, memDir.size(), realDir);
-    return io::oneLine(m);
-  }
+ErrorCapture::ErrorCapture() {
+  CPLPushErrorHandlerEx(&captureError, this);
+}
 
- private:
-  static void CPL_STDCALL handler(CPLErr level, CPLErrorNum, const char* msg) {
-    auto* self = static_cast<ErrorCapture*>(CPLGetErrorHandlerUserData());
-    if (self && level >= CE_Failure && self->first_.empty()) self->first_ = msg ? msg : "unknown GDAL error";
-  }
-  std::string first_;
-};
+ErrorCapture::~ErrorCapture() {
+  CPLPopErrorHandler();
+}
+
+void ErrorCapture::note(const char* message) {
+  if (first_.empty()) first_ = message;
+}
+
+std::string ErrorCapture::firstErrorLine(const std::string& memDir, const std::string& realDir) const {
+  std::string m = first_;
+  if (!memDir.empty())
+    for (std::size_t at = m.find(memDir); at != std::string::npos; at = m.find(memDir, at + realDir.size()))
+      m.replace(at, memDir.size(), realDir);
+  return io::oneLine(m);
+}
+
+namespace {
 
 std::once_flag gdalInit;
 std::string catalogueDir;

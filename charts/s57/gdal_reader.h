@@ -12,6 +12,27 @@
 
 namespace reckoner::charts::gdalio {
 
+/// Collects GDAL errors of the calling thread while alive (CPLPushErrorHandlerEx: per thread, so
+/// nothing reaches stderr behind the caller's back).
+class ErrorCapture {
+ public:
+  ErrorCapture();
+  ~ErrorCapture();
+  ErrorCapture(const ErrorCapture&) = delete;
+  ErrorCapture& operator=(const ErrorCapture&) = delete;
+  /// The first error as GDAL wrote it: possibly several lines, possibly with raw input bytes.
+  [[nodiscard]] const std::string& firstError() const { return first_; }
+  /// The first error on one line (io::oneLine), with the /vsimem/ folder GDAL read from (`memDir`)
+  /// replaced by the folder the files came from (`realDir`).
+  [[nodiscard]] std::string firstErrorLine(const std::string& memDir = {},
+                                           const std::string& realDir = {}) const;
+  /// Keeps `message` if it is the first error (GDAL's handler calls it).
+  void note(const char* message);
+
+ private:
+  std::string first_;
+};
+
 /// Registers GDAL's drivers and finds the S-57 catalogue, once per process (thread-safe).
 void initialise();
 /// GDAL's release name, "3.6.2" (of the library loaded, not the headers).

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <system_error>
 
 namespace reckoner::io {
@@ -18,7 +19,34 @@ std::string degMin(double v, int degWidth, char pos, char neg) {
   std::snprintf(buf, sizeof buf, "%0*ld\u00b0%06.3f'%c", degWidth, deg, min, hemi);
   return buf;
 }
+std::string degMinSec(double v, char pos, char neg) {
+  if (!std::isfinite(v)) return "--";
+  const long seconds = std::lround(std::abs(v) * 3600.0);
+  std::string s = std::to_string(seconds / 3600) + "\u00b0";
+  char buf[24];
+  if (seconds % 3600 != 0) {
+    std::snprintf(buf, sizeof buf, "%02ld'", seconds / 60 % 60);
+    s += buf;
+  }
+  if (seconds % 60 != 0) {
+    std::snprintf(buf, sizeof buf, "%02ld\"", seconds % 60);
+    s += buf;
+  }
+  if (seconds != 0 && seconds != 180 * 3600) s.push_back(v < 0 ? neg : pos);
+  return s;
+}
 }  // namespace
+
+std::string formatLatitudeLabel(double latDeg) {
+  return degMinSec(latDeg, 'N', 'S');
+}
+std::string formatLongitudeLabel(double lonDeg) {
+  if (!std::isfinite(lonDeg)) return "--";
+  double lon = std::fmod(lonDeg, 360.0);
+  if (lon > 180.0) lon -= 360.0;
+  if (lon <= -180.0) lon += 360.0;
+  return degMinSec(lon, 'E', 'W');
+}
 
 std::string formatLatitude(double latDeg) {
   return degMin(latDeg, 2, 'N', 'S');

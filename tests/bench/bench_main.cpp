@@ -16,6 +16,8 @@
 
 #include "charts/render/chart_renderer.h"
 #include "charts/s57/s57_loader.h"
+#include "charts/world/gshhg.h"
+#include "charts/world/world_data.h"
 #include "common/angles.h"
 #include "common/rng.h"
 #include "files/scenario_json.h"
@@ -296,7 +298,8 @@ void BM_LoadChartUS5WA22M(benchmark::State& state) {
 BENCHMARK(BM_LoadChartUS5WA22M)->Unit(benchmark::kMillisecond);
 
 /// A full redraw of US5WA22M at 1920x1080, 1:22 000 (the harbour and its approaches), day, standard
-/// display, from the prepared (Mercator-projected) cell, as a chart view redraws after a zoom.
+/// display (/1: all), from the prepared (Mercator-projected) cell, as a chart view redraws after a zoom;
+/// second argument 1: over the world background (the default), 0: over plain NODTA.
 void BM_RenderFullUS5WA22M(benchmark::State& state) {
   const std::string path = RECKONER_SHARED_DIR "/data/enc/US5WA22M/US5WA22M.000";
   if (!std::filesystem::exists(path)) {
@@ -308,6 +311,7 @@ void BM_RenderFullUS5WA22M(benchmark::State& state) {
   QImage image(1920, 1080, QImage::Format_ARGB32_Premultiplied);
   charts::ChartRenderer renderer;
   renderer.prepare(cells[0]);
+  renderer.setWorldBackground(state.range(1) != 0);
   charts::MarinerSettings settings;
   settings.category =
       state.range(0) == 0 ? charts::DisplayCategory::Standard : charts::DisplayCategory::Other;
@@ -316,7 +320,46 @@ void BM_RenderFullUS5WA22M(benchmark::State& state) {
     benchmark::DoNotOptimize(st);
   }
 }
-BENCHMARK(BM_RenderFullUS5WA22M)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderFullUS5WA22M)->Args({0, 1})->Args({1, 1})->Args({0, 0})->Unit(benchmark::kMillisecond);
+
+/// The world background alone (no cell) at 1920x1080, from the shoreline loaded and projected once:
+/// /0 the whole world at 1:100 000 000 (GSHHG crude, every bin), /1 Puget Sound at 1:700 000
+/// (intermediate, one bin), /2 US5WA22M's view at 1:22 000 (what BM_RenderFullUS5WA22M/0/1 draws under
+/// the cell). Needs Debian's gmt-gshhg-low.
+void BM_RenderWorldBackground(benchmark::State& state) {
+  if (!std::filesystem::exists(charts::world::gshhgPath(charts::world::ShoreResolution::Crude))) {
+    state.SkipWithError("gmt-gshhg-low is not installed");
+    return;
+  }
+  const charts::Viewport view = state.range(0) == 0 ? charts::Viewport({20.0, 0.0}, 1e8, 1920, 1080)
+                                : state.range(0) == 1
+                                    ? charts::Viewport({47.27, -122.45}, 700000, 1920, 1080)
+                                    : charts::Viewport({47.278, -122.453}, 22000, 1920, 1080);
+  QImage image(1920, 1080, QImage::Format_ARGB32_Premultiplied);
+  charts::ChartRenderer renderer;
+  renderer.render(image, {}, view, charts::MarinerSettings{});  // loads and projects the shoreline
+  for (auto _ : state) {
+    auto st = renderer.render(image, {}, view, charts::MarinerSettings{});
+    benchmark::DoNotOptimize(st);
+  }
+}
+BENCHMARK(BM_RenderWorldBackground)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+/// Reading and assembling one GSHHG file (the one-off cost of a resolution's first view): /0 crude,
+/// /1 low, /2 intermediate.
+void BM_LoadGshhg(benchmark::State& state) {
+  const auto r = static_cast<charts::world::ShoreResolution>(state.range(0));
+  const std::string path = charts::world::gshhgPath(r);
+  if (!std::filesystem::exists(path)) {
+    state.SkipWithError("gmt-gshhg-low is not installed");
+    return;
+  }
+  for (auto _ : state) {
+    auto s = charts::world::loadGshhg(path, r);
+    benchmark::DoNotOptimize(s);
+  }
+}
+BENCHMARK(BM_LoadGshhg)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 /// A pan frame from the cache: the last rendered 1920x1080 image drawn shifted by a drag of (37, -23)
 /// px into the window's back buffer while the worker renders the new view.

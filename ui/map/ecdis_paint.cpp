@@ -462,7 +462,7 @@ void EcdisView::paintScaleBar(QPainter& p, const charts::Viewport& view) {
   }
 }
 
-void EcdisView::paintReadouts(QPainter& p) {
+QStringList EcdisView::readoutLines() const {
   QStringList lines;
   if (cursor_) lines << QStringLiteral("Cursor ") + cursorText(*cursor_);
   if (overlay_.eblBearingRad)
@@ -477,14 +477,30 @@ void EcdisView::paintReadouts(QPainter& p) {
   else if (addTargetFrom_)
     lines << QStringLiteral("New target: move to set its vector (%1 min), click to place, Esc to cancel")
                  .arg(overlay_.vectorMinutes);
-  if (lines.isEmpty()) return;
-  QFont font = p.font();
-  font.setPointSizeF(9.0);
-  p.setFont(font);
-  const QFontMetrics fm(font);
+  return lines;
+}
+
+QFont EcdisView::readoutFont() const {
+  QFont f = font();
+  f.setPointSizeF(9.0);
+  return f;
+}
+
+QRect EcdisView::readoutRect() const {
+  const QStringList lines = readoutLines();
+  if (lines.isEmpty()) return {};
+  const QFontMetrics fm(readoutFont());
   int w = 0;
   for (const QString& l : lines) w = std::max(w, fm.horizontalAdvance(l));
-  const QRect box(6, 6, w + 12, static_cast<int>(lines.size()) * fm.height() + 8);
+  return {6, 6, w + 12, static_cast<int>(lines.size()) * fm.height() + 8};
+}
+
+void EcdisView::paintReadouts(QPainter& p) {
+  const QStringList lines = readoutLines();
+  if (lines.isEmpty()) return;
+  p.setFont(readoutFont());
+  const QFontMetrics fm(p.font());
+  const QRect box = readoutRect();
   QColor bg = colour("panel");
   bg.setAlpha(200);
   p.setPen(Qt::NoPen);

@@ -97,6 +97,9 @@ class EcdisView : public ChartView {
   /// The context menu for a widget point (tests trigger its actions).
   QMenu* buildContextMenu(QPointF at);
   [[nodiscard]] bool addingTarget() const { return addTargetFrom_.has_value(); }
+  /// The box of the cursor / EBL / VRM readout at the top left (widget pixels; empty when it has no
+  /// line). The chart's own notes keep clear of it (the overscale note is at the bottom centre).
+  [[nodiscard]] QRect readoutRect() const;
   [[nodiscard]] bool steeringTarget() const { return steerTarget_.has_value(); }
 
  signals:
@@ -164,6 +167,8 @@ class EcdisView : public ChartView {
   void paintPlots(QPainter& p);
   void paintScaleBar(QPainter& p, const charts::Viewport& view);
   void paintReadouts(QPainter& p);
+  [[nodiscard]] QStringList readoutLines() const;
+  [[nodiscard]] QFont readoutFont() const;
   // ecdis_radar.cpp
   void paintRadarPicture(QPainter& p);
   void paintRadarEchoes(QPainter& p);

@@ -121,22 +121,25 @@ void MainWindow::buildDocks() {
   pick_ = new QTextBrowser(this);
   pick_->setObjectName(QStringLiteral("pickReport"));
   dock(tr("Pick report"), QStringLiteral("pickDock"), pick_, Qt::BottomDockWidgetArea);
+  buildChartDock();
   arrangeDocks();
 }
 
 void MainWindow::arrangeDocks() {
   // Chart first: one column on the right, own ship / sensors / plots tabbed above alerts / targets /
-  // pick report, so the chart keeps some 60% of the window at 1024 x 768. The operator may move and
+  // pick report / charts, so the chart keeps some 60% of the window at 1024 x 768. The operator may move and
   // float the docks; the arrangement is remembered (writeSettings).
   const auto d = [this](const char* name) { return findChild<QDockWidget*>(QString::fromLatin1(name)); };
   QDockWidget *own = d("ownShipDock"), *alerts = d("alarmDock");
-  for (const char* name : {"ownShipDock", "sensorDock", "plotDock", "alarmDock", "targetDock", "pickDock"})
+  for (const char* name :
+       {"ownShipDock", "sensorDock", "plotDock", "alarmDock", "targetDock", "pickDock", "chartDock"})
     addDockWidget(Qt::RightDockWidgetArea, d(name));
   splitDockWidget(own, alerts, Qt::Vertical);
   tabifyDockWidget(own, d("sensorDock"));
   tabifyDockWidget(own, d("plotDock"));
   tabifyDockWidget(alerts, d("targetDock"));
   tabifyDockWidget(alerts, d("pickDock"));
+  tabifyDockWidget(alerts, d("chartDock"));
   own->raise();
   alerts->raise();
 }
@@ -318,7 +321,7 @@ void MainWindow::buildDisplayToolbar() {
   connect(minutes, &QDoubleSpinBox::valueChanged, this,
           [this](double v) { editOverlay(view_, [v](OverlaySettings& s) { s.vectorMinutes = v; }); });
   display->addWidget(minutes);
-  display->addAction(tr("Centre own ship"), this, [this] { view_->centreOnOwnShip(); });
+  display->addAction(centreOwnShipAction());
 }
 
 void MainWindow::buildTrackingMenu() {
@@ -394,6 +397,7 @@ QString MainWindow::shortcutsText() {
       "<tr><td>Space</td><td>run / pause</td></tr>"
       "<tr><td>.</td><td>one step</td></tr>"
       "<tr><td>+ / -</td><td>shorter / longer range</td></tr>"
+      "<tr><td>Home</td><td>centre on own ship and follow it</td></tr>"
       "<tr><td>Left / Right</td><td>ordered course -5 / +5 deg (Shift: 1 deg)</td></tr>"
       "<tr><td>Up / Down</td><td>ordered speed +0.5 / -0.5 kn</td></tr>"
       "<tr><td>Esc</td><td>cancel adding or steering a target</td></tr>"
@@ -437,8 +441,10 @@ void MainWindow::buildViewMenu() {
   addOverlayToggle(viewMenu, tr("Covariance ellipses (95%)"), &OverlaySettings::showEllipses);
   addOverlayToggle(viewMenu, tr("Raw radar plots"), &OverlaySettings::showPlots);
   addOverlayToggle(viewMenu, tr("Past track"), &OverlaySettings::showPastTrack);
-  addOverlayToggle(viewMenu, tr("Follow own ship"), &OverlaySettings::followOwnShip);
+  followAction_ = addOverlayToggle(viewMenu, tr("Follow own ship"), &OverlaySettings::followOwnShip);
+  followAction_->setObjectName(QStringLiteral("followOwnShip"));
   addOverlayToggle(viewMenu, tr("Range rings"), &OverlaySettings::showRings);
+  buildChartViewActions(viewMenu);
   viewMenu->addSeparator();
   for (QDockWidget* d : findChildren<QDockWidget*>()) viewMenu->addAction(d->toggleViewAction());
 }

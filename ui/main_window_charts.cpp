@@ -1,0 +1,98 @@
+// MainWindow's chart management (docs/gui.md, "Charts"): the chart list dock, the chart items of the
+// View menu (outlines, show all charts, centre on own ship) and what the view does when the charts a
+// user opened arrive.
+#include <QAction>
+#include <QDockWidget>
+#include <QMenu>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QStatusBar>
+
+#include "charts/render/chart_extent.h"
+#include "ui/main_window.h"
+#include "ui/panels/chart_list_panel.h"
+
+namespace reckoner::ui {
+
+void MainWindow::buildChartDock() {
+  chartList_ = new ChartListPanel(this);
+  auto* d = new QDockWidget(tr("Charts"), this);
+  d->setObjectName(QStringLiteral("chartDock"));
+  auto* scroll = new QScrollArea(d);  // as every dock: it never sets the window's minimum size
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setWidget(chartList_);
+  d->setWidget(scroll);
+  addDockWidget(Qt::RightDockWidgetArea, d);
+  // Zooming to a chart moves the view away from own ship: following it would take the view back.
+  const auto show = [this](const std::vector<charts::CellPtr>& cells) {
+    if (!view_->zoomToCells(cells) || !view_->overlay().followOwnShip) return;
+    OverlaySettings s = view_->overlay();
+    s.followOwnShip = false;
+    view_->setOverlay(s);
+  };
+  connect(chartList_, &ChartListPanel::zoomRequested, this, show);
+  connect(chartList_, &ChartListPanel::showAllRequested, this, [this, show] { show(view_->cells()); });
+  connect(view_, &ChartView::cellsUnderCursorChanged, chartList_, &ChartListPanel::setUnderCursor);
+}
+
+QAction* MainWindow::centreOwnShipAction() {
+  if (centreOwnShipAction_) return centreOwnShipAction_;
+  centreOwnShipAction_ = new QAction(tr("Centre on own ship"), this);
+  centreOwnShipAction_->setObjectName(QStringLiteral("centreOwnShip"));
+  centreOwnShipAction_->setShortcut(Qt::Key_Home);
+  centreOwnShipAction_->setShortcutContext(Qt::WindowShortcut);
+  centreOwnShipAction_->setToolTip(tr("Centre the chart on own ship and follow it again (Home)"));
+  connect(centreOwnShipAction_, &QAction::triggered, this, [this] {
+    view_->centreOnOwnShip();
+    OverlaySettings s = view_->overlay();
+    s.followOwnShip = true;
+    view_->setOverlay(s);
+  });
+  return centreOwnShipAction_;
+}
+
+void MainWindow::buildChartViewActions(QMenu* viewMenu) {
+  // The Follow own ship check mark follows the view (loading or zooming to charts switches it off).
+  connect(view_, &EcdisView::overlayChanged, followAction_, [this](const OverlaySettings& s) {
+    const QSignalBlocker block(followAction_);
+    followAction_->setChecked(s.followOwnShip);
+  });
+  viewMenu->addAction(centreOwnShipAction());
+  viewMenu->addSeparator();
+  QAction* outlines = viewMenu->addAction(tr("Chart outlines and names"));
+  outlines->setObjectName(QStringLiteral("chartOutlines"));
+  outlines->setCheckable(true);
+  outlines->setChecked(view_->showOutlines());
+  outlines->setToolTip(tr("Each open chart's coverage outlined, with its name at a corner"));
+  connect(outlines, &QAction::toggled, view_, &ChartView::setShowOutlines);
+  viewMenu->addAction(tr("Show all charts"), this, [this] { emit chartList_->showAllRequested(); })
+      ->setObjectName(QStringLiteral("showAllChartsAction"));
+}
+
+void MainWindow::showArrivedCharts(const std::vector<charts::CellPtr>& cells, const QString& failures) {
+  const int n = static_cast<int>(cells.size());
+  QStringList names;
+  for (const charts::CellPtr& c : cells)
+    if (names.size() < 3) names << QString::fromStdString(c->info().name);
+  if (n > 3) names << QStringLiteral("…");
+  QString message;
+  if (!charts::cellsAt(cells, view_->viewport().centre()).empty()) {
+    message = tr("%1 chart(s) open (%2); the view is on them").arg(n).arg(names.join(QStringLiteral(", ")));
+  } else {
+    view_->zoomToCells(cells);
+    message = tr("Showing the %1 chart(s) opened (%2)").arg(n).arg(names.join(QStringLiteral(", ")));
+    if (view_->overlay().followOwnShip) {
+      // Following own ship would take the view straight back at the next frame.
+      OverlaySettings s = view_->overlay();
+      s.followOwnShip = false;
+      view_->setOverlay(s);
+      message += tr(" · Follow own ship is off: View ▸ Centre on own ship (Home) goes back");
+    }
+  }
+  if (!failures.isEmpty()) message += tr(" · not loaded: %1").arg(failures);
+  statusBar()->showMessage(message, 30000);
+  if (auto* d = findChild<QDockWidget*>(QStringLiteral("chartDock"))) d->raise();
+}
+
+}  // namespace reckoner::ui

@@ -121,8 +121,11 @@ void ChartListPanel::markRow(int row, bool under) {
     QFont f = it->font();
     f.setBold(under);
     it->setFont(f);
-    it->setBackground(under ? QBrush(QColor(255, 236, 179)) : QBrush());
-    it->setForeground(under ? QBrush(Qt::black) : QBrush());
+    // Amber blended into the list's own base colour (35%), so that it stays dim at dusk and night.
+    const QColor base = table_->palette().color(QPalette::Base);
+    const auto mix = [](int b, int amber) { return static_cast<int>(0.65 * b + 0.35 * amber); };
+    const QColor tint(mix(base.red(), 255), mix(base.green(), 193), mix(base.blue(), 7));
+    it->setBackground(under ? QBrush(tint) : QBrush());
   }
 }
 

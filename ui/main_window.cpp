@@ -117,15 +117,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
   connect(view_, &EcdisView::pickRequested, this, &MainWindow::showPick);
   connect(view_, &ChartView::picked, this, &MainWindow::showPickedFeatures);
   connect(view_, &EcdisView::cursorReadout, cursorLabel_, &QLabel::setText);
-  connect(view_, &ChartView::renderFinished, this, [this](double ms) {
-    const double overscale = view_->lastRenderStats().overscale;
-    chartLabel_->setText(
-        tr("%1 cells · 1:%2%3 · render %4 ms")
-            .arg(view_->cells().size())
-            .arg(std::round(view_->viewport().scaleDenominator()), 0, 'f', 0)
-            .arg(overscale > 1.0 + 1e-9 ? tr(" · overscale x%1").arg(overscale, 0, 'f', 1) : QString())
-            .arg(ms, 0, 'f', 1));
-  });
+  connect(view_, &ChartView::renderFinished, this, &MainWindow::showChartStatus);
 
   repaintTimer_.setInterval(kRepaintMs);
   connect(&repaintTimer_, &QTimer::timeout, this, &MainWindow::repaintTick);

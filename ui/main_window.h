@@ -152,6 +152,8 @@ class MainWindow : public QMainWindow {
   /// After a load from the user: moves the view to the charts unless they cover its centre (see
   /// ChartArrival) and says what happened in the status bar (with `failures`, the first failure).
   void showArrivedCharts(const std::vector<charts::CellPtr>& cells, const QString& failures);
+  /// The status bar's chart figures after a render: cells, scale, overscale, render time.
+  void showChartStatus(double renderMs);
   /// A checkable action in `menu` that switches one overlay setting.
   QAction* addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member);
 

@@ -7,6 +7,7 @@
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QStatusBar>
+#include <cmath>
 
 #include "charts/render/chart_extent.h"
 #include "ui/main_window.h"
@@ -93,6 +94,16 @@ void MainWindow::showArrivedCharts(const std::vector<charts::CellPtr>& cells, co
   if (!failures.isEmpty()) message += tr(" · not loaded: %1").arg(failures);
   statusBar()->showMessage(message, 30000);
   if (auto* d = findChild<QDockWidget*>(QStringLiteral("chartDock"))) d->raise();
+}
+
+void MainWindow::showChartStatus(double renderMs) {
+  const double overscale = view_->lastRenderStats().overscale;
+  chartLabel_->setText(
+      tr("%1 cells · 1:%2%3 · render %4 ms")
+          .arg(view_->cells().size())
+          .arg(std::round(view_->viewport().scaleDenominator()), 0, 'f', 0)
+          .arg(overscale > 1.0 + 1e-9 ? tr(" · overscale x%1").arg(overscale, 0, 'f', 1) : QString())
+          .arg(renderMs, 0, 'f', 1));
 }
 
 }  // namespace reckoner::ui

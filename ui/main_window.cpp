@@ -34,6 +34,7 @@
 #include "resources/embedded.h"
 #include "ui/panels/alert_panel.h"
 #include "ui/panels/alert_sound.h"
+#include "ui/panels/chart_list_panel.h"
 #include "ui/panels/mariner_settings_dialog.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/sensor_panel.h"
@@ -48,7 +49,7 @@ constexpr int kRepaintMs = 33;  // <= 30 Hz
 constexpr int kPlotMs = 500;
 constexpr int kMaxRecent = 8;
 const QString kBuiltinPrefix = QStringLiteral("builtin:");
-constexpr int kDockStateVersion = 2;
+constexpr int kDockStateVersion = 3;
 
 QString clockText(double s) {
   const int total = static_cast<int>(std::floor(s));
@@ -120,12 +121,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
   connect(view_, &EcdisView::pickRequested, this, &MainWindow::showPick);
   connect(view_, &ChartView::picked, this, &MainWindow::showPickedFeatures);
   connect(view_, &EcdisView::cursorReadout, cursorLabel_, &QLabel::setText);
-  connect(view_, &ChartView::renderFinished, this, [this](double ms) {
-    chartLabel_->setText(tr("%1 cells · 1:%2 · render %3 ms")
-                             .arg(view_->cells().size())
-                             .arg(std::round(view_->viewport().scaleDenominator()), 0, 'f', 0)
-                             .arg(ms, 0, 'f', 1));
-  });
+  connect(view_, &ChartView::renderFinished, this, &MainWindow::showChartStatus);
 
   repaintTimer_.setInterval(kRepaintMs);
   connect(&repaintTimer_, &QTimer::timeout, this, &MainWindow::repaintTick);
@@ -147,7 +143,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
                                                       int(resources::kDefaultScenario.size())));
   openCharts(enc.isEmpty() ? QString::fromLatin1(charts::kDefaultChartPath.data(),
                                                  int(charts::kDefaultChartPath.size()))
-                           : enc);
+                           : enc,
+             ChartArrival::Stay);  // the first view shows own ship and the targets (onFrame)
 }
 
 MainWindow::~MainWindow() {
@@ -186,7 +183,8 @@ void MainWindow::loadScenario(const sim::Scenario& scenario, const QString& sour
   runAction_->setText(tr("Run"));
 }
 
-void MainWindow::openCharts(const QString& path) {
+void MainWindow::openCharts(const QString& path, ChartArrival arrival) {
+  chartArrival_ = arrival;
   if (!chartsLoading_) {
     statusBar()->addPermanentWidget(chartProgress_);
     chartProgress_->show();
@@ -218,6 +216,9 @@ void MainWindow::onChartsLoaded(const ChartLoadAnswer& answer) {
   if (!failures.isEmpty()) reportError(failures.join(QLatin1Char('\n')));
   if (answer.result.cells.empty()) return;
   view_->setCells(answer.result.cells);
+  chartList_->setCells(answer.result.cells);
+  if (chartArrival_ == ChartArrival::Show)
+    showArrivedCharts(answer.result.cells, failures.isEmpty() ? QString() : failures.front());
   controller_->setCharts(answer.result.cells);
   chartSource_ = answer.path;
   if (!answer.path.startsWith(kBuiltinPrefix)) addRecent(QStringLiteral("recent/charts"), answer.path);

@@ -36,6 +36,7 @@ namespace reckoner::ui {
 
 class AlertPanel;
 class AlertSound;
+class ChartListPanel;
 class ErrorPlots;
 class OwnShipPanel;
 class SensorPanel;
@@ -60,9 +61,14 @@ class MainWindow : public QMainWindow {
   /// Loads a scenario file ("builtin:NAME" for an embedded one); false with a message on failure.
   bool openScenario(const QString& path);
   void loadScenario(const sim::Scenario& scenario, const QString& source);
+  /// What the view does when the charts of a load arrive: show them (File > Open ENC, recent charts:
+  /// zoomed to their coverage unless they cover the view's centre already, following own ship
+  /// switched off when the view leaves it), or stay where it is (the session's charts at start).
+  enum class ChartArrival { Show, Stay };
   /// Starts loading charts (file or folder, or builtin:default) in a background thread; a load still
-  /// running is superseded (it stops, and its cells are not shown).
-  void openCharts(const QString& path);
+  /// running is superseded (it stops, and its cells are not shown). The charts loaded replace those
+  /// open. This is what File > Open ENC cell / folder call with the chosen path.
+  void openCharts(const QString& path, ChartArrival arrival = ChartArrival::Show);
   /// Writes the scenario as edited so far (blocks the GUI only for the file write; the worker answers
   /// a queued request first, waited for with a local event loop).
   bool saveScenario(const QString& path);
@@ -97,6 +103,7 @@ class MainWindow : public QMainWindow {
   [[nodiscard]] TargetTableModel* targetModel() const { return model_; }
   [[nodiscard]] AlertPanel* alertPanel() const { return alertPanel_; }
   [[nodiscard]] AlertSound* alertSound() const { return sound_; }
+  [[nodiscard]] ChartListPanel* chartList() const { return chartList_; }
   /// The toolbar banner with the most urgent alert (shown while there is one).
   [[nodiscard]] QLabel* alarmBanner() const { return alarmBanner_; }
   /// The alert log file: every alert change, one line each, appended across runs (docs/alerts.md).
@@ -152,6 +159,16 @@ class MainWindow : public QMainWindow {
   void readDisplaySettings();
   void rememberDisplaySettings(const OverlaySettings& o);
   void askCcrp();
+  // main_window_charts.cpp: the chart list dock, the chart items of the View menu, arriving charts.
+  void buildChartDock();
+  void buildChartViewActions(QMenu* viewMenu);
+  /// View > Centre on own ship (Home; also in the display toolbar): centres and follows own ship again.
+  QAction* centreOwnShipAction();
+  /// After a load from the user: moves the view to the charts unless they cover its centre (see
+  /// ChartArrival) and says what happened in the status bar (with `failures`, the first failure).
+  void showArrivedCharts(const std::vector<charts::CellPtr>& cells, const QString& failures);
+  /// The status bar's chart figures after a render: cells, scale, overscale, render time.
+  void showChartStatus(double renderMs);
   /// A checkable action in `menu` that switches one overlay setting.
   QAction* addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member);
 
@@ -186,6 +203,7 @@ class MainWindow : public QMainWindow {
   QTextBrowser* pick_ = nullptr;
   AlertPanel* alertPanel_ = nullptr;
   AlertSound* sound_ = nullptr;
+  ChartListPanel* chartList_ = nullptr;
   QLabel* clock_ = nullptr;
   QLabel* alarmBanner_ = nullptr;
   QAction* alarmBannerAction_ = nullptr;  ///< the banner's toolbar action (shows and hides it)
@@ -217,6 +235,7 @@ class MainWindow : public QMainWindow {
   std::vector<GuiTiming> guiTimings_;
   WorkerThread<ChartLoadWorker> chartLoad_{QStringLiteral("chart-load")};
   bool chartsLoading_ = false;
+  ChartArrival chartArrival_ = ChartArrival::Stay;  ///< of the latest load
 };
 
 }  // namespace reckoner::ui

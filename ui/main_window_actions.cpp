@@ -122,22 +122,25 @@ void MainWindow::buildDocks() {
   pick_ = new QTextBrowser(this);
   pick_->setObjectName(QStringLiteral("pickReport"));
   dock(tr("Pick report"), QStringLiteral("pickDock"), pick_, Qt::BottomDockWidgetArea);
+  buildChartDock();
   arrangeDocks();
 }
 
 void MainWindow::arrangeDocks() {
   // Chart first: one column on the right, own ship / sensors / plots tabbed above alerts / targets /
-  // pick report, so the chart keeps some 60% of the window at 1024 x 768. The operator may move and
+  // pick report / charts, so the chart keeps some 60% of the window at 1024 x 768. The operator may move and
   // float the docks; the arrangement is remembered (writeSettings).
   const auto d = [this](const char* name) { return findChild<QDockWidget*>(QString::fromLatin1(name)); };
   QDockWidget *own = d("ownShipDock"), *alerts = d("alarmDock");
-  for (const char* name : {"ownShipDock", "sensorDock", "plotDock", "alarmDock", "targetDock", "pickDock"})
+  for (const char* name :
+       {"ownShipDock", "sensorDock", "plotDock", "alarmDock", "targetDock", "pickDock", "chartDock"})
     addDockWidget(Qt::RightDockWidgetArea, d(name));
   splitDockWidget(own, alerts, Qt::Vertical);
   tabifyDockWidget(own, d("sensorDock"));
   tabifyDockWidget(own, d("plotDock"));
   tabifyDockWidget(alerts, d("targetDock"));
   tabifyDockWidget(alerts, d("pickDock"));
+  tabifyDockWidget(alerts, d("chartDock"));
   own->raise();
   alerts->raise();
 }
@@ -380,6 +383,7 @@ QString MainWindow::shortcutsText() {
       "<tr><td>Space</td><td>run / pause</td></tr>"
       "<tr><td>.</td><td>one step</td></tr>"
       "<tr><td>+ / -</td><td>shorter / longer range</td></tr>"
+      "<tr><td>Home</td><td>centre on own ship and follow it</td></tr>"
       "<tr><td>Left / Right</td><td>ordered course -5 / +5 deg (Shift: 1 deg)</td></tr>"
       "<tr><td>Up / Down</td><td>ordered speed +0.5 / -0.5 kn</td></tr>"
       "<tr><td>O</td><td>next orientation: north up, course up, head up</td></tr>"
@@ -427,6 +431,7 @@ void MainWindow::buildViewMenu() {
   addOverlayToggle(viewMenu, tr("Raw radar plots"), &OverlaySettings::showPlots);
   addOverlayToggle(viewMenu, tr("Past track"), &OverlaySettings::showPastTrack);
   addOverlayToggle(viewMenu, tr("Range rings"), &OverlaySettings::showRings);
+  buildChartViewActions(viewMenu);
   viewMenu->addSeparator();
   buildDisplayMenu(viewMenu);
   viewMenu->addSeparator();

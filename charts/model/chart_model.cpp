@@ -64,6 +64,41 @@ ChartCell::ChartCell(CellInfo info, std::vector<ChartFeature> features)
         f.geometry.primitive == Primitive::Area)
       coverage_.push_back(&f);
   }
+  for (const ChartFeature* c : coverage_) coverageBounds_.add(c->geometry.bounds);
+  if (coverageBounds_.empty()) coverageBounds_ = bounds_;
+}
+
+bool ChartCell::covers(const LatLon& p) const {
+  if (coverage_.empty()) return bounds_.contains(p);
+  return std::any_of(coverage_.begin(), coverage_.end(),
+                     [&p](const ChartFeature* c) { return c->geometry.contains(p); });
+}
+
+UsageBand usageBand(const CellInfo& info) {
+  int band = info.intendedUsage;
+  if ((band < 1 || band > 6) && info.name.size() >= 3 && info.name[2] >= '1' && info.name[2] <= '6')
+    band = info.name[2] - '0';
+  return band >= 1 && band <= 6 ? static_cast<UsageBand>(band) : UsageBand::Unknown;
+}
+
+const char* usageBandName(UsageBand band) {
+  switch (band) {
+    case UsageBand::Overview:
+      return "Overview";
+    case UsageBand::General:
+      return "General";
+    case UsageBand::Coastal:
+      return "Coastal";
+    case UsageBand::Approach:
+      return "Approach";
+    case UsageBand::Harbour:
+      return "Harbour";
+    case UsageBand::Berthing:
+      return "Berthing";
+    case UsageBand::Unknown:
+      break;
+  }
+  return "Unknown";
 }
 
 std::vector<std::pair<std::string, std::size_t>> ChartCell::countsByClass() const {

@@ -66,6 +66,9 @@ struct ChartFeature {
       std::string_view acronym) const;  ///< a single integer as a list of one
 };
 
+/// The navigational purpose bands of S-57 (DSID_INTU; the third character of a cell's name).
+enum class UsageBand : std::uint8_t { Unknown, Overview, General, Coastal, Approach, Harbour, Berthing };
+
 struct CellInfo {
   std::string name;          ///< DSID_DSNM without extension, e.g. "US5WA22M"
   std::string path;          ///< the .000 file
@@ -80,6 +83,12 @@ struct CellInfo {
   std::vector<std::string> updatesApplied;  ///< file names of the update files found and applied
 };
 
+/// The cell's band: DSID_INTU when it is 1 to 6, else the digit the name carries third (S-57
+/// Appendix B.1, e.g. the 5 of US5WA22M), else Unknown.
+UsageBand usageBand(const CellInfo& info);
+/// "Overview", "General", "Coastal", "Approach", "Harbour", "Berthing" or "Unknown".
+const char* usageBandName(UsageBand band);
+
 class ChartCell {
  public:
   ChartCell(CellInfo info, std::vector<ChartFeature> features);
@@ -93,6 +102,10 @@ class ChartCell {
   /// Coverage: the M_COVR areas with CATCOV = 1 (data present).
   [[nodiscard]] const std::vector<const ChartFeature*>& coverage() const { return coverage_; }
   [[nodiscard]] const Bounds& bounds() const { return bounds_; }
+  /// The box of the coverage areas, or of the features when the cell has no coverage.
+  [[nodiscard]] const Bounds& coverageBounds() const { return coverageBounds_; }
+  /// Whether p lies in the cell's coverage (in its bounds when it has no coverage areas).
+  [[nodiscard]] bool covers(const LatLon& p) const;
   /// Feature count per object class, sorted by class acronym.
   [[nodiscard]] std::vector<std::pair<std::string, std::size_t>> countsByClass() const;
   [[nodiscard]] std::size_t soundingCount() const;
@@ -102,6 +115,7 @@ class ChartCell {
   std::vector<ChartFeature> features_;
   std::vector<const ChartFeature*> coverage_;
   Bounds bounds_;
+  Bounds coverageBounds_;
 };
 
 using CellPtr = std::shared_ptr<const ChartCell>;

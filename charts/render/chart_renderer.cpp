@@ -147,8 +147,8 @@ bool drawCell(Ctx& c, const PreparedCell& pc, const MarinerSettings& shades, con
 }
 
 /// A chart that says it is not for navigation (the fictional default chart) says so on screen too:
-/// the first such cell of `order` names itself at the bottom left. True when one did.
-bool drawNotForNavigation(const Ctx& c, const std::vector<const PreparedCell*>& order) {
+/// the first such cell of `order` names itself at the bottom left. The box it took, empty if none did.
+QRectF drawNotForNavigation(const Ctx& c, const std::vector<const PreparedCell*>& order) {
   for (const PreparedCell* pc : order)
     if (pc->cell().info().comment.find("NOT FOR NAVIGATION") != std::string::npos) {
       QFont font("DejaVu Sans");
@@ -163,17 +163,43 @@ bool drawNotForNavigation(const Ctx& c, const std::vector<const PreparedCell*>& 
       c.p.drawRect(box);
       c.p.setPen(c.colour("DNGHL"));
       c.p.drawText(box, Qt::AlignCenter, note);
-      return true;
+      return box;
     }
-  return false;
+  return {};
 }
 
-void drawOverscale(const Ctx& c, double overscale) {
+/// "OVERSCALE xk" at the bottom centre, clear of the view's readouts (top left), scale bar (bottom
+/// right) and north arrow (top right); above the not-for-navigation notice where the two would meet.
+/// The box it took.
+QRectF drawOverscale(const Ctx& c, double overscale, const QRectF& notice) {
   QFont font("DejaVu Sans");
   font.setPixelSize(14);
+  font.setBold(true);
   c.p.setFont(font);
+  const QString note = QString("OVERSCALE x%1").arg(overscale, 0, 'f', 1);
+  const QFontMetricsF fm(font);
+  const double w = fm.horizontalAdvance(note) + 12, h = fm.height() + 4;
+  QRectF box(0.5 * (c.view.width() - w), c.view.height() - 8 - h, w, h);
+  if (box.intersects(notice)) box.moveBottom(notice.top() - 4);
+  QColor back = c.colour("BKGND");
+  back.setAlpha(210);
+  c.p.setPen(Qt::NoPen);
+  c.p.setBrush(back);
+  c.p.drawRect(box);
   c.p.setPen(c.colour("CHBLK"));
-  c.p.drawText(QPointF(10, 20), QString("OVERSCALE x%1").arg(overscale, 0, 'f', 1));
+  c.p.drawText(box, Qt::AlignCenter, note);
+  return box;
+}
+
+/// The overscale the view shows: of the best drawn cell whose coverage holds the view's centre, else
+/// of the finest cell drawn (order: coarse to fine), 1 without a compilation scale.
+double overscaleOf(const std::vector<const PreparedCell*>& order, const Viewport& view) {
+  const PreparedCell* chosen = nullptr;
+  for (const PreparedCell* pc : order)
+    if (pc->cell().covers(view.centre())) chosen = pc;
+  if (!chosen && !order.empty()) chosen = order.back();
+  if (!chosen || chosen->cell().info().compilationScale <= 0) return 1.0;
+  return static_cast<double>(chosen->cell().info().compilationScale) / view.scaleDenominator();
 }
 
 }  // namespace
@@ -227,7 +253,8 @@ RenderStats ChartRenderer::render(QImage& image, const std::vector<CellPtr>& cel
     contours.insert(contours.end(), pc->contourValues().begin(), pc->contourValues().end());
   const double safety = chooseSafetyContour(contours, s.safetyContourM).value_or(s.safetyContourM);
   const auto [visLo, visHi] = view.visibleMercator();
-  Ctx c{p, view, view.mercatorToScreen(), visLo, visHi, s, colours_, safety, paint::makeFonts(), {}, {}};
+  Ctx c{p,        view,   view.mercatorToScreen(), visLo, visHi, s,
+        colours_, safety, paint::makeFonts(),      {},    {},    &stats.texts};
   MarinerSettings shades = s;
   shades.safetyContourM = safety;
   // Under the cells, the world background: wherever no cell's coverage reaches, the view still shows
@@ -236,15 +263,15 @@ RenderStats ChartRenderer::render(QImage& image, const std::vector<CellPtr>& cel
 
   for (const PreparedCell* pc : order) {
     ++stats.cellsDrawn;
-    if (pc->cell().info().compilationScale > 0)
-      stats.overscale = static_cast<double>(pc->cell().info().compilationScale) / view.scaleDenominator();
     if (!drawCell(c, *pc, shades, cancel, stats)) {
       stats.cancelled = true;
       return stats;
     }
   }
-  stats.notForNavigation = drawNotForNavigation(c, order);
-  if (stats.overscale > 1.0 + 1e-9) drawOverscale(c, stats.overscale);
+  const QRectF notice = drawNotForNavigation(c, order);
+  stats.notForNavigation = !notice.isEmpty();
+  stats.overscale = overscaleOf(order, view);
+  if (stats.overscale > 1.0 + 1e-9) stats.overscaleNote = drawOverscale(c, stats.overscale, notice);
   return stats;
 }
 

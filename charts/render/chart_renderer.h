@@ -11,6 +11,8 @@
 // zoomed view at once (a pan or wheel step) while the worker renders the new view.
 #include <QColor>
 #include <QImage>
+#include <QRectF>
+#include <QString>
 #include <atomic>
 #include <map>
 #include <memory>
@@ -25,10 +27,19 @@ class QPainter;
 
 namespace reckoner::charts {
 
+/// A name or light description written on the chart, and the box it took (image pixels).
+struct DrawnText {
+  QString text;
+  QRectF box;
+};
+
 struct RenderStats {
   int cellsDrawn = 0;
   int featuresDrawn = 0;
-  double overscale = 1.0;  ///< compilation scale / display scale of the finest cell drawn (> 1: overscale)
+  /// Compilation scale / display scale (> 1: overscale) of the best cell at the view's centre, or
+  /// when no drawn cell covers the centre, of the finest cell drawn.
+  double overscale = 1.0;
+  QRectF overscaleNote;           ///< where "OVERSCALE xk" was written (bottom centre); empty if not
   bool notForNavigation = false;  ///< a drawn cell says so (DSID_COMT) and the notice is on screen
   bool cancelled = false;         ///< the cancel flag was raised during the render; the image is incomplete
   /// The world background under the cells (docs/charts.md, "World background"): the GSHHG resolution
@@ -37,6 +48,7 @@ struct RenderStats {
   char worldResolution = 0;
   int worldBinsDrawn = 0;
   std::string worldProblem;
+  std::vector<DrawnText> texts;   ///< every name and light description written, in drawing order
 };
 
 class PreparedCell;

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "charts/render/chart_renderer.h"
 #include "charts/render/prepared_cell.h"
 
 namespace reckoner::charts::paint {
@@ -43,6 +44,7 @@ struct Ctx {
     QColor colour;
   };
   std::vector<Label> labels;  // names and light descriptions: drawn after everything else, S-52's text layer
+  std::vector<DrawnText>* written = nullptr;  // where drawLabels() records what it wrote (RenderStats)
 
   [[nodiscard]] QColor colour(std::string_view token) const {
     const Rgb c = colours.colour(s.palette, token);
@@ -92,7 +94,8 @@ Fonts makeFonts();
 void drawSoundings(Ctx& c, const PreparedCell& pc, const PreparedItem& it);
 /// Queues a label beside `at`; drawLabels() writes the queue.
 void drawText(Ctx& c, const QString& text, QPointF at, const QColor& colour);
-/// Writes the queued labels (those at one anchor stacked) and empties the queue.
+/// Writes the queued labels (those at one anchor stacked; a text already written where it would overlap
+/// its copy, written once) and empties the queue.
 void drawLabels(Ctx& c);
 /// Depth contour value labels: one per line part long enough on screen, at its middle vertex.
 void drawContourLabel(Ctx& c, const PreparedCell& pc, const PreparedItem& it, double value);

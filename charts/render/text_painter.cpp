@@ -1,6 +1,7 @@
 // Text on the chart: fonts, soundings, names and light descriptions, contour labels (painting.h).
 #include <QFontMetricsF>
 #include <QLineF>
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -59,16 +60,27 @@ void drawText(Ctx& c, const QString& text, QPointF at, const QColor& colour) {
 
 void drawLabels(Ctx& c) {
   c.p.setFont(c.fonts.text);
-  const double line = QFontMetricsF(c.fonts.text).height();
+  const QFontMetricsF fm(c.fonts.text);
+  const double line = fm.height();
   // Labels anchored at the same point (the sectors of one light, a buoy and its light) are stacked.
+  // The same text where it would overlap its copy is written once: NOAA encodes an anchorage as an
+  // ACHARE and a SEAARE with the same ring and OBJNAM, and both rules write the name.
   std::vector<std::pair<QPointF, int>> anchors;
+  std::vector<std::pair<const QString*, QRectF>> written;  // text and box at its anchor
   for (const auto& l : c.labels) {
+    const QRectF atAnchor(l.at.x(), l.at.y() - fm.ascent(), fm.horizontalAdvance(l.text), line);
+    const bool copy = std::any_of(written.begin(), written.end(), [&](const auto& w) {
+      return *w.first == l.text && w.second.intersects(atAnchor);
+    });
+    if (copy) continue;
+    written.emplace_back(&l.text, atAnchor);
     int stacked = 0;
     for (auto& [at, n] : anchors)
       if (std::abs(at.x() - l.at.x()) < 1.0 && std::abs(at.y() - l.at.y()) < 1.0) stacked = n++;
     if (stacked == 0) anchors.emplace_back(l.at, 1);
     c.p.setPen(l.colour);
     c.p.drawText(QPointF(l.at.x(), l.at.y() + stacked * line), l.text);
+    if (c.written) c.written->push_back({l.text, atAnchor.translated(0, stacked * line)});
   }
   c.labels.clear();
 }

@@ -8,9 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
+#include <tuple>
 
 #include "charts/pick/pick_report.h"
 #include "charts/portrayal/portrayal.h"
+#include "charts/render/chart_extent.h"
 #include "charts/render/chart_renderer.h"
 #include "charts/render/viewport.h"
 #include "charts/s57/s57_loader.h"
@@ -229,6 +232,51 @@ class TestChartRender : public QObject {
     QVERIFY(checked > 50);
     QVERIFY2(withText > 0.8 * checked, qPrintable(QString("%1 of %2").arg(withText).arg(checked)));
     QVERIFY(sa.overscale > 1.5);  // 1:15000 cell shown at 1:8000
+  }
+  void areaNamesAreWrittenOnce() {
+    // NOAA encodes an anchorage as an ACHARE and a SEAARE with the same ring and OBJNAM; both rules
+    // write the name, and it used to come out twice, one copy under the other.
+    if (!std::filesystem::is_directory(kEnc)) QSKIP("../shared/data/enc is absent");
+    MarinerSettings s;
+    s.category = DisplayCategory::Other;
+    for (const auto& [cell, pair, single] :
+         {std::tuple{"US5WA22M", "Commencement Bay General Anchorage", "Dalco Passage"},
+          std::tuple{"US5BOSCC", "Boston Harbor, MA Savin Hill Yacht Club Anchorage Area",
+                     "Dorchester Bay"}}) {
+      const std::vector<CellPtr> cells{loadCell(kEnc + "/" + cell + "/" + cell + ".000")};
+      // GIVEN the pair in the cell: two features, one ring, one name
+      int named = 0;
+      for (const auto& f : cells[0]->features())
+        named += f.text("OBJNAM") == std::optional<std::string>(pair) ? 1 : 0;
+      QCOMPARE(named, 2);
+      // WHEN the whole cell is drawn with every name (SCAMIN not honoured), and a closer view of the
+      // anchorage as the chart shows it
+      const Viewport whole = fitView(cells[0]->coverageBounds(), 1600, 1100, 0.0, 20.0);
+      Bounds anchorage;
+      for (const auto& f : cells[0]->features())
+        if (f.text("OBJNAM") == std::optional<std::string>(pair)) anchorage.add(f.geometry.bounds);
+      const Viewport close = fitView(anchorage, 1200, 800, 0.0, 100.0);
+      for (int k = 0; k < 2; ++k) {
+        const Viewport& view = k == 0 ? whole : close;
+        QImage img(view.width(), view.height(), QImage::Format_ARGB32_Premultiplied);
+        s.honourScamin = k == 1;
+        const RenderStats st = renderChart(img, cells, view, s);
+        // THEN the anchorage's name is written once, a name of one area too
+        const auto count = [&st](const char* text) {
+          return std::count_if(st.texts.begin(), st.texts.end(),
+                               [text](const DrawnText& t) { return t.text == QString::fromUtf8(text); });
+        };
+        QCOMPARE(count(pair), 1);
+        if (k == 0) QCOMPARE(count(single), 1);
+        // AND no text is written over (or just under) a copy of itself
+        for (std::size_t i = 0; i < st.texts.size(); ++i)
+          for (std::size_t j = i + 1; j < st.texts.size(); ++j)
+            if (st.texts[i].text == st.texts[j].text)
+              QVERIFY2(!st.texts[i].box.adjusted(0, 0, 0, 1).intersects(st.texts[j].box),
+                       qPrintable(QString("%1: \"%2\" twice").arg(cell, st.texts[i].text)));
+        qInfo("%s at 1:%.0f: %zu texts", cell, view.scaleDenominator(), st.texts.size());
+      }
+    }
   }
   void theDefaultChartRendersAndSaysItIsFictional() {
     // GIVEN the embedded chart (no ../shared needed) WHEN drawn whole at 1:40 000

@@ -9,11 +9,11 @@ void ChartRenderWorker::render(const ChartRenderRequest& request) {
   const auto t0 = std::chrono::steady_clock::now();
   QImage image(request.view.width(), request.view.height(), QImage::Format_ARGB32_Premultiplied);
   renderer_.retainOnly(request.cells);
-  const charts::RenderStats stats =
+  charts::RenderStats stats =
       renderer_.render(image, request.cells, request.view, request.settings, requests_.cancelFlag());
   if (stats.cancelled) return;
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  emit rendered(std::move(image), request.view, request.generation, ms);
+  emit rendered(std::move(image), request.view, request.generation, ms, std::move(stats));
 }
 
 }  // namespace reckoner::ui

@@ -1,7 +1,8 @@
 #pragma once
 // Renders the chart in a worker thread for a ChartView (WorkerThread<ChartRenderWorker>): requests go
 // in as queued calls of render() carrying a snapshot of the view (viewport, settings, cells: values and
-// shared read-only cells), images come back through rendered(). Latest request wins (LatestRequest):
+// shared read-only cells), images come back through rendered() with what the render drew (its
+// RenderStats: overscale, where its notes went, the texts written). Latest request wins (LatestRequest):
 // a newer request cancels the render in progress and makes the older queued ones skip, so the view
 // never waits for a render it no longer needs.
 #include <QImage>
@@ -31,7 +32,8 @@ class ChartRenderWorker : public QObject {
   void render(const reckoner::ui::ChartRenderRequest& request);
 
  signals:
-  void rendered(QImage image, reckoner::charts::Viewport view, quint64 generation, double milliseconds);
+  void rendered(QImage image, reckoner::charts::Viewport view, quint64 generation, double milliseconds,
+                reckoner::charts::RenderStats stats);
 
  private:
   charts::ChartRenderer renderer_;  // keeps the prepared (projected) cells between renders
@@ -41,3 +43,4 @@ class ChartRenderWorker : public QObject {
 }  // namespace reckoner::ui
 
 Q_DECLARE_METATYPE(reckoner::charts::Viewport)
+Q_DECLARE_METATYPE(reckoner::charts::RenderStats)

@@ -20,18 +20,28 @@ double niceLength(double maxM) {
 }
 
 /// Lines of text in a box of the panel colour at `topLeft` (or, rightAligned, with its top right there).
+/// The box paintBox draws for `lines` from `base` (the painter's font) without drawing it.
+QRectF boxRect(const QStringList& lines, QPointF corner, bool rightAligned, QFont font, double pointSize,
+               bool bold) {
+  if (lines.isEmpty()) return {};
+  font.setPointSizeF(pointSize);
+  font.setBold(bold);
+  const QFontMetrics fm(font);
+  int w = 0;
+  for (const QString& l : lines) w = std::max(w, fm.horizontalAdvance(l));
+  const QSizeF size(w + 12, static_cast<double>(lines.size()) * fm.height() + 8);
+  return {rightAligned ? corner - QPointF(size.width(), 0) : corner, size};
+}
+
 QRectF paintBox(QPainter& p, const QStringList& lines, QPointF corner, bool rightAligned, const QColor& panel,
                 const QColor& text, double pointSize, bool bold) {
   if (lines.isEmpty()) return {};
+  const QRectF box = boxRect(lines, corner, rightAligned, p.font(), pointSize, bold);
   QFont font = p.font();
   font.setPointSizeF(pointSize);
   font.setBold(bold);
   p.setFont(font);
   const QFontMetrics fm(font);
-  int w = 0;
-  for (const QString& l : lines) w = std::max(w, fm.horizontalAdvance(l));
-  const QSizeF size(w + 12, static_cast<double>(lines.size()) * fm.height() + 8);
-  const QRectF box(rightAligned ? corner - QPointF(size.width(), 0) : corner, size);
   QColor bg = panel;
   bg.setAlpha(200);
   p.setPen(Qt::NoPen);
@@ -133,7 +143,12 @@ QStringList EcdisView::readoutLines() const {
   return lines;
 }
 
+QRect EcdisView::readoutRect() const {
+  return boxRect(readoutLines(), QPointF(6.0, 6.0), false, font(), 9.0, false).toAlignedRect();
+}
+
 QRectF EcdisView::paintReadouts(QPainter& p) {
+  p.setFont(font());  // readoutRect's font
   const QRectF box =
       paintBox(p, readoutLines(), QPointF(6.0, 6.0), false, colour("panel"), colour("text"), 9.0, false);
   if (addTargetFrom_ && addTargetTo_) {

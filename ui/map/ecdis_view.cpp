@@ -453,6 +453,7 @@ QMenu* EcdisView::buildContextMenu(QPointF at) {
       setOverlay(s);
     });
   menu->addSeparator();
+  addChartActions(menu, at);  // Zoom to chart NAME (the cells here), Show all charts
   menu->addAction(tr("Pick report"), this, [this, at] { emit pickRequested(at); })
       ->setObjectName(QStringLiteral("pick"));
   return menu;

@@ -165,6 +165,9 @@ class EcdisView : public ChartView {
   /// The context menu for a widget point (tests trigger its actions).
   QMenu* buildContextMenu(QPointF at);
   [[nodiscard]] bool addingTarget() const { return addTargetFrom_.has_value(); }
+  /// The box of the cursor / EBL / VRM readout at the top left (widget pixels; empty when it has no
+  /// line). The chart's own notes keep clear of it (the overscale note is at the bottom centre).
+  [[nodiscard]] QRect readoutRect() const;
   [[nodiscard]] bool steeringTarget() const { return steerTarget_.has_value(); }
   /// Own ship's polar frame on screen (range and true bearing from the estimated position); nullopt
   /// before the first frame.

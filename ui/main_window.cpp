@@ -23,6 +23,7 @@
 #include <QTextBrowser>
 #include <QTextStream>
 #include <QToolTip>
+#include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 
@@ -36,6 +37,7 @@
 #include "ui/panels/alert_sound.h"
 #include "ui/panels/chart_list_panel.h"
 #include "ui/panels/mariner_settings_dialog.h"
+#include "ui/panels/message_bar.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/sensor_panel.h"
 #include "ui/panels/target_table_model.h"
@@ -71,7 +73,15 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
       options_(options) {
   setWindowTitle(QStringLiteral("Reckoner"));
   setObjectName(QStringLiteral("mainWindow"));
-  setCentralWidget(view_);
+  // The chart, with the message bar above it (shown only while there is an error to read).
+  auto* centre = new QWidget(this);
+  auto* column = new QVBoxLayout(centre);
+  column->setContentsMargins(0, 0, 0, 0);
+  column->setSpacing(0);
+  messageBar_ = new MessageBar(centre);
+  column->addWidget(messageBar_);
+  column->addWidget(view_, 1);
+  setCentralWidget(centre);
   view_->setObjectName(QStringLiteral("chart"));
   sound_ =
       new AlertSound(options.sound && QGuiApplication::platformName() != QLatin1String("offscreen"), this);
@@ -569,7 +579,8 @@ void MainWindow::showMarinerSettings(const charts::MarinerSettings& s) {
 
 void MainWindow::reportError(const QString& message) {
   lastError_ = message;
-  statusBar()->showMessage(message, 15000);
+  statusBar()->showMessage(message.section(QLatin1Char('\n'), 0, 0), 15000);
+  messageBar_->showError(message);
   qWarning("%s", qPrintable(message));
 }
 

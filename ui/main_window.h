@@ -36,6 +36,7 @@ namespace reckoner::ui {
 
 class AlertPanel;
 class AlertSound;
+class MessageBar;
 class ChartListPanel;
 class ErrorPlots;
 class OwnShipPanel;
@@ -115,6 +116,8 @@ class MainWindow : public QMainWindow {
   /// Whether the latest chart load has not answered yet (no answer to an older one can follow it).
   [[nodiscard]] bool chartsLoading() const { return chartsLoading_; }
   [[nodiscard]] QString lastError() const { return lastError_; }
+  /// The bar above the chart that shows the latest error until dismissed.
+  [[nodiscard]] MessageBar* messageBar() const { return messageBar_; }
   /// Whether a frame has arrived that the panels, table, chart overlays or plots do not show yet
   /// (they follow at the window's repaint and plot ticks).
   [[nodiscard]] bool refreshPending() const { return frameDirty_ || plotsDirty_; }
@@ -203,6 +206,7 @@ class MainWindow : public QMainWindow {
   QTextBrowser* pick_ = nullptr;
   AlertPanel* alertPanel_ = nullptr;
   AlertSound* sound_ = nullptr;
+  MessageBar* messageBar_ = nullptr;
   ChartListPanel* chartList_ = nullptr;
   QLabel* clock_ = nullptr;
   QLabel* alarmBanner_ = nullptr;

@@ -202,6 +202,20 @@ double overscaleOf(const std::vector<const PreparedCell*>& order, const Viewport
   return static_cast<double>(chosen->cell().info().compilationScale) / view.scaleDenominator();
 }
 
+/// Whether the drawn cells cover the whole view (its corners, edge middles and centre each in some
+/// cell's coverage): then no world background shows and its note would only clutter the chart.
+bool coversView(const std::vector<const PreparedCell*>& order, const Viewport& view) {
+  const double w = view.width(), h = view.height();
+  for (const double fx : {0.0, 0.5, 1.0})
+    for (const double fy : {0.0, 0.5, 1.0}) {
+      const LatLon p = view.toLatLon({fx * w, fy * h});
+      if (std::none_of(order.begin(), order.end(),
+                       [&](const PreparedCell* pc) { return pc->cell().covers(p); }))
+        return false;
+    }
+  return true;
+}
+
 }  // namespace
 
 ChartRenderer::ChartRenderer(const PortrayalTable& table, const ColourTable& colours)
@@ -259,7 +273,7 @@ RenderStats ChartRenderer::render(QImage& image, const std::vector<CellPtr>& cel
   shades.safetyContourM = safety;
   // Under the cells, the world background: wherever no cell's coverage reaches, the view still shows
   // land, water and a graticule.
-  if (worldBackground_) world_->draw(c, stats);
+  const QString worldNote = worldBackground_ ? world_->draw(c, stats) : QString();
 
   for (const PreparedCell* pc : order) {
     ++stats.cellsDrawn;
@@ -268,6 +282,8 @@ RenderStats ChartRenderer::render(QImage& image, const std::vector<CellPtr>& cel
       return stats;
     }
   }
+  // The world note over the cells, unless cells cover the whole view (the background is not seen).
+  if (!worldNote.isEmpty() && !coversView(order, view)) WorldLayer::drawNote(c, worldNote);
   const QRectF notice = drawNotForNavigation(c, order);
   stats.notForNavigation = !notice.isEmpty();
   stats.overscale = overscaleOf(order, view);

@@ -48,7 +48,7 @@ struct RenderStats {
   char worldResolution = 0;
   int worldBinsDrawn = 0;
   std::string worldProblem;
-  std::vector<DrawnText> texts;   ///< every name and light description written, in drawing order
+  std::vector<DrawnText> texts;  ///< every name and light description written, in drawing order
 };
 
 class PreparedCell;

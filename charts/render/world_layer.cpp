@@ -124,6 +124,12 @@ void drawLabel(const Ctx& c, const QString& text, QPointF at, const WorldColours
   c.p.drawText(QPointF(at.x() + 2, at.y()), text);
 }
 
+/// The width at the bottom right that the window's scale bar may take (a quarter of the width and its
+/// margin and label).
+double scaleBarBandPx(double width) {
+  return 0.25 * width + 40.0;
+}
+
 /// Parallels labelled at their left end, meridians at their lower end, at a round interval that keeps
 /// them at least 110 px apart.
 void drawGraticule(Ctx& c, const WorldColours& colours) {
@@ -157,21 +163,22 @@ void drawGraticule(Ctx& c, const WorldColours& colours) {
     c.p.setPen(grid);
     c.p.drawLine(seg->first, seg->second);
     const QPointF low = seg->first.y() >= seg->second.y() ? seg->first : seg->second;
-    if (low.x() > 60 && low.x() < c.view.width() - 60)
+    // The bottom right is the window's scale bar's (up to a quarter of the width, 16 px from the edge).
+    if (low.x() > 60 && low.x() < c.view.width() - scaleBarBandPx(c.view.width()))
       labels.push_back({QString::fromStdString(io::formatLongitudeLabel(lon)), low + QPointF(3, -5)});
   }
   for (const Label& l : labels) drawLabel(c, l.text, l.at, colours);
 }
 
-/// The note at the bottom right, above the meridians' labels: what the background is, or why it has
+/// The note at the bottom right, above the window's scale bar: what the background is, or why it has
 /// no land.
-void drawNote(const Ctx& c, const QString& note, const WorldColours& colours) {
+void drawNoteBox(const Ctx& c, const QString& note, const WorldColours& colours) {
   QFont font("DejaVu Sans");
   font.setPixelSize(11);
   c.p.setFont(font);
   const QFontMetricsF fm(font);
   const double w = fm.horizontalAdvance(note) + 10;
-  const QRectF box(c.view.width() - w - 6, c.view.height() - fm.height() - 26, w, fm.height() + 4);
+  const QRectF box(c.view.width() - w - 6, c.view.height() - fm.height() - 44, w, fm.height() + 4);
   c.p.setPen(Qt::NoPen);
   c.p.setBrush(colours.water);
   c.p.drawRect(box);
@@ -224,7 +231,11 @@ const PreparedWorld& WorldLayer::preparedOf(const std::shared_ptr<const world::S
   return *it->second;
 }
 
-void WorldLayer::draw(Ctx& c, RenderStats& stats) {
+void WorldLayer::drawNote(const Ctx& c, const QString& note) {
+  drawNoteBox(c, note, worldColours(c));
+}
+
+QString WorldLayer::draw(Ctx& c, RenderStats& stats) {
   const WorldColours colours = worldColours(c);
   c.p.fillRect(QRect(0, 0, c.view.width(), c.view.height()), colours.water);
   const world::WorldData data = world::worldShoreline(world::resolutionFor(c.view.metresPerPixel()));
@@ -240,7 +251,7 @@ void WorldLayer::draw(Ctx& c, RenderStats& stats) {
     note = QString("No world shoreline: %1").arg(QString::fromStdString(data.problem));
   }
   drawGraticule(c, colours);
-  drawNote(c, note, colours);
+  return note;
 }
 
 }  // namespace reckoner::charts

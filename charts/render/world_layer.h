@@ -51,10 +51,12 @@ WorldColours worldColours(const paint::Ctx& c);
 class WorldLayer {
  public:
   /// Draws the background of the view in `c` (the whole image): water, the land and shorelines of
-  /// the bins in view at the resolution the view's scale asks for (world_data.h), the graticule and a
-  /// note naming the source, or the problem when there is no shoreline. Fills in the world fields of
-  /// `stats`.
-  void draw(paint::Ctx& c, RenderStats& stats);
+  /// the bins in view at the resolution the view's scale asks for (world_data.h) and the graticule.
+  /// Fills in the world fields of `stats`; returns the note naming the source, or the problem when
+  /// there is no shoreline, for drawNote once the cells are drawn over the background.
+  QString draw(paint::Ctx& c, RenderStats& stats);
+  /// The note at the bottom right, above the window's scale bar (over the cells).
+  static void drawNote(const paint::Ctx& c, const QString& note);
 
  private:
   const PreparedWorld& preparedOf(const std::shared_ptr<const world::Shoreline>& s);

@@ -14,11 +14,13 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolButton>
 
 #include "main_window_test_helpers.h"
 #include "resources/embedded.h"
 #include "support/compare_near.h"
 #include "ui/map/range_scale.h"
+#include "ui/panels/message_bar.h"
 
 using namespace reckoner;
 using namespace reckoner::ui;
@@ -205,6 +207,30 @@ class TestWatchOfficer : public QObject {
     QVERIFY2(!text.contains(QStringLiteral("nan"), Qt::CaseInsensitive), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral(" NM")), qPrintable(text));
     qInfo("cursor at Sydney: %s", qPrintable(text));
+  }
+
+  void anErrorStaysAboveTheChartUntilDismissed() {
+    MainWindow w(freshOptions());
+    showAndWait(w, QSize(1024, 768));
+    QVERIFY(!w.messageBar()->isVisible());
+    // WHEN a file cannot be opened
+    const QString missing = QStringLiteral("/nonexistent/reckoner/harbour.json");
+    QVERIFY(!w.openScenario(missing));
+    // THEN the bar above the chart says so, naming the file, and stays while the cursor moves
+    QVERIFY(w.messageBar()->isVisible());
+    QVERIFY2(w.messageBar()->message().contains(missing), qPrintable(w.messageBar()->message()));
+    for (int i = 0; i < 5; ++i) QTest::mouseMove(w.chart(), QPoint(100 + 40 * i, 200));
+    QVERIFY(w.messageBar()->isVisible());
+    QVERIFY(w.statusBar()->currentMessage().contains(missing));
+    // AND again: one bar, counted
+    QVERIFY(!w.openScenario(missing));
+    QCOMPARE(w.messageBar()->repeats(), 2);
+    saveWindowShot(w, QStringLiteral("error-message-bar"));
+    // AND the chart keeps most of the window meanwhile
+    const double share = double(w.chart()->width() * w.chart()->height()) / (w.width() * w.height());
+    QVERIFY2(share > 0.55, qPrintable(QString::number(share)));
+    QTest::mouseClick(w.messageBar()->closeButton(), Qt::LeftButton);
+    QVERIFY(!w.messageBar()->isVisible());
   }
 
   void runningOnPastTheEndSaysSo() {

@@ -228,13 +228,18 @@ void MainWindow::buildSimulationToolbar() {
   runAction_->setObjectName(QStringLiteral("run"));
   runAction_->setShortcut(Qt::Key_Space);
   runAction_->setShortcutContext(Qt::WindowShortcut);
+  runAction_->setToolTip(tr("Run the simulation at the chosen rate, or pause it (Space)"));
   connect(runAction_, &QAction::triggered, this,
           [this] { setRate(history_.latest().running ? 0.0 : lastRunRate_); });
   QAction* step = sim->addAction(tr("Step"));
   step->setShortcut(QKeySequence(Qt::Key_Period));
+  step->setToolTip(tr("Advance one step of the scenario and pause (.)"));
   connect(step, &QAction::triggered, controller_, &SimulationController::stepOnce);
   rateBox_ = new QComboBox(this);
   rateBox_->setObjectName(QStringLiteral("rate"));
+  rateBox_->setToolTip(
+      tr("Simulated seconds per wall second while running (max: as fast as possible); the "
+         "clock shows the rate achieved"));
   for (double r : {1.0, 2.0, 5.0, 10.0, 30.0, 100.0}) rateBox_->addItem(QStringLiteral("%1x").arg(r), r);
   rateBox_->addItem(tr("max"), -1.0);
   rateBox_->setCurrentIndex(3);
@@ -279,6 +284,9 @@ void MainWindow::buildDisplayToolbar() {
   buildRangeBox(display);
   auto* palette = new QComboBox(this);
   palette->setObjectName(QStringLiteral("palette"));
+  palette->setToolTip(
+      tr("S-52 colour table for the light on the bridge: day, dusk or night (the whole "
+         "window follows)"));
   palette->addItems({tr("Day"), tr("Dusk"), tr("Night")});
   connect(palette, &QComboBox::activated, this,
           [this](int i) { setPalette(static_cast<charts::Palette>(i)); });

@@ -5,6 +5,7 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -14,7 +15,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolBar>
 #include <QToolButton>
+#include <QWidgetAction>
 
 #include "main_window_test_helpers.h"
 #include "resources/embedded.h"
@@ -231,6 +234,30 @@ class TestWatchOfficer : public QObject {
     QVERIFY2(share > 0.55, qPrintable(QString::number(share)));
     QTest::mouseClick(w.messageBar()->closeButton(), Qt::LeftButton);
     QVERIFY(!w.messageBar()->isVisible());
+  }
+
+  void everyToolbarControlHasATooltipThatSaysMoreThanItsLabel() {
+    MainWindow w(freshOptions());
+    showAndWait(w);
+    QStringList bare;
+    for (QToolBar* bar : w.findChildren<QToolBar*>()) {
+      for (QAction* a : bar->actions()) {
+        if (a->isSeparator() || !a->isVisible()) continue;
+        QString tip = a->toolTip(), text = a->text();
+        if (auto* wa = qobject_cast<QWidgetAction*>(a)) {
+          if (QWidget* widget = bar->widgetForAction(wa)) {
+            if (widget->objectName() == QLatin1String("alarmBanner") || qobject_cast<QLabel*>(widget))
+              continue;
+            tip = widget->toolTip();
+            text = widget->objectName();
+          }
+        }
+        text.remove(QLatin1Char('&'));
+        // Qt's default tooltip of an action is its text: that says nothing more than the label.
+        if (tip.isEmpty() || tip == text) bare << (text.isEmpty() ? QStringLiteral("(unnamed)") : text);
+      }
+    }
+    QVERIFY2(bare.isEmpty(), qPrintable(QStringLiteral("no tooltip beyond the label: ") + bare.join(", ")));
   }
 
   void runningOnPastTheEndSaysSo() {

@@ -73,15 +73,7 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
       options_(options) {
   setWindowTitle(QStringLiteral("Reckoner"));
   setObjectName(QStringLiteral("mainWindow"));
-  // The chart, with the message bar above it (shown only while there is an error to read).
-  auto* centre = new QWidget(this);
-  auto* column = new QVBoxLayout(centre);
-  column->setContentsMargins(0, 0, 0, 0);
-  column->setSpacing(0);
-  messageBar_ = new MessageBar(centre);
-  column->addWidget(messageBar_);
-  column->addWidget(view_, 1);
-  setCentralWidget(centre);
+  buildCentre();
   view_->setObjectName(QStringLiteral("chart"));
   sound_ =
       new AlertSound(options.sound && QGuiApplication::platformName() != QLatin1String("offscreen"), this);
@@ -555,6 +547,18 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   }
   writeSettings();
   QMainWindow::closeEvent(event);
+}
+
+void MainWindow::buildCentre() {
+  // The chart, with the message bar above it (shown only while there is an error to read).
+  auto* centre = new QWidget(this);
+  auto* column = new QVBoxLayout(centre);
+  column->setContentsMargins(0, 0, 0, 0);
+  column->setSpacing(0);
+  messageBar_ = new MessageBar(centre);
+  column->addWidget(messageBar_);
+  column->addWidget(view_, 1);
+  setCentralWidget(centre);
 }
 
 bool MainWindow::setMarinerSettings(const charts::MarinerSettings& s) {

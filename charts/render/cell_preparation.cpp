@@ -40,22 +40,27 @@ PreparedCell::PreparedCell(CellPtr cell, const PortrayalTable& table) : cell_(st
   for (auto& [order, it] : ordered) items_.push_back(it);
 }
 
+PartSpan appendMercator(std::vector<MercatorPoint>& points, const std::vector<LatLon>& part) {
+  PartSpan span;
+  span.first = static_cast<std::uint32_t>(points.size());
+  span.count = static_cast<std::uint32_t>(part.size());
+  span.lo = {1e9, 1e9};
+  span.hi = {-1e9, -1e9};
+  for (const auto& ll : part) {
+    const MercatorPoint m = toMercator(ll);
+    points.push_back(m);
+    span.lo = {std::min(span.lo.x, m.x), std::min(span.lo.y, m.y)};
+    span.hi = {std::max(span.hi.x, m.x), std::max(span.hi.y, m.y)};
+  }
+  return span;
+}
+
 void PreparedCell::addGeometry(const Geometry& g, PreparedItem& it) {
   it.firstPart = static_cast<std::uint32_t>(parts_.size());
   it.lo = {1e9, 1e9};
   it.hi = {-1e9, -1e9};
   for (const auto& part : g.parts) {
-    PartSpan span;
-    span.first = static_cast<std::uint32_t>(points_.size());
-    span.count = static_cast<std::uint32_t>(part.size());
-    span.lo = {1e9, 1e9};
-    span.hi = {-1e9, -1e9};
-    for (const auto& ll : part) {
-      const MercatorPoint m = toMercator(ll);
-      points_.push_back(m);
-      span.lo = {std::min(span.lo.x, m.x), std::min(span.lo.y, m.y)};
-      span.hi = {std::max(span.hi.x, m.x), std::max(span.hi.y, m.y)};
-    }
+    const PartSpan span = appendMercator(points_, part);
     it.lo = {std::min(it.lo.x, span.lo.x), std::min(it.lo.y, span.lo.y)};
     it.hi = {std::max(it.hi.x, span.hi.x), std::max(it.hi.y, span.hi.y)};
     parts_.push_back(span);

@@ -10,22 +10,8 @@
 namespace reckoner::charts::paint {
 namespace {
 
-/// Screen polygon of one part, dropping vertices within half a pixel of the last one kept (the last
-/// vertex always kept, so rings stay closed and lines end where they should).
 const QPolygonF& project(Ctx& c, const PreparedCell& pc, const PartSpan& part) {
-  QPolygonF& poly = c.scratch;
-  poly.clear();
-  const MercatorPoint* pts = pc.points().data() + part.first;
-  double lx = 0, ly = 0;
-  for (std::uint32_t i = 0; i < part.count; ++i) {
-    const ScreenPoint sp = c.t(pts[i].x, pts[i].y);
-    if (i == 0 || i + 1 == part.count || std::abs(sp.x - lx) >= 0.5 || std::abs(sp.y - ly) >= 0.5) {
-      poly.append(QPointF(sp.x, sp.y));
-      lx = sp.x;
-      ly = sp.y;
-    }
-  }
-  return poly;
+  return projectPoints(c, pc.points().data() + part.first, part.count);
 }
 
 QPainterPath areaPath(Ctx& c, const PreparedCell& pc, const PreparedItem& it) {
@@ -64,6 +50,21 @@ WidthOffsets widthOffsets(double width) {
 }
 
 }  // namespace
+
+const QPolygonF& projectPoints(Ctx& c, const MercatorPoint* pts, std::uint32_t count, double shiftX) {
+  QPolygonF& poly = c.scratch;
+  poly.clear();
+  double lx = 0, ly = 0;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const ScreenPoint sp = c.t(pts[i].x + shiftX, pts[i].y);
+    if (i == 0 || i + 1 == count || std::abs(sp.x - lx) >= 0.5 || std::abs(sp.y - ly) >= 0.5) {
+      poly.append(QPointF(sp.x, sp.y));
+      lx = sp.x;
+      ly = sp.y;
+    }
+  }
+  return poly;
+}
 
 /// Fills an area: one ring goes straight to drawPolygon (no path object).
 void fillArea(Ctx& c, const PreparedCell& pc, const PreparedItem& it, const QBrush& brush) {

@@ -63,6 +63,10 @@ struct Ctx {
 // ---- geometry_painter.cpp: areas and lines
 
 /// Fills an area (odd-even over its rings) with `brush`, no outline.
+/// The screen polygon of `count` Mercator points shifted `shiftX` radians east, into c.scratch:
+/// vertices within half a pixel of the last one kept are dropped (the last vertex always kept, so rings
+/// stay closed and lines end where they should). Cells and the world background share it.
+const QPolygonF& projectPoints(Ctx& c, const MercatorPoint* pts, std::uint32_t count, double shiftX = 0.0);
 void fillArea(Ctx& c, const PreparedCell& pc, const PreparedItem& it, const QBrush& brush);
 /// Strokes parts [first, first + count) as polylines (rings come closed from the loader).
 void strokeParts(Ctx& c, const PreparedCell& pc, std::uint32_t first, std::uint32_t count, const QPen& pen);

@@ -18,6 +18,10 @@ struct PartSpan {
   MercatorPoint lo, hi;  // Mercator box of the part
 };
 
+/// Appends the part's points to `points` in Mercator and returns where they are and their box (cells
+/// and the world background prepare their geometry alike).
+PartSpan appendMercator(std::vector<MercatorPoint>& points, const std::vector<LatLon>& part);
+
 /// One feature to draw: its rule, its parts in PreparedCell::parts(), its box and SCAMIN.
 struct PreparedItem {
   const ChartFeature* f = nullptr;

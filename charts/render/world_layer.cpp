@@ -44,22 +44,9 @@ bool partInView(const Ctx& c, const PreparedWorld::Part& p, double shift) {
          p.lo.y <= c.visHi.y;
 }
 
-/// The part on screen, shifted by `shift` radians east, vertices within half a pixel of the last one
-/// kept dropped (the last always kept).
+/// The part on screen, shifted by `shift` radians east (paint::projectPoints).
 const QPolygonF& project(Ctx& c, const PreparedWorld& w, const PreparedWorld::Part& part, double shift) {
-  QPolygonF& poly = c.scratch;
-  poly.clear();
-  const MercatorPoint* pts = w.points().data() + part.first;
-  double lx = 0, ly = 0;
-  for (std::uint32_t i = 0; i < part.count; ++i) {
-    const ScreenPoint sp = c.t(pts[i].x + shift, pts[i].y);
-    if (i == 0 || i + 1 == part.count || std::abs(sp.x - lx) >= 0.5 || std::abs(sp.y - ly) >= 0.5) {
-      poly.append(QPointF(sp.x, sp.y));
-      lx = sp.x;
-      ly = sp.y;
-    }
-  }
-  return poly;
+  return paint::projectPoints(c, w.points().data() + part.first, part.count, shift);
 }
 
 /// Land and water of every bin in view (areas in their painting order), then the shorelines over them.
@@ -204,18 +191,13 @@ PreparedWorld::PreparedWorld(std::shared_ptr<const world::Shoreline> shoreline)
 }
 
 PreparedWorld::Part PreparedWorld::add(const std::vector<LatLon>& pts, int level) {
+  const PartSpan span = appendMercator(points_, pts);
   Part p;
-  p.first = static_cast<std::uint32_t>(points_.size());
-  p.count = static_cast<std::uint32_t>(pts.size());
+  p.first = span.first;
+  p.count = span.count;
   p.level = level;
-  p.lo = {1e9, 1e9};
-  p.hi = {-1e9, -1e9};
-  for (const LatLon& ll : pts) {
-    const MercatorPoint m = toMercator(ll);
-    points_.push_back(m);
-    p.lo = {std::min(p.lo.x, m.x), std::min(p.lo.y, m.y)};
-    p.hi = {std::max(p.hi.x, m.x), std::max(p.hi.y, m.y)};
-  }
+  p.lo = span.lo;
+  p.hi = span.hi;
   return p;
 }
 

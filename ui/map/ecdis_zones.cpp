@@ -73,7 +73,8 @@ void EcdisView::addZoneActions(QMenu* menu, QPointF at) {
   const auto m = polarMap();
   if (!m) return;
   const std::vector<track::AcquisitionZone> zones = shownZones();
-  const auto [rangeM, bearing] = m->fromWidget(at);
+  const std::pair<double, double> polar = m->fromWidget(at);
+  const double rangeM = polar.first, bearing = polar.second;
   menu->addSeparator();
   menu->addAction(tr("New guard zone here"), this,
                   [this, zones, rangeM, bearing, px = m->pxPerMetre] {

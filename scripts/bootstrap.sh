@@ -21,6 +21,7 @@ packages=(
   qt6-base-dev qt6-charts-dev qt6-multimedia-dev libqt6opengl6-dev libxkbcommon-dev qt6-qpa-plugins
   libgdal-dev gdal-bin zlib1g-dev libbenchmark-dev libcli11-dev python3
   gmt-gshhg-low  # GSHHG shorelines (LGPL data), read at run time for the world background (docs/charts.md)
+  gpsd-clients  # gpsdecode, the independent AIS oracle of tests/app/tst_ais_cli.cpp (docs/ais.md)
 )
 
 install_deps() {

@@ -26,5 +26,6 @@ void addSeedCommands(CLI::App& root, Commands& out);      // seed001, seed003 (s
 void addManoeuvreCommand(CLI::App& root, Commands& out);  // manoeuvre-report (manoeuvre_report.cpp)
 void addChartCommands(CLI::App& root, Commands& out);     // chart info|render|pick (chart_commands.cpp)
 void addScenarioCommands(CLI::App& root, Commands& out);  // validate, scenarios (scenario_commands.cpp)
+void addAisCommands(CLI::App& root, Commands& out);       // ais decode (ais_commands.cpp)
 
 }  // namespace reckoner::cli

@@ -7,6 +7,7 @@
 //   manoeuvre-report                                       manoeuvre_report.cpp
 //   chart info|render|pick PATH...                         chart_commands.cpp
 //   validate SCENARIO..., scenarios                        scenario_commands.cpp
+//   ais decode FILE... [--json]                            ais_commands.cpp
 // `reckoner-cli --help` lists them, `reckoner-cli COMMAND --help` a command's options with their units.
 // Outputs: a table on stdout, files under --out DIR, --json for summary.json's text on stdout (run,
 // montecarlo, replay); the chart commands print JSON. SCENARIO is a JSON file or builtin:NAME.
@@ -117,7 +118,7 @@ int run(int argc, char** argv) {
                         "Print the version of reckoner-cli and of the libraries it runs on, and exit");
   Commands commands;
   for (const auto add : {addRunCommands, addReplayCommands, addStudyCommands, addImoCommand, addSeedCommands,
-                         addManoeuvreCommand, addChartCommands, addScenarioCommands})
+                         addManoeuvreCommand, addChartCommands, addScenarioCommands, addAisCommands})
     add(root, commands);
   for (const auto& c : commands) c.app->allow_extras();
   root.footer(kFooter);  // after the commands: theirs would inherit it

@@ -50,6 +50,7 @@ class TestCliHelp : public QObject {
          {"PATH", "--center LAT,LON", "--scale N", "--size WxH", "--palette day|dusk|night",
           "--category base|standard|all", "--safety-contour M", "--out FILE.png", "--repeat K"}},
         {"chart pick", {"PATH", "--at LAT,LON", "--scale N", "--tolerance PX"}},
+        {"ais decode", {"FILE", "--json"}},
         {"validate", {"SCENARIO"}},
         {"scenarios", {}},
     };

@@ -148,7 +148,7 @@ class MainWindow : public QMainWindow {
   void buildTrackingMenu();
   void askCpaLimits();
   void editMarinerSettings();
-  void buildCentre();  ///< the chart with the message bar above it
+  void buildCentre();                                          ///< the chart with the message bar above it
   void showMarinerSettings(const charts::MarinerSettings& s);  ///< in the display toolbar
   void buildViewMenu();
   void buildHelpMenu();

@@ -98,22 +98,6 @@ std::string lineOf(const Fields& f, bool json) {
   return s.append("\n");
 }
 
-void add(io::AisCounters& total, const io::AisCounters& c) {
-  total.lines += c.lines;
-  total.decoded += c.decoded;
-  total.notAis += c.notAis;
-  total.badChecksum += c.badChecksum;
-  total.malformed += c.malformed;
-  total.badArmour += c.badArmour;
-  total.badFill += c.badFill;
-  total.tooLong += c.tooLong;
-  total.orphanFragments += c.orphanFragments;
-  total.expiredPartials += c.expiredPartials;
-  total.evictedPartials += c.evictedPartials;
-  total.unsupportedType += c.unsupportedType;
-  total.tooShort += c.tooShort;
-}
-
 void printSummary(const io::AisCounters& c) {
   std::fprintf(
       stderr,
@@ -143,7 +127,7 @@ int aisDecode(const AisArgs& a) {
       rest.remove_prefix(nl == std::string_view::npos ? rest.size() : nl + 1);
       if (const auto m = decoder.feed(line)) std::fputs(lineOf(fieldsOf(*m), a.json).c_str(), stdout);
     }
-    add(total, decoder.counters());
+    total += decoder.counters();
   }
   printSummary(total);
   return 0;

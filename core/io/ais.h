@@ -61,6 +61,23 @@ struct AisCounters {
   std::uint64_t evictedPartials = 0;  ///< a partial message dropped to make room (kAisMaxPartials)
   std::uint64_t unsupportedType = 0;  ///< a complete message of a type not decoded here
   std::uint64_t tooShort = 0;         ///< a payload shorter than its type's fields
+  /// Adds another decoder's counts (several files, one summary).
+  AisCounters& operator+=(const AisCounters& c) {
+    lines += c.lines;
+    decoded += c.decoded;
+    notAis += c.notAis;
+    badChecksum += c.badChecksum;
+    malformed += c.malformed;
+    badArmour += c.badArmour;
+    badFill += c.badFill;
+    tooLong += c.tooLong;
+    orphanFragments += c.orphanFragments;
+    expiredPartials += c.expiredPartials;
+    evictedPartials += c.evictedPartials;
+    unsupportedType += c.unsupportedType;
+    tooShort += c.tooShort;
+    return *this;
+  }
   std::uint64_t rejected() const {
     return notAis + badChecksum + malformed + badArmour + badFill + tooLong + tooShort;
   }

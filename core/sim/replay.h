@@ -88,11 +88,12 @@ struct ReplayStats {
   long epochsTimeOnly = 0;     ///< seconds with sentences but no own-ship data: dead-reckoning rows
   long radarLines = 0, radarPlots = 0, radarBad = 0, radarDuplicates = 0, radarTimeJumps = 0,
        radarReordered = 0, radarBeforeFix = 0;
+  long late = 0;  ///< live: timed sentences older than an epoch already given to the filters (skipped)
   long restartsAfterGap = 0;      ///< DRKF restarted at a fix after more than maxGapS without data
   long restartsAfterFailure = 0;  ///< DRKF restarted after updates failed numerically epoch after epoch
   [[nodiscard]] long nmeaSkipped() const {
     return comments + badChecksum + unknownSentences + proprietary + malformed + untimed + timeJumps +
-           unusable + notGnss + implausible + noVariation;
+           unusable + notGnss + implausible + noVariation + late;
   }
 };
 /// The DRKF's current and sensor calibration estimates of one row (grid axes; sd the square roots of

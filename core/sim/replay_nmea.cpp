@@ -59,55 +59,6 @@ Kind kindOf(const nm::Sentence& s) {
       s.body);
 }
 
-/// Parses every line, counting what is skipped. Throws when the file holds no sentence we read, or a
-/// DTM names a datum other than WGS-84.
-std::vector<Parsed> parseNmea(const std::string& text, const std::string& name, ReplayStats& st) {
-  std::vector<Parsed> out;
-  std::optional<std::pair<int, std::string>> firstBad;
-  for (const Line& l : linesOf(text)) {
-    if (!l.text.empty() && l.text.front() == '#') {  // a comment (gpsd's logs open with some)
-      ++st.nmeaLines;
-      ++st.comments;
-      continue;
-    }
-    auto r = nm::parse(l.text);
-    if (r.error == nm::Error::Empty) continue;
-    ++st.nmeaLines;
-    switch (r.error) {
-      case nm::Error::BadChecksum:
-        ++st.badChecksum;
-        break;
-      case nm::Error::Unknown:
-        ++st.unknownSentences;
-        break;
-      case nm::Error::Proprietary:
-        ++st.proprietary;
-        break;
-      case nm::Error::Malformed:
-        ++st.malformed;
-        break;
-      default: {
-        if (const auto* dtm = std::get_if<nm::Dtm>(&r.sentence->body); dtm && dtm->localDatum != "W84")
-          throw io::InputError(name, l.number, "DTM",
-                               "datum " + io::quoted(dtm->localDatum, 8) +
-                                   " is not WGS-84 (W84): Reckoner takes positions on WGS-84 only");
-        Parsed p{l.number, std::move(*r.sentence), {}, {}};
-        p.source = p.sentence.talker + ":" + typeName(p.sentence.body);
-        p.kind = kindOf(p.sentence);
-        out.push_back(std::move(p));
-        continue;
-      }
-    }
-    if (!firstBad) firstBad.emplace(l.number, std::string(nm::errorName(r.error)) + ": " + r.reason);
-  }
-  if (out.empty())
-    throw io::InputError(name, firstBad ? firstBad->first : 0, "",
-                         "no NMEA 0183 sentence Reckoner reads (RMC, GGA, GNS, GLL, VTG, THS, HDT, HDG, HDM, "
-                         "VHW, VBW, ZDA, ...)" +
-                             (firstBad ? "; the first line is " + firstBad->second : std::string()));
-  return out;
-}
-
 std::optional<double> timeOfDayOf(const nm::Sentence& s) {
   std::optional<double> tod;
   std::visit(
@@ -129,46 +80,148 @@ std::optional<nm::Date> dateOf(const nm::Sentence& s) {
   return std::nullopt;
 }
 
-UtcUs medianOf(std::vector<UtcUs> v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
-
 UtcUs utcOf(const nm::Date& d, double tod) {
   return io::daysFromCivil(d.year, d.month, d.day) * kUsPerDay + static_cast<UtcUs>(std::llround(tod * 1e6));
 }
 
-/// The day of the first dated sentence, or of --date, or (with a warning) 1970-01-01: the reference
-/// the times of day are placed around.
-UtcUs firstDay(const std::vector<Parsed>& ps, const std::string& name, const NmeaOptions& o,
-               std::vector<std::string>& warnings) {
-  for (const Parsed& p : ps)
-    if (const auto d = dateOf(p.sentence)) {
-      const UtcUs t = utcOf(*d, *timeOfDayOf(p.sentence));
-      if (!o.date) return t;
-      // --date against the file's dates: a whole number of 1024-week roll-overs is the receiver's bug.
-      const UtcUs given = io::daysFromCivil((*o.date)[0], (*o.date)[1], (*o.date)[2]) * kUsPerDay;
-      const double k = std::round(static_cast<double>(given - t) / static_cast<double>(kRolloverUs));
-      if (k >= 1.0 &&
-          std::abs(static_cast<double>(given - t) - k * static_cast<double>(kRolloverUs)) < 2.0 * 86400e6)
-        return t + static_cast<UtcUs>(k) * kRolloverUs;
-      warnings.push_back(
-          io::oneLine(name + ": --date is for a log without dates; this one has them, --date ignored"));
-      return t;
-    }
-  const std::optional<double> tod = [&]() -> std::optional<double> {
-    for (const Parsed& p : ps)
-      if (const auto t = timeOfDayOf(p.sentence)) return t;
+}  // namespace
+
+namespace detail {
+
+std::optional<double> timeOfDay(const io::nmea::Sentence& s) {
+  return timeOfDayOf(s);
+}
+bool hasDate(const io::nmea::Sentence& s) {
+  return dateOf(s).has_value();
+}
+
+std::optional<Parsed> parseLine(std::string_view text, int number, const std::string& name, ReplayStats& st,
+                                std::string* whyBad) {
+  if (!text.empty() && text.front() == '#') {  // a comment (gpsd's logs open with some)
+    ++st.nmeaLines;
+    ++st.comments;
     return std::nullopt;
-  }();
+  }
+  auto r = nm::parse(text);
+  if (r.error == nm::Error::Empty) return std::nullopt;
+  ++st.nmeaLines;
+  switch (r.error) {
+    case nm::Error::BadChecksum:
+      ++st.badChecksum;
+      break;
+    case nm::Error::Unknown:
+      ++st.unknownSentences;
+      break;
+    case nm::Error::Proprietary:
+      ++st.proprietary;
+      break;
+    case nm::Error::Malformed:
+      ++st.malformed;
+      break;
+    default: {
+      if (const auto* dtm = std::get_if<nm::Dtm>(&r.sentence->body); dtm && dtm->localDatum != "W84")
+        throw io::InputError(name, number, "DTM",
+                             "datum " + io::quoted(dtm->localDatum, 8) +
+                                 " is not WGS-84 (W84): Reckoner takes positions on WGS-84 only");
+      Parsed p{number, std::move(*r.sentence), {}, {}};
+      p.source = p.sentence.talker + ":" + typeName(p.sentence.body);
+      p.kind = kindOf(p.sentence);
+      return p;
+    }
+  }
+  if (whyBad) *whyBad = std::string(nm::errorName(r.error)) + ": " + r.reason;
+  return std::nullopt;
+}
+
+UtcUs firstDayOf(const Parsed* firstDated, std::optional<double> firstTod, const std::string& name,
+                 const NmeaOptions& o, std::vector<std::string>& warnings) {
+  if (firstDated) {
+    const UtcUs t = utcOf(*dateOf(firstDated->sentence), *timeOfDayOf(firstDated->sentence));
+    if (!o.date) return t;
+    // --date against the file's dates: a whole number of 1024-week roll-overs is the receiver's bug.
+    const UtcUs given = io::daysFromCivil((*o.date)[0], (*o.date)[1], (*o.date)[2]) * kUsPerDay;
+    const double k = std::round(static_cast<double>(given - t) / static_cast<double>(kRolloverUs));
+    if (k >= 1.0 &&
+        std::abs(static_cast<double>(given - t) - k * static_cast<double>(kRolloverUs)) < 2.0 * 86400e6)
+      return t + static_cast<UtcUs>(k) * kRolloverUs;
+    warnings.push_back(
+        io::oneLine(name + ": --date is for a log without dates; this one has them, --date ignored"));
+    return t;
+  }
   if (o.date)
     return io::daysFromCivil((*o.date)[0], (*o.date)[1], (*o.date)[2]) * kUsPerDay +
-           std::llround(tod.value_or(0) * 1e6);
+           std::llround(firstTod.value_or(0) * 1e6);
   warnings.push_back(
       io::oneLine(name + ": no RMC or ZDA sentence with a date: times of day on an unknown date, shown "
                          "as 1970-01-01 (--date YYYY-MM-DD sets it)"));
-  return std::llround(tod.value_or(0.0) * 1e6);
+  return std::llround(firstTod.value_or(0.0) * 1e6);
+}
+
+DayPlacer::DayPlacer(UtcUs first, const Parsed* firstDated)
+    : window_{first},
+      rollover_(firstDated ? first - utcOf(*dateOf(firstDated->sentence), *timeOfDayOf(firstDated->sentence))
+                           : 0) {}
+
+std::optional<UtcUs> DayPlacer::place(const io::nmea::Sentence& s) {
+  constexpr std::size_t kRecent = 8;
+  const auto tod = timeOfDayOf(s);
+  if (!tod) return std::nullopt;
+  std::vector<UtcUs> recent(window_.begin(), window_.end());
+  const auto mid = recent.begin() + static_cast<std::ptrdiff_t>(recent.size() / 2);
+  std::nth_element(recent.begin(), mid, recent.end());
+  const UtcUs ref = *mid;
+  UtcUs t = 0;
+  if (const auto d = dateOf(s)) {
+    t = utcOf(*d, *tod) + rollover_;
+    const double k = std::round(static_cast<double>(ref - t) / static_cast<double>(kRolloverUs));
+    if (k >= 1.0 &&
+        std::abs(static_cast<double>(ref - t) - k * static_cast<double>(kRolloverUs)) < 2.0 * 86400e6) {
+      t += static_cast<std::int64_t>(k) * kRolloverUs;
+      ++rolledOver_;
+    }
+  } else {
+    const UtcUs inDay = static_cast<UtcUs>(std::llround(*tod * 1e6));
+    const double day = std::round(static_cast<double>(ref - inDay) / static_cast<double>(kUsPerDay));
+    t = static_cast<UtcUs>(day) * kUsPerDay + inDay;
+  }
+  window_.push_back(t);
+  if (window_.size() > kRecent) window_.pop_front();
+  return t;
+}
+
+void DayPlacer::warn(const std::string& name, std::vector<std::string>& warnings) const {
+  if (rollover_ != 0 || rolledOver_ > 0)
+    warnings.push_back(
+        io::oneLine(name +
+                    ": dates 1024 weeks (or a multiple) early, a GPS week roll-over, "
+                    "corrected" +
+                    (rolledOver_ > 0 ? " in " + std::to_string(rolledOver_) + " sentences" : std::string())));
+}
+
+}  // namespace detail
+
+namespace {
+
+/// Parses every line, counting what is skipped. Throws when the file holds no sentence we read, or a
+/// DTM names a datum other than WGS-84.
+std::vector<Parsed> parseNmea(const std::string& text, const std::string& name, ReplayStats& st) {
+  std::vector<Parsed> out;
+  std::optional<std::pair<int, std::string>> firstBad;
+  std::string why;
+  for (const Line& l : linesOf(text)) {
+    why.clear();
+    if (auto p = detail::parseLine(l.text, l.number, name, st, &why)) {
+      out.push_back(std::move(*p));
+    } else if (!why.empty() && !firstBad) {
+      firstBad.emplace(l.number, why);
+    }
+  }
+  if (out.empty())
+    throw io::InputError(name, firstBad ? firstBad->first : 0, "",
+                         "no NMEA 0183 sentence Reckoner reads (RMC, GGA, GNS, GLL, VTG, THS, HDT, HDG, HDM, "
+                         "VHW, VBW, ZDA, ...)" +
+                             (firstBad ? "; the first line is " + firstBad->second : std::string()));
+  return out;
 }
 
 /// The UTC of each timed sentence (nullopt for the untimed). A dated sentence (RMC with its date, ZDA)
@@ -177,48 +230,16 @@ UtcUs firstDay(const std::vector<Parsed>& ps, const std::string& name, const Nme
 /// median of the last eight times, so that midnight is crossed and a lone wrong date misleads nothing.
 std::vector<std::optional<UtcUs>> timesOf(const std::vector<Parsed>& ps, const std::string& name,
                                           const NmeaOptions& o, std::vector<std::string>& warnings) {
-  constexpr std::size_t kRecent = 8;
-  const UtcUs first = firstDay(ps, name, o, warnings);
-  const std::int64_t rollover = [&] {  // the correction the first dated sentence needed (via --date)
-    for (const Parsed& p : ps)
-      if (const auto d = dateOf(p.sentence)) return first - utcOf(*d, *timeOfDayOf(p.sentence));
-    return std::int64_t{0};
-  }();
-  std::deque<UtcUs> window{first};
+  const auto dated = std::find_if(ps.begin(), ps.end(), [](const Parsed& p) { return dateOf(p.sentence); });
+  const Parsed* firstDated = dated == ps.end() ? nullptr : &*dated;
+  std::optional<double> firstTod;
+  for (const Parsed& p : ps)
+    if ((firstTod = timeOfDayOf(p.sentence))) break;
+  detail::DayPlacer placer(detail::firstDayOf(firstDated, firstTod, name, o, warnings), firstDated);
   std::vector<std::optional<UtcUs>> out;
   out.reserve(ps.size());
-  long rolledOver = 0;
-  for (const Parsed& p : ps) {
-    const auto tod = timeOfDayOf(p.sentence);
-    if (!tod) {
-      out.emplace_back();
-      continue;
-    }
-    const UtcUs ref = medianOf({window.begin(), window.end()});
-    UtcUs t = 0;
-    if (const auto d = dateOf(p.sentence)) {
-      t = utcOf(*d, *tod) + rollover;
-      const double k = std::round(static_cast<double>(ref - t) / static_cast<double>(kRolloverUs));
-      if (k >= 1.0 &&
-          std::abs(static_cast<double>(ref - t) - k * static_cast<double>(kRolloverUs)) < 2.0 * 86400e6) {
-        t += static_cast<std::int64_t>(k) * kRolloverUs;
-        ++rolledOver;
-      }
-    } else {
-      const UtcUs inDay = static_cast<UtcUs>(std::llround(*tod * 1e6));
-      const double day = std::round(static_cast<double>(ref - inDay) / static_cast<double>(kUsPerDay));
-      t = static_cast<UtcUs>(day) * kUsPerDay + inDay;
-    }
-    out.emplace_back(t);
-    window.push_back(t);
-    if (window.size() > kRecent) window.pop_front();
-  }
-  if (rollover != 0 || rolledOver > 0)
-    warnings.push_back(
-        io::oneLine(name +
-                    ": dates 1024 weeks (or a multiple) early, a GPS week roll-over, "
-                    "corrected" +
-                    (rolledOver > 0 ? " in " + std::to_string(rolledOver) + " sentences" : std::string())));
+  for (const Parsed& p : ps) out.push_back(placer.place(p.sentence));
+  placer.warn(name, warnings);
   return out;
 }
 

@@ -176,26 +176,37 @@ struct EpochOffers {
 
 /// The epochs, each with the value of the active source of each quantity; counts what each sentence
 /// became (used, standby, skipped by reason) into its source's and the file's counts.
-class EpochAssembler {
+class Assembler {
  public:
-  EpochAssembler(const std::vector<Parsed>& ps, const NmeaOptions& o, ReplayStats& st,
-                 std::map<sources::SourceId, SourceStats>& stats)
-      : ps_(ps),
-        st_(st),
+  Assembler(const NmeaOptions& o, ReplayStats& st, std::map<sources::SourceId, SourceStats>& stats)
+      : st_(st),
         stats_(stats),
         var_{o.variationDeg},
-        selector_(static_cast<std::int64_t>(std::llround(o.holdS * 1e6))),
-        used_(ps.size(), 0),
-        valid_(ps.size(), 0),
-        repeated_(ps.size(), 0) {}
+        selector_(static_cast<std::int64_t>(std::llround(o.holdS * 1e6))) {}
+
+  /// The epoch at t of these sentences (file order within it): offered, chosen and counted.
+  void epoch(UtcUs t, const std::vector<const Parsed*>& sentences, std::vector<Epoch>& out) {
+    ps_ = &sentences;
+    used_.assign(sentences.size(), 0);
+    valid_.assign(sentences.size(), 0);
+    repeated_.assign(sentences.size(), 0);
+    EpochOffers offers;
+    for (std::size_t i = 0; i < sentences.size(); ++i) offer(i, offers);
+    addEpoch(t, offers, out);
+    countOutcomes();
+    ps_ = nullptr;
+  }
+
+ private:
+  [[nodiscard]] const Parsed& at(std::size_t i) const { return *(*ps_)[i]; }
 
   /// Sentence i's offers into e, counted by what it was.
   void offer(std::size_t i, EpochOffers& e) {
-    SourceStats& s = stats_[ps_[i].source];
-    switch (std::visit(SentenceOffers(ps_[i], i, var_, e.candidates), ps_[i].sentence.body)) {
+    SourceStats& s = stats_[at(i).source];
+    switch (std::visit(SentenceOffers(at(i), i, var_, e.candidates), at(i).sentence.body)) {
       case Use::Valid:
         valid_[i] = 1;
-        if (std::holds_alternative<nm::Gst>(ps_[i].sentence.body)) e.gstOf[ps_[i].sentence.talker] = i;
+        if (std::holds_alternative<nm::Gst>(at(i).sentence.body)) e.gstOf[at(i).sentence.talker] = i;
         break;
       case Use::Unusable:
         ++st_.unusable, ++s.unusable;
@@ -227,12 +238,13 @@ class EpochAssembler {
     if (!e.empty() || out.empty() || t - out.back().utc >= kHeartbeatUs) out.push_back(e);
   }
 
-  /// Each valid sentence: used (what it offered went in, or it is time or accuracy), or standby.
+  /// Each valid sentence of the epoch: used (what it offered went in, or it is time or accuracy), or
+  /// standby.
   void countOutcomes() {
-    for (std::size_t i = 0; i < ps_.size(); ++i) {
+    for (std::size_t i = 0; i < ps_->size(); ++i) {
       if (!valid_[i]) continue;
-      SourceStats& s = stats_[ps_[i].source];
-      const Quantity q = ps_[i].kind.quantity;
+      SourceStats& s = stats_[at(i).source];
+      const Quantity q = at(i).kind.quantity;
       if (used_[i] || q == Quantity::Time) {
         ++st_.sentencesUsed, ++s.used;
       } else if (q == Quantity::Other || q == Quantity::Accuracy) {
@@ -245,7 +257,6 @@ class EpochAssembler {
     }
   }
 
- private:
   /// Active time of each quantity's source up to t.
   void credit(UtcUs t) {
     if (!any_) return;
@@ -293,16 +304,16 @@ class EpochAssembler {
 
   /// The receiver's own error statistics, when it sent them for this fix: the larger axis.
   void takeGst(const Candidate& fix, const EpochOffers& eo, Epoch& e) {
-    const auto it = eo.gstOf.find(ps_[fix.offer.index].sentence.talker);
+    const auto it = eo.gstOf.find(at(fix.offer.index).sentence.talker);
     if (it == eo.gstOf.end()) return;
-    const auto& gst = std::get<nm::Gst>(ps_[it->second].sentence.body);
+    const auto& gst = std::get<nm::Gst>(at(it->second).sentence.body);
     if (gst.latSdM && gst.lonSdM) {
       e.gpsVarM2 = std::max(*gst.latSdM * *gst.latSdM, *gst.lonSdM * *gst.lonSdM);
       used_[it->second] = 1;
     }
   }
 
-  const std::vector<Parsed>& ps_;
+  const std::vector<const Parsed*>* ps_ = nullptr;
   ReplayStats& st_;
   std::map<sources::SourceId, SourceStats>& stats_;
   Variation var_;
@@ -315,20 +326,33 @@ class EpochAssembler {
 
 }  // namespace
 
+struct EpochAssembler::Impl : Assembler {
+  using Assembler::Assembler;
+};
+
+EpochAssembler::EpochAssembler(const NmeaOptions& o, ReplayStats& st,
+                               std::map<sources::SourceId, SourceStats>& stats)
+    : impl_(std::make_unique<Impl>(o, st, stats)) {}
+EpochAssembler::~EpochAssembler() = default;
+
+void EpochAssembler::addEpoch(UtcUs t, const std::vector<const Parsed*>& sentences, std::vector<Epoch>& out) {
+  impl_->epoch(t, sentences, out);
+}
+
 std::vector<Epoch> assembleEpochs(const std::vector<Parsed>& ps, const TimedGroups& groups,
                                   const NmeaOptions& o, ReplayStats& st,
                                   std::map<sources::SourceId, SourceStats>& stats) {
   const std::vector<std::size_t> order = replayOrder(groups.utc, {}, st.reordered);
-  EpochAssembler assembler(ps, o, st, stats);
+  EpochAssembler assembler(o, st, stats);
   std::vector<Epoch> out;
+  std::vector<const Parsed*> sentences;
   for (std::size_t g = 0; g < order.size();) {
     const UtcUs t = groups.utc[order[g]];
-    EpochOffers offers;
+    sentences.clear();
     for (; g < order.size() && groups.utc[order[g]] == t; ++g)
-      for (const std::size_t i : groups.sentences[order[g]]) assembler.offer(i, offers);
-    assembler.addEpoch(t, offers, out);
+      for (const std::size_t i : groups.sentences[order[g]]) sentences.push_back(&ps[i]);
+    assembler.addEpoch(t, sentences, out);
   }
-  assembler.countOutcomes();
   return out;
 }
 

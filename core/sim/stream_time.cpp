@@ -23,22 +23,25 @@ std::int64_t beyond(std::span<const UtcUs> times, std::size_t from, std::size_t 
 
 }  // namespace
 
-std::vector<char> isolatedTimeJumps(std::span<const UtcUs> times, const StreamTimePolicy& p) {
+bool isolatedTimeJumpAt(std::span<const UtcUs> times, std::size_t i, const StreamTimePolicy& p,
+                        std::vector<UtcUs>& scratch) {
   const std::size_t n = times.size(), w = static_cast<std::size_t>(std::max(1, p.window));
-  std::vector<char> out(n, 0);
+  const bool hasBefore = i > 0, hasAfter = i + 1 < n;
+  // At the ends of the stream one side must be a full window to judge by.
+  if (!hasBefore && n - 1 < w) return false;
+  if (!hasAfter && i < w) return false;
+  const bool farBefore =
+      !hasBefore || beyond(times, i > w ? i - w : 0, i, times[i], scratch) > p.isolatedJumpUs;
+  const bool farAfter =
+      !hasAfter || beyond(times, i + 1, std::min(n, i + 1 + w), times[i], scratch) > p.isolatedJumpUs;
+  return farBefore && farAfter;
+}
+
+std::vector<char> isolatedTimeJumps(std::span<const UtcUs> times, const StreamTimePolicy& p) {
+  std::vector<char> out(times.size(), 0);
   std::vector<UtcUs> scratch;
-  scratch.reserve(w);
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool hasBefore = i > 0, hasAfter = i + 1 < n;
-    // At the ends of the stream one side must be a full window to judge by.
-    if (!hasBefore && n - 1 < w) continue;
-    if (!hasAfter && i < w) continue;
-    const bool farBefore =
-        !hasBefore || beyond(times, i > w ? i - w : 0, i, times[i], scratch) > p.isolatedJumpUs;
-    const bool farAfter =
-        !hasAfter || beyond(times, i + 1, std::min(n, i + 1 + w), times[i], scratch) > p.isolatedJumpUs;
-    out[i] = farBefore && farAfter ? 1 : 0;
-  }
+  scratch.reserve(static_cast<std::size_t>(std::max(1, p.window)));
+  for (std::size_t i = 0; i < times.size(); ++i) out[i] = isolatedTimeJumpAt(times, i, p, scratch) ? 1 : 0;
   return out;
 }
 

@@ -29,6 +29,12 @@ struct StreamTimePolicy {
 /// For times in arrival order: 1 where the time is an isolated jump (rule 1 above), else 0.
 std::vector<char> isolatedTimeJumps(std::span<const UtcUs> times, const StreamTimePolicy& policy);
 
+/// Rule 1 for the time at i alone. It reads times[i - window, i + window] only, so a stream can decide
+/// each time once the window after it has arrived (or the stream has ended) and get the same answer
+/// (scratch: working memory, reused between calls).
+bool isolatedTimeJumpAt(std::span<const UtcUs> times, std::size_t i, const StreamTimePolicy& policy,
+                        std::vector<UtcUs>& scratch);
+
 /// The order (indices into times) in which items are replayed: the stable time order of the items
 /// not flagged in `drop`. `reordered` counts the kept items older than a kept item before them.
 std::vector<std::size_t> replayOrder(std::span<const UtcUs> times, std::span<const char> drop,

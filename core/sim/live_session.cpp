@@ -1,0 +1,90 @@
+#include "sim/live_session.h"
+
+#include <cmath>
+
+#include "io/error_line.h"
+#include "sim/replay_runner.h"
+#include "sim/replay_stream.h"
+
+namespace reckoner::sim {
+namespace {
+
+replay_input::NmeaOptions nmeaOptionsOf(const ReplayOptions& o) {
+  replay_input::NmeaOptions n;
+  n.time = o.time;
+  n.date = o.date;
+  n.variationDeg = o.variationDeg;
+  n.holdS = o.sourceHoldS;
+  return n;
+}
+
+}  // namespace
+
+LiveSession::LiveSession(LiveOptions options)
+    : o_(std::move(options)),
+      stream_(std::make_unique<replay_input::NmeaStream>(
+          nmeaOptionsOf(o_.replay), o_.name,
+          static_cast<std::int64_t>(std::llround(std::max(0.0, o_.reorderHorizonS) * 1e6)), res_.stats)) {}
+
+LiveSession::~LiveSession() = default;
+
+void LiveSession::nmea(std::string_view line, std::optional<UtcUs> receivedUtc) {
+  if (finished_) return;
+  stream_->push(line, receivedUtc);
+  for (const replay_input::Epoch& e : stream_->takeEpochs()) run(e);
+}
+
+void LiveSession::run(const replay_input::Epoch& e) {
+  if (!anyEpoch_) {
+    res_.utc0 = e.utc;  // as a file replay: time zero is the first epoch's
+    anyEpoch_ = true;
+  }
+  if (!runner_) {
+    if (!e.hasFix()) {
+      // What the engine counts of the epochs before the first fix (replay_runner.h).
+      ++res_.stats.epochs;
+      if (e.empty()) ++res_.stats.epochsTimeOnly;
+      ++res_.stats.epochsBeforeFix;
+      return;
+    }
+    res_.origin = replay_runner::chooseOrigin(o_.replay, e, o_.name, res_.warnings);
+    runner_ = std::make_unique<replay_runner::Runner>(o_.replay, res_, false);
+  }
+  runner_->ownShip(e);
+}
+
+void LiveSession::finish() {
+  if (finished_) return;
+  finished_ = true;
+  stream_->finish();
+  for (const replay_input::Epoch& e : stream_->takeEpochs()) run(e);
+  if (runner_) runner_->finish();
+  refreshSources();
+  const ReplayStats& st = res_.stats;
+  if (st.reordered > 0)
+    res_.warnings.push_back(io::oneLine(o_.name + ": " + std::to_string(st.reordered) +
+                                        " timed sentences arrived out of time order; run in time order"));
+  if (st.timeJumps > 0)
+    res_.warnings.push_back(
+        io::oneLine(o_.name + ": " + std::to_string(st.timeJumps) +
+                    " sentences stamped far from their neighbours were dropped as clock errors"));
+  if (st.late > 0)
+    res_.warnings.push_back(io::oneLine(o_.name + ": " + std::to_string(st.late) +
+                                        " timed sentences arrived after later epochs had been run: skipped"));
+  for (const std::string& w : stream_->warnings()) res_.warnings.push_back(w);
+  if (!runner_)
+    res_.warnings.push_back(io::oneLine(o_.name + ": no position fix (RMC, GGA or GLL) to start from"));
+}
+
+void LiveSession::refreshSources() {
+  res_.sources = stream_->sources();
+}
+
+std::vector<ReplayOwnRow> LiveSession::takeOwnRows() {
+  refreshSources();
+  std::vector<ReplayOwnRow> out;
+  out.swap(res_.own);
+  return out;
+}
+
+}  // namespace reckoner::sim

@@ -1,0 +1,78 @@
+#pragma once
+// Internal to sim/: the NMEA reader of replay_input.h one line at a time, for a live run
+// (sim/live_session.h). The same parsing, day placement, stream-time policy and epoch assembly as a
+// file's (docs/outputs.md, "Live: time"), decided as soon as the data allow:
+//  - times of day wait for the first dated sentence (or, after kMaxUndated sentences without one, the
+//    day of the receive clock, --date, or 1970-01-01 with a warning);
+//  - each timed sentence waits for the policy's window of timed sentences after it, then is kept or
+//    dropped as an isolated jump exactly as in a file (stream_time.h, isolatedTimeJumpAt);
+//  - kept groups wait in a reorder buffer until the newest kept time is reorderHorizonUs past theirs,
+//    then go out in time order (a file replay sorts the whole file: the two agree unless a stretch is
+//    more than the horizon out of order);
+//  - a source's clock offset is not corrected (a file replay measures it over the whole file).
+// Memory is bounded: the window, the reorder buffer (its horizon) and kMaxUndated sentences.
+#include <deque>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sim/replay_nmea_detail.h"
+
+namespace reckoner::sim::replay_input {
+
+class NmeaStream {
+ public:
+  /// Sentences held for a date before the times of day are placed without one.
+  static constexpr std::size_t kMaxUndated = 600;
+
+  /// Counts go into st (which must outlive the stream).
+  NmeaStream(const NmeaOptions& o, std::string name, std::int64_t reorderHorizonUs, ReplayStats& st);
+
+  /// One line as received (receivedUtc: the receive clock, when there is one).
+  void push(std::string_view line, std::optional<UtcUs> receivedUtc);
+  /// The end of the stream: everything still held is decided.
+  void finish();
+  /// The epochs decided since the last call, in replay order.
+  std::vector<Epoch> takeEpochs();
+
+  /// Every source seen, in first-seen order.
+  [[nodiscard]] std::vector<SourceStats> sources() const;
+  std::vector<std::string>& warnings() { return warnings_; }
+
+ private:
+  struct Group {
+    UtcUs utc = 0;
+    std::vector<detail::Parsed> sentences;  ///< the timed one first, then its untimed followers
+  };
+  void place(detail::Parsed p, std::optional<UtcUs> receivedUtc);
+  void startDays(std::optional<UtcUs> receivedUtc);
+  void decide(bool atEnd);
+  void keep(Group g);
+  void release(bool atEnd);
+
+  NmeaOptions o_;
+  std::string name_;
+  std::int64_t horizonUs_;
+  ReplayStats& st_;
+  std::map<sources::SourceId, SourceStats> stats_;
+  std::vector<sources::SourceId> firstSeen_;
+  std::vector<std::string> warnings_;
+  int lineNumber_ = 0;
+  bool dtmWarned_ = false;
+  // Before the day is known.
+  std::vector<detail::Parsed> undated_;
+  std::optional<detail::DayPlacer> days_;
+  // Timed groups awaiting their jump decision, and the times before them (the window).
+  std::deque<Group> pending_;
+  std::deque<UtcUs> decidedTimes_;
+  std::vector<UtcUs> scratch_, span_;
+  // Kept groups awaiting release; the newest kept time.
+  std::vector<Group> kept_;
+  std::optional<UtcUs> newestKept_, released_;
+  detail::EpochAssembler assembler_;
+  std::vector<Epoch> epochs_;
+};
+
+}  // namespace reckoner::sim::replay_input

@@ -1,0 +1,203 @@
+// GIVEN / WHEN / THEN: a live run (sim/live_session.h) fed a recording line by line gives the rows of a
+// file replay of it (sim/replay.h): the real recordings of ../shared/data/nmea, a simulated run, and the
+// damaged streams a live source delivers (garbage, a clock jump, sentences a little out of order).
+#include <QTest>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "io/iso8601.h"
+#include "io/text_file.h"
+#include "sim/live_session.h"
+#include "sim/nmea_export.h"
+#include "sim/replay.h"
+#include "support/compare_near.h"
+#include "support/drkf_fixtures.h"
+
+using namespace reckoner;
+
+namespace {
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> out;
+  for (std::size_t s = 0; s < text.size();) {
+    std::size_t e = text.find('\n', s);
+    if (e == std::string::npos) e = text.size();
+    std::string l = text.substr(s, e - s);
+    if (!l.empty() && l.back() == '\r') l.pop_back();
+    out.push_back(l);
+    s = e + 1;
+  }
+  return out;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string s;
+  for (const auto& l : lines) s.append(l).append("\n");
+  return s;
+}
+
+struct LiveRun {
+  std::vector<sim::ReplayOwnRow> rows;
+  sim::ReplayResult result;
+};
+
+/// Feeds the text line by line, taking the rows now and then as a live consumer does.
+LiveRun live(const std::string& text, const sim::ReplayOptions& o, double horizonS = 0.0) {
+  sim::LiveOptions lo;
+  lo.replay = o;
+  lo.reorderHorizonS = horizonS;
+  sim::LiveSession session(lo);
+  LiveRun run;
+  int n = 0;
+  for (const std::string& l : linesOf(text)) {
+    session.nmea(l);
+    if (++n % 97 == 0)
+      for (auto& r : session.takeOwnRows()) run.rows.push_back(r);
+  }
+  session.finish();
+  for (auto& r : session.takeOwnRows()) run.rows.push_back(r);
+  run.result = session.result();
+  return run;
+}
+
+/// Every row equal, bit for bit: the same engine on the same epochs.
+void compareRows(const std::vector<sim::ReplayOwnRow>& a, const std::vector<sim::ReplayOwnRow>& b) {
+  QCOMPARE(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    QCOMPARE(a[k].timeUs, b[k].timeUs);
+    QCOMPARE(a[k].utcUs, b[k].utcUs);
+    QCOMPARE(a[k].estimate.xM, b[k].estimate.xM);
+    QCOMPARE(a[k].estimate.yM, b[k].estimate.yM);
+    QCOMPARE(a[k].estimate.sdXM, b[k].estimate.sdXM);
+    QCOMPARE(a[k].estimate.sdYM, b[k].estimate.sdYM);
+    QCOMPARE(a[k].sensors, b[k].sensors);
+    QCOMPARE(a[k].rowsApplied, b[k].rowsApplied);
+  }
+}
+
+void compareCounts(const sim::ReplayStats& a, const sim::ReplayStats& b) {
+  QCOMPARE(a.nmeaLines, b.nmeaLines);
+  QCOMPARE(a.sentencesUsed, b.sentencesUsed);
+  QCOMPARE(a.nmeaSkipped(), b.nmeaSkipped());
+  QCOMPARE(a.standby, b.standby);
+  QCOMPARE(a.repeated, b.repeated);
+  QCOMPARE(a.epochs, b.epochs);
+  QCOMPARE(a.epochsTimeOnly, b.epochsTimeOnly);
+  QCOMPARE(a.timeJumps, b.timeJumps);
+  QCOMPARE(a.restartsAfterGap, b.restartsAfterGap);
+}
+
+sim::ExportedRun simulated(int seconds) {
+  sim::Scenario s = test::builtinScenario("ttkf-matched");
+  s.durationUs = seconds * kMicrosPerSecond;
+  return sim::exportRun(s, 3, *io::parseIso8601("2026-11-23T10:00:00Z"));
+}
+}  // namespace
+
+class TestLiveSession : public QObject {
+  Q_OBJECT
+ private slots:
+  void realRecordingsGiveTheReplaysRows() {
+    // GIVEN each real recording WHEN fed line by line THEN every row and count equals the file replay's.
+    const std::string dir = RECKONER_SHARED_DIR "/data/nmea/";
+    for (const char* f : {"gpsd-bundg_zeus_9.log", "openrvdas-NBP1406_seap-2014-08-01.nmea"}) {
+      const std::string text = io::readTextFile(dir + f);
+      const sim::ReplayOptions o;
+      const sim::ReplayResult batch = sim::replay(text, f, nullptr, "", o);
+      const LiveRun l = live(text, o);
+      qInfo("%s: %zu rows, %ld sentences used, %ld skipped", f, l.rows.size(), l.result.stats.sentencesUsed,
+            l.result.stats.nmeaSkipped());
+      QVERIFY(!l.rows.empty());
+      compareRows(l.rows, batch.own);
+      compareCounts(l.result.stats, batch.stats);
+      QCOMPARE(l.result.origin.latDeg, batch.origin.latDeg);
+      QCOMPARE(l.result.sources.size(), batch.sources.size());
+      for (std::size_t i = 0; i < batch.sources.size(); ++i) {
+        QCOMPARE(l.result.sources[i].source, batch.sources[i].source);
+        QCOMPARE(l.result.sources[i].used, batch.sources[i].used);
+        QCOMPARE(l.result.sources[i].standby, batch.sources[i].standby);
+      }
+    }
+  }
+
+  void simulatedRunWithGarbageAndAClockJump() {
+    // GIVEN a simulated run's sentences with garbage, a 1 MB line and one sentence stamped an hour
+    // ahead WHEN fed live THEN the rows equal the file replay of the same text, the jump dropped by both.
+    auto lines = linesOf(simulated(300).nmea);
+    lines.insert(lines.begin() + 50, std::string(1 << 20, 'x'));
+    lines.insert(lines.begin() + 80, "$GPGGA,garbage*00");
+    lines.insert(lines.begin() + 81, std::string("\x01\x02\xff$GPRMC,,,", 10));
+    for (std::size_t i = 200; i < lines.size(); ++i)
+      if (lines[i].rfind("$GPGGA,", 0) == 0) {
+        lines[i] = "$GPGGA,110500.00" + lines[i].substr(lines[i].find(',', 7));
+        break;
+      }
+    const std::string text = joined(lines);
+    sim::ReplayOptions o;
+    o.settings = test::builtinScenario("ttkf-matched");
+    const sim::ReplayResult batch = sim::replay(text, "run.nmea", nullptr, "", o);
+    const LiveRun l = live(text, o);
+    QVERIFY(batch.stats.malformed + batch.stats.badChecksum >= 2);
+    compareRows(l.rows, batch.own);
+    compareCounts(l.result.stats, batch.stats);
+  }
+
+  void sentencesOutOfOrderWithinTheHorizon() {
+    // GIVEN second 100 written after second 104 WHEN fed live with a 5 s reorder horizon THEN the rows
+    // equal the replay's (which sorts the file); with no horizon second 100 is late: skipped and
+    // counted, and the run goes on.
+    auto lines = linesOf(simulated(200).nmea);
+    std::vector<std::size_t> starts;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      if (lines[i].rfind("$GPRMC,", 0) == 0) starts.push_back(i);
+    const std::size_t a = starts[100], b = starts[101], c = starts[105];
+    std::vector<std::string> swapped(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(a));
+    swapped.insert(swapped.end(), lines.begin() + static_cast<std::ptrdiff_t>(b),
+                   lines.begin() + static_cast<std::ptrdiff_t>(c));
+    swapped.insert(swapped.end(), lines.begin() + static_cast<std::ptrdiff_t>(a),
+                   lines.begin() + static_cast<std::ptrdiff_t>(b));
+    swapped.insert(swapped.end(), lines.begin() + static_cast<std::ptrdiff_t>(c), lines.end());
+    const std::string text = joined(swapped);
+    sim::ReplayOptions o;
+    o.settings = test::builtinScenario("ttkf-matched");
+    const sim::ReplayResult batch = sim::replay(text, "run.nmea", nullptr, "", o);
+    QVERIFY(batch.stats.reordered > 0);
+    const LiveRun held = live(text, o, 5.0);
+    compareRows(held.rows, batch.own);
+    const LiveRun now = live(text, o, 0.0);
+    qInfo("no horizon: %ld timed sentences late, %zu rows (the replay: %zu)", now.result.stats.late,
+          now.rows.size(), batch.own.size());
+    QCOMPARE(now.result.stats.late, 4L);  // second 100's RMC, GGA, GLL and its second GLL
+    QVERIFY(now.rows.size() <= batch.own.size());
+    for (std::size_t k = 1; k < now.rows.size(); ++k) QVERIFY(now.rows[k].timeUs > now.rows[k - 1].timeUs);
+  }
+
+  void aStreamWithoutDatesTakesTheReceiveClocksDay() {
+    // GIVEN GGA and HDT only (no date anywhere) received on 2026-12-02 WHEN fed live with receive times
+    // THEN the rows are dated that day, as a file replay told the day gives them (without it, a file
+    // replay says 1970-01-01 and warns).
+    std::vector<std::string> lines;
+    for (const auto& l : linesOf(simulated(900).nmea))
+      if (l.rfind("$GPGGA", 0) == 0 || l.rfind("$HEHDT", 0) == 0) lines.push_back(l);
+    sim::LiveOptions lo;
+    lo.replay.settings = test::builtinScenario("ttkf-matched");
+    sim::LiveSession session(lo);
+    const UtcUs received = *io::parseIso8601("2026-12-02T10:00:30Z");
+    for (const auto& l : lines) session.nmea(l, received);
+    session.finish();
+    const auto rows = session.takeOwnRows();
+    // The file replay told the day (--date) gives the same rows.
+    sim::ReplayOptions o = lo.replay;
+    o.date = std::array<int, 3>{2026, 12, 2};
+    const sim::ReplayResult batch = sim::replay(joined(lines), "run.nmea", nullptr, "", o);
+    QVERIFY(!rows.empty());
+    compareRows(rows, batch.own);
+    QCOMPARE(io::formatIso8601(rows.front().utcUs).substr(0, 10), std::string("2026-12-02"));
+  }
+};
+
+QTEST_APPLESS_MAIN(TestLiveSession)
+#include "tst_live_session.moc"

@@ -17,7 +17,7 @@ namespace reckoner::sim {
 namespace replay_input {
 class NmeaStream;
 struct Epoch;
-}
+}  // namespace replay_input
 namespace replay_runner {
 class Runner;
 }

@@ -16,27 +16,16 @@
 #include "sim/replay.h"
 #include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
+#include "support/text_lines.h"
 
 using namespace reckoner;
 
 namespace {
 std::vector<std::string> linesOf(const std::string& text) {
-  std::vector<std::string> out;
-  for (std::size_t s = 0; s < text.size();) {
-    std::size_t e = text.find('\n', s);
-    if (e == std::string::npos) e = text.size();
-    std::string l = text.substr(s, e - s);
-    if (!l.empty() && l.back() == '\r') l.pop_back();
-    out.push_back(l);
-    s = e + 1;
-  }
-  return out;
+  return test::splitLines(text);
 }
-
 std::string joined(const std::vector<std::string>& lines) {
-  std::string s;
-  for (const auto& l : lines) s.append(l).append("\n");
-  return s;
+  return test::joinLines(lines);
 }
 
 struct LiveRun {

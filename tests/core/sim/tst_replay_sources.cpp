@@ -21,27 +21,17 @@
 #include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 #include "support/resource_limits.h"
+#include "support/text_lines.h"
 
 using namespace reckoner;
 namespace nm = reckoner::io::nmea;
 
 namespace {
 std::vector<std::string> linesOf(const std::string& text) {
-  std::vector<std::string> out;
-  for (std::size_t s = 0; s < text.size();) {
-    std::size_t e = text.find('\n', s);
-    if (e == std::string::npos) e = text.size();
-    std::string l = text.substr(s, e - s);
-    if (!l.empty() && l.back() == '\r') l.pop_back();
-    if (!l.empty()) out.push_back(l);
-    s = e + 1;
-  }
-  return out;
+  return test::splitLines(text, test::EmptyLines::Drop);
 }
 std::string joined(const std::vector<std::string>& lines) {
-  std::string out;
-  for (const auto& l : lines) out += l + "\r\n";
-  return out;
+  return test::joinLines(lines);
 }
 std::vector<std::string> fieldsOf(const std::string& sentence) {
   const std::string body = sentence.substr(1, sentence.find('*') - 1);

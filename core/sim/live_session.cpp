@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "io/error_line.h"
+#include "io/input_error.h"
 #include "sim/replay_runner.h"
 #include "sim/replay_stream.h"
 
@@ -24,14 +25,56 @@ LiveSession::LiveSession(LiveOptions options)
     : o_(std::move(options)),
       stream_(std::make_unique<replay_input::NmeaStream>(
           nmeaOptionsOf(o_.replay), o_.name,
-          static_cast<std::int64_t>(std::llround(std::max(0.0, o_.reorderHorizonS) * 1e6)), res_.stats)) {}
+          static_cast<std::int64_t>(std::llround(std::max(0.0, o_.reorderHorizonS) * 1e6)), res_.stats)) {
+  if (!o_.radar) return;
+  plots_ = std::make_unique<replay_input::PlotStream>(o_.replay.time, res_.stats, res_.targetLabels);
+  res_.sweepPeriodS = o_.replay.settings.radar.sweepPeriodS;
+  const track::TrackManagerConfig c = replay_runner::trackerConfigOf(o_.replay);
+  if (const std::string problem = c.check(); !problem.empty())
+    throw io::InputError(o_.replay.settingsName.empty() ? "settings" : o_.replay.settingsName, 0, "tracker",
+                         problem);
+}
 
 LiveSession::~LiveSession() = default;
 
 void LiveSession::nmea(std::string_view line, std::optional<UtcUs> receivedUtc) {
   if (finished_) return;
   stream_->push(line, receivedUtc);
-  for (const replay_input::Epoch& e : stream_->takeEpochs()) run(e);
+  for (replay_input::Epoch& e : stream_->takeEpochs()) waiting_.push_back(std::move(e));
+  if (plots_ && receivedUtc) plots_->expire(*receivedUtc);
+  drain(false);
+}
+
+void LiveSession::radar(std::string_view line, std::optional<UtcUs> receivedUtc) {
+  if (finished_ || !plots_) return;
+  plots_->push(line, receivedUtc);
+  drain(false);
+}
+
+void LiveSession::drain(bool atEnd) {
+  while (!waiting_.empty()) {
+    const replay_input::Epoch& e = waiting_.front();
+    if (plots_) {
+      const auto undecided = plots_->undecidedFrom();
+      if (!atEnd && undecided && *undecided < e.utc) return;  // a plot before it may still come
+      for (const replay_input::Plot& p : plots_->take(e.utc)) plot(p);
+    }
+    run(e);
+    lastRun_ = e.utc;
+    waiting_.pop_front();
+  }
+}
+
+void LiveSession::plot(const replay_input::Plot& p) {
+  if (lastRun_ && p.utc < *lastRun_) {
+    ++res_.stats.radarLate;  // its epoch has run: too late for the bank
+    return;
+  }
+  if (!runner_) {
+    ++res_.stats.radarBeforeFix;
+    return;
+  }
+  runner_->plot(p);
 }
 
 void LiveSession::run(const replay_input::Epoch& e) {
@@ -48,7 +91,7 @@ void LiveSession::run(const replay_input::Epoch& e) {
       return;
     }
     res_.origin = replay_runner::chooseOrigin(o_.replay, e, o_.name, res_.warnings);
-    runner_ = std::make_unique<replay_runner::Runner>(o_.replay, res_, false);
+    runner_ = std::make_unique<replay_runner::Runner>(o_.replay, res_, o_.radar);
   }
   runner_->ownShip(e);
 }
@@ -57,7 +100,11 @@ void LiveSession::finish() {
   if (finished_) return;
   finished_ = true;
   stream_->finish();
-  for (const replay_input::Epoch& e : stream_->takeEpochs()) run(e);
+  for (replay_input::Epoch& e : stream_->takeEpochs()) waiting_.push_back(std::move(e));
+  if (plots_) plots_->finish();
+  drain(true);
+  if (plots_)
+    for (const replay_input::Plot& p : plots_->take(std::nullopt)) plot(p);  // against the last estimate
   if (runner_) runner_->finish();
   refreshSources();
   const ReplayStats& st = res_.stats;
@@ -84,6 +131,14 @@ std::vector<ReplayOwnRow> LiveSession::takeOwnRows() {
   refreshSources();
   std::vector<ReplayOwnRow> out;
   out.swap(res_.own);
+  return out;
+}
+
+std::vector<TrackRow> LiveSession::takeTrackRows(std::vector<UtcUs>* utc) {
+  std::vector<TrackRow> out;
+  out.swap(res_.tracks);
+  if (utc) utc->swap(res_.trackRowUtc);
+  res_.trackRowUtc.clear();
   return out;
 }
 

@@ -4,6 +4,7 @@
 // (docs/outputs.md, "Live"). What a file replay decides over the whole file, a live run decides as the
 // data allow (sim/replay_stream.h): the rows of an epoch come out once the stream-time window after it
 // has arrived.
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,7 +17,9 @@ namespace reckoner::sim {
 
 namespace replay_input {
 class NmeaStream;
+class PlotStream;
 struct Epoch;
+struct Plot;
 }  // namespace replay_input
 namespace replay_runner {
 class Runner;
@@ -28,6 +31,8 @@ struct LiveOptions {
   /// Kept groups wait this long behind the newest time before they go to the filters (sentences out
   /// of order by more are skipped and counted as late).
   double reorderHorizonS = 0.0;
+  /// A radar plot source is connected (radar CSV rows through radar()): the track bank runs.
+  bool radar = false;
 };
 
 class LiveSession {
@@ -40,6 +45,10 @@ class LiveSession {
 
   /// One own-ship NMEA line as received (receivedUtc: the receive clock, when there is one).
   void nmea(std::string_view line, std::optional<UtcUs> receivedUtc = std::nullopt);
+  /// One radar CSV row (or its header) as received. An own-ship epoch waits while a plot older than it
+  /// is undecided (the stream-time window after it, or 10 s on the receive clock), so the bank gets the
+  /// plots between two epochs before the second, as in a file replay.
+  void radar(std::string_view line, std::optional<UtcUs> receivedUtc = std::nullopt);
   /// The end of the input: what is held is decided and run, the filters' counts closed.
   void finish();
 
@@ -49,15 +58,22 @@ class LiveSession {
   [[nodiscard]] const ReplayResult& result() const { return res_; }
   /// The own-ship rows since the last call (they leave result().own).
   std::vector<ReplayOwnRow> takeOwnRows();
+  /// The track rows since the last call, with the UTC of each (they leave result().tracks).
+  std::vector<TrackRow> takeTrackRows(std::vector<UtcUs>* utc = nullptr);
 
  private:
   void run(const replay_input::Epoch& e);
+  void drain(bool atEnd);
+  void plot(const replay_input::Plot& p);
   void refreshSources();
 
   LiveOptions o_;
   ReplayResult res_;
   std::unique_ptr<replay_input::NmeaStream> stream_;
+  std::unique_ptr<replay_input::PlotStream> plots_;
   std::unique_ptr<replay_runner::Runner> runner_;
+  std::deque<replay_input::Epoch> waiting_;  ///< decided, waiting for older plots to be decided
+  std::optional<UtcUs> lastRun_;
   bool anyEpoch_ = false, finished_ = false;
 };
 

@@ -149,6 +149,16 @@ std::vector<Plot> readRadar(const std::string& text, const std::string& name, Re
   return unique;
 }
 
+std::optional<Plot> readRadarRow(std::string_view row, bool withId, std::vector<std::string>& labels,
+                                 std::unordered_map<std::string, int>& tagOf, std::string& why) {
+  try {
+    return readRow(row, withId, labels, tagOf);
+  } catch (const BadRow& bad) {
+    why = bad.field.empty() ? bad.reason : bad.field + ": " + bad.reason;
+    return std::nullopt;
+  }
+}
+
 }  // namespace replay_input
 
 namespace replay_input {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -75,6 +76,11 @@ std::vector<Epoch> readNmea(const std::string& text, const std::string& name, co
 /// `labels` (Plot::tag indexes it). Throws io::InputError for a bad header or a file whose every row is bad.
 std::vector<Plot> readRadar(const std::string& text, const std::string& name, ReplayStats& st,
                             std::vector<std::string>& labels);
+
+/// One data row of a radar CSV (no header): the plot, or nullopt with the field and reason in why.
+/// Labels as readRadar gives them (tagOf: label to index).
+std::optional<Plot> readRadarRow(std::string_view row, bool withId, std::vector<std::string>& labels,
+                                 std::unordered_map<std::string, int>& tagOf, std::string& why);
 
 /// Items in replay order by the stream-time policy (stream_time.h): isolated jumps dropped and
 /// counted, the rest in stable time order.

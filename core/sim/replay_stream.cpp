@@ -172,4 +172,91 @@ std::vector<SourceStats> NmeaStream::sources() const {
   return out;
 }
 
+PlotStream::PlotStream(const StreamTimePolicy& policy, ReplayStats& st, std::vector<std::string>& labels)
+    : policy_(policy), st_(st), labels_(labels) {}
+
+void PlotStream::push(std::string_view line, std::optional<UtcUs> receivedUtc) {
+  const std::string_view row = trimmed(line);
+  if (row.empty()) return;
+  if (row.rfind("utc,", 0) == 0) {  // a header
+    std::string header(row);
+    header.erase(std::remove(header.begin(), header.end(), ' '), header.end());
+    if (header == "utc,range_m,bearing_deg,target_id" || header == "utc,range_m,bearing_deg") {
+      withId_ = header.size() > 23;
+      return;
+    }
+  }
+  ++st_.radarLines;
+  const bool withId = withId_.value_or(std::count(row.begin(), row.end(), ',') == 3);
+  std::string why;
+  auto p = readRadarRow(row, withId, labels_, tagOf_, why);
+  if (!p) {
+    ++st_.radarBad;
+    return;
+  }
+  if (labels_.size() > kMaxLabels) {  // a stream of endless new labels keeps no more of them
+    tagOf_.erase(labels_.back());
+    labels_.pop_back();
+    p->tag = -1;
+  }
+  if (std::find(recent_.begin(), recent_.end(), *p) != recent_.end()) {
+    ++st_.radarDuplicates;
+    return;
+  }
+  recent_.push_back(*p);
+  if (recent_.size() > kRecentPlots) recent_.pop_front();
+  pending_.emplace_back(*p, receivedUtc);
+  decide(false, receivedUtc ? std::optional<UtcUs>(*receivedUtc - kDecideAfterUs) : std::nullopt);
+}
+
+void PlotStream::expire(UtcUs now) {
+  decide(false, now - kDecideAfterUs);
+}
+
+void PlotStream::finish() {
+  decide(true, std::nullopt);
+}
+
+void PlotStream::decide(bool all, std::optional<UtcUs> receivedBefore) {
+  const auto w = static_cast<std::size_t>(std::max(1, policy_.window));
+  while (!pending_.empty()) {
+    const bool full = pending_.size() >= w + 1;
+    const bool waited =
+        receivedBefore && pending_.front().second && *pending_.front().second < *receivedBefore;
+    if (!all && !full && !waited) break;
+    span_.assign(decidedTimes_.begin(), decidedTimes_.end());
+    const std::size_t i = span_.size();
+    for (std::size_t k = 0; k < pending_.size() && k <= w; ++k) span_.push_back(pending_[k].first.utc);
+    const bool jump = isolatedTimeJumpAt(span_, i, policy_, scratch_);
+    const Plot p = pending_.front().first;
+    pending_.pop_front();
+    decidedTimes_.push_back(p.utc);
+    if (decidedTimes_.size() > w) decidedTimes_.pop_front();
+    if (jump) {
+      ++st_.radarTimeJumps;
+      continue;
+    }
+    if (newest_ && p.utc < *newest_) ++st_.radarReordered;
+    newest_ = newest_ ? std::max(*newest_, p.utc) : p.utc;
+    const auto at = std::upper_bound(ready_.begin(), ready_.end(), p.utc,
+                                     [](UtcUs t, const Plot& q) { return t < q.utc; });
+    ready_.insert(at, p);
+  }
+}
+
+std::optional<UtcUs> PlotStream::undecidedFrom() const {
+  std::optional<UtcUs> t;
+  for (const auto& [p, r] : pending_) t = t ? std::min(*t, p.utc) : p.utc;
+  return t;
+}
+
+std::vector<Plot> PlotStream::take(std::optional<UtcUs> before) {
+  const auto end = before ? std::lower_bound(ready_.begin(), ready_.end(), *before,
+                                             [](const Plot& q, UtcUs t) { return q.utc < t; })
+                          : ready_.end();
+  std::vector<Plot> out(ready_.begin(), end);
+  ready_.erase(ready_.begin(), end);
+  return out;
+}
+
 }  // namespace reckoner::sim::replay_input

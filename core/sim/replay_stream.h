@@ -16,6 +16,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "sim/replay_nmea_detail.h"
@@ -73,6 +75,43 @@ class NmeaStream {
   std::optional<UtcUs> newestKept_, released_;
   detail::EpochAssembler assembler_;
   std::vector<Epoch> epochs_;
+};
+
+/// Radar CSV rows one line at a time (the header `utc,range_m,bearing_deg[,target_id]` may come
+/// first, and again after a reconnection; without one, three or four fields as the row has). The same
+/// rules as a file's: exact repeats (among the last kRecentPlots) counted once, the isolated-jump rule
+/// decided once the window after a plot has arrived, or once a plot has waited kDecideAfterUs on the
+/// receive clock (a sparse radar: then as at the end of a file). Decided plots wait in time order.
+class PlotStream {
+ public:
+  static constexpr std::size_t kRecentPlots = 4096;
+  static constexpr std::size_t kMaxLabels = 10000;
+  static constexpr std::int64_t kDecideAfterUs = 10'000'000;
+
+  PlotStream(const StreamTimePolicy& policy, ReplayStats& st, std::vector<std::string>& labels);
+  void push(std::string_view line, std::optional<UtcUs> receivedUtc);
+  /// Decides the plots received before now - kDecideAfterUs.
+  void expire(UtcUs now);
+  void finish();
+  /// The oldest undecided plot's time: plots before it may still come out.
+  [[nodiscard]] std::optional<UtcUs> undecidedFrom() const;
+  /// The decided plots older than t (all with nullopt), in time order; they leave the stream.
+  std::vector<Plot> take(std::optional<UtcUs> before);
+
+ private:
+  void decide(bool all, std::optional<UtcUs> receivedBefore);
+
+  StreamTimePolicy policy_;
+  ReplayStats& st_;
+  std::vector<std::string>& labels_;
+  std::unordered_map<std::string, int> tagOf_;
+  std::optional<bool> withId_;
+  std::deque<Plot> recent_;
+  std::deque<std::pair<Plot, std::optional<UtcUs>>> pending_;  ///< with its receive time
+  std::deque<UtcUs> decidedTimes_;
+  std::vector<UtcUs> span_, scratch_;
+  std::vector<Plot> ready_;  ///< in time order
+  std::optional<UtcUs> newest_;
 };
 
 }  // namespace reckoner::sim::replay_input

@@ -164,6 +164,58 @@ class TestLiveSession : public QObject {
     for (std::size_t k = 1; k < now.rows.size(); ++k) QVERIFY(now.rows[k].timeUs > now.rows[k - 1].timeUs);
   }
 
+  void radarPlotsInterleavedGiveTheReplaysTracks() {
+    // GIVEN a simulated run's NMEA and radar CSV, interleaved by time as two live sources deliver them
+    // WHEN fed live THEN the own-ship rows and every track row equal the file replay's, both with the
+    // file's target_id association and by nearest neighbour.
+    const sim::ExportedRun e = simulated(300);
+    const auto nmea = linesOf(e.nmea);
+    const auto radar = linesOf(e.radarCsv);
+    const UtcUs day = *io::parseIso8601("2026-11-23T00:00:00Z");
+    for (const bool known : {true, false}) {
+      sim::ReplayOptions o;
+      o.settings = test::builtinScenario("ttkf-matched");
+      o.assumeAssociation = known;
+      const sim::ReplayResult batch = sim::replay(e.nmea, "run.nmea", &e.radarCsv, "run.csv", o);
+      sim::LiveOptions lo;
+      lo.replay = o;
+      lo.radar = true;
+      sim::LiveSession session(lo);
+      std::size_t r = 0;
+      std::vector<sim::TrackRow> tracks;
+      for (const std::string& l : nmea) {
+        if (l.rfind("$GPRMC,", 0) == 0) {  // the plots stamped before this second go first
+          const int hh = std::stoi(l.substr(7, 2)), mm = std::stoi(l.substr(9, 2)),
+                    ss = std::stoi(l.substr(11, 2));
+          const UtcUs t = day + ((hh * 60 + mm) * 60 + ss) * kMicrosPerSecond;
+          for (; r < radar.size(); ++r) {
+            const auto u = io::parseIso8601(radar[r].substr(0, radar[r].find(',')));
+            if (u && *u >= t) break;
+            session.radar(radar[r]);
+          }
+        }
+        session.nmea(l);
+        for (auto& tr : session.takeTrackRows()) tracks.push_back(tr);
+      }
+      for (; r < radar.size(); ++r) session.radar(radar[r]);
+      session.finish();
+      for (auto& tr : session.takeTrackRows()) tracks.push_back(tr);
+      compareRows(session.takeOwnRows(), batch.own);
+      qInfo("%s: %zu track rows, %ld plots", known ? "known association" : "nearest neighbour", tracks.size(),
+            session.result().stats.radarLines);
+      QVERIFY(!tracks.empty());
+      QCOMPARE(tracks.size(), batch.tracks.size());
+      for (std::size_t k = 0; k < tracks.size(); ++k) {
+        QCOMPARE(tracks[k].timeUs, batch.tracks[k].timeUs);
+        QCOMPARE(tracks[k].trackId, batch.tracks[k].trackId);
+        QCOMPARE(tracks[k].estXM, batch.tracks[k].estXM);
+        QCOMPARE(tracks[k].estYM, batch.tracks[k].estYM);
+      }
+      QCOMPARE(session.result().stats.radarLate, 0L);
+      QCOMPARE(session.result().stats.radarTimeJumps, batch.stats.radarTimeJumps);
+    }
+  }
+
   void aStreamWithoutDatesTakesTheReceiveClocksDay() {
     // GIVEN GGA and HDT only (no date anywhere) received on 2026-12-02 WHEN fed live with receive times
     // THEN the rows are dated that day, as a file replay told the day gives them (without it, a file

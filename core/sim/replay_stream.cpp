@@ -45,11 +45,11 @@ void NmeaStream::push(std::string_view line, std::optional<UtcUs> receivedUtc) {
 
 void NmeaStream::startDays(std::optional<UtcUs> receivedUtc) {
   const auto dated = std::find_if(undated_.begin(), undated_.end(),
-                                  [](const Parsed& q) { return detail::hasDate(q.sentence); });
-  const Parsed* firstDated = dated == undated_.end() ? nullptr : &*dated;
+                                  [](const Held& q) { return detail::hasDate(q.p.sentence); });
+  const Parsed* firstDated = dated == undated_.end() ? nullptr : &dated->p;
   std::optional<double> firstTod;
-  for (const Parsed& q : undated_)
-    if ((firstTod = detail::timeOfDay(q.sentence))) break;
+  for (const Held& q : undated_)
+    if ((firstTod = detail::timeOfDay(q.p.sentence))) break;
   UtcUs first = 0;
   if (!firstDated && !o_.date && receivedUtc && firstTod) {
     // No date yet, but a receive clock: the day that puts the first time of day nearest to it.
@@ -61,28 +61,37 @@ void NmeaStream::startDays(std::optional<UtcUs> receivedUtc) {
     first = detail::firstDayOf(firstDated, firstTod, name_, o_, warnings_);
   }
   days_.emplace(first, firstDated);
-  std::vector<Parsed> held;
+  std::vector<Held> held;
   held.swap(undated_);
-  for (Parsed& q : held) place(std::move(q), receivedUtc);
+  for (Held& q : held) place(std::move(q.p), q.received);
 }
 
 void NmeaStream::place(Parsed p, std::optional<UtcUs> receivedUtc) {
   if (!days_) {
     const bool dated = detail::hasDate(p.sentence);
-    undated_.push_back(std::move(p));
+    undated_.push_back({std::move(p), receivedUtc});
     if (dated || undated_.size() >= kMaxUndated) startDays(receivedUtc);
     return;
   }
-  if (const auto t = days_->place(p.sentence)) {
+  std::optional<UtcUs> t = days_->place(p.sentence);
+  if (!t && receivedUtc && lastTimedUtc_ && lastTimedReceived_ &&
+      *receivedUtc - *lastTimedReceived_ >= kUntimedAfterUs) {
+    // No timed sentence for a second on the receive clock (the GNSS is out, the heading and log still
+    // report): the receive clock carries the sentences' clock on, so dead reckoning goes on live.
+    t = *lastTimedUtc_ + (*receivedUtc - *lastTimedReceived_);
+  }
+  if (t) {
+    lastTimedUtc_ = *t;
+    lastTimedReceived_ = receivedUtc;
     Group g;
     g.utc = *t;
     g.sentences.push_back(std::move(p));
     pending_.push_back(std::move(g));
     decide(false);
-  } else if (!pending_.empty()) {
+  } else if (!pending_.empty() && pending_.back().sentences.size() < kMaxGroup) {
     pending_.back().sentences.push_back(std::move(p));
   } else {
-    ++st_.untimed;
+    ++st_.untimed;  // before any timed sentence, or beyond what one time can hold
   }
 }
 

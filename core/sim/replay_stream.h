@@ -10,7 +10,11 @@
 //    then go out in time order (a file replay sorts the whole file: the two agree unless a stretch is
 //    more than the horizon out of order);
 //  - a source's clock offset is not corrected (a file replay measures it over the whole file).
-// Memory is bounded: the window, the reorder buffer (its horizon) and kMaxUndated sentences.
+//  - an untimed sentence received a second or more after the last timed one (the GNSS out, heading and
+//    log still reporting) is stamped by the receive clock carried on from that timed sentence, so dead
+//    reckoning goes on (a file replay gives such sentences the last timed sentence's time);
+// Memory is bounded: the window, the reorder buffer (its horizon), kMaxUndated sentences and kMaxGroup
+// untimed sentences per time.
 #include <deque>
 #include <map>
 #include <optional>
@@ -28,6 +32,10 @@ class NmeaStream {
  public:
   /// Sentences held for a date before the times of day are placed without one.
   static constexpr std::size_t kMaxUndated = 600;
+  /// Untimed sentences one time holds at most (more are counted untimed and skipped).
+  static constexpr std::size_t kMaxGroup = 256;
+  /// An untimed sentence received this long after the last timed one is stamped by the receive clock.
+  static constexpr std::int64_t kUntimedAfterUs = 1'000'000;
 
   /// Counts go into st (which must outlive the stream).
   NmeaStream(const NmeaOptions& o, std::string name, std::int64_t reorderHorizonUs, ReplayStats& st);
@@ -64,7 +72,12 @@ class NmeaStream {
   int lineNumber_ = 0;
   bool dtmWarned_ = false;
   // Before the day is known.
-  std::vector<detail::Parsed> undated_;
+  struct Held {
+    detail::Parsed p;
+    std::optional<UtcUs> received;
+  };
+  std::vector<Held> undated_;
+  std::optional<UtcUs> lastTimedUtc_, lastTimedReceived_;
   std::optional<detail::DayPlacer> days_;
   // Timed groups awaiting their jump decision, and the times before them (the window).
   std::deque<Group> pending_;

@@ -216,6 +216,42 @@ class TestLiveSession : public QObject {
     }
   }
 
+  void theGnssFailsAndHeadingAndLogGoOn() {
+    // GIVEN a simulated run whose GNSS, Loran-C and ZDA stop after 120 s while the gyro and log report on,
+    // received at 1 Hz WHEN fed live THEN own-ship rows keep coming each second (dead reckoning on gyro and
+    // log), where the untimed sentences would otherwise pile up on the last fix's time; without receive times
+    // one time holds at most kMaxGroup of them.
+    std::vector<std::string> lines;
+    std::vector<UtcUs> received;
+    const UtcUs start = *io::parseIso8601("2026-11-23T10:00:00Z");
+    int second = -1;
+    for (const auto& l : linesOf(simulated(600).nmea)) {
+      if (l.rfind("$GPRMC", 0) == 0) ++second;
+      const bool fix = l.rfind("$GP", 0) == 0 || l.rfind("$LC", 0) == 0 || l.rfind("$IIZDA", 0) == 0;
+      if (fix && second >= 120) continue;
+      lines.push_back(l);
+      received.push_back(start + second * kMicrosPerSecond + 300'000);
+    }
+    sim::LiveOptions lo;
+    lo.replay.settings = test::builtinScenario("ttkf-matched");
+    sim::LiveSession session(lo);
+    for (std::size_t i = 0; i < lines.size(); ++i) session.nmea(lines[i], received[i]);
+    session.finish();
+    const auto rows = session.takeOwnRows();
+    qInfo("%zu lines, %zu rows, the last at %.0f s", lines.size(), rows.size(),
+          rows.empty() ? 0.0 : toSeconds(rows.back().timeUs));
+    // The run's data end at `second`: a row every second to there, 280 of them without a fix.
+    QVERIFY(second > 300);
+    QVERIFY(rows.size() + 5 >= static_cast<std::size_t>(second));
+    QVERIFY(toSeconds(rows.back().timeUs) >= second - 1.0);
+    QCOMPARE(rows.back().sensors.find("gps"), std::string::npos);
+
+    sim::LiveSession untimed(lo);
+    for (const auto& l : lines) untimed.nmea(l);
+    untimed.finish();
+    QVERIFY(untimed.result().stats.untimed > 0);
+  }
+
   void aStreamWithoutDatesTakesTheReceiveClocksDay() {
     // GIVEN GGA and HDT only (no date anywhere) received on 2026-12-02 WHEN fed live with receive times
     // THEN the rows are dated that day, as a file replay told the day gives them (without it, a file

@@ -71,63 +71,75 @@ void writeTargetsCsv(const std::string& path, std::span<const sim::TrackRow> row
   writeTextFile(path, text);
 }
 
-void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) {
-  std::string text =
-      "t_s,utc,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,"
-      "est_lat_deg,est_lon_deg,sensors,rows,est_current_x_mps,est_current_y_mps,sd_current_x_mps,"
-      "sd_current_y_mps,heading_bias_deg,sd_heading_bias_deg,log_scale_pct,sd_log_scale_pct,log_offset_mps,"
-      "sd_log_offset_mps\n";
+std::string replayOwnShipCsvHeader() {
+  return "t_s,utc,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,"
+         "est_lat_deg,est_lon_deg,sensors,rows,est_current_x_mps,est_current_y_mps,sd_current_x_mps,"
+         "sd_current_y_mps,heading_bias_deg,sd_heading_bias_deg,log_scale_pct,sd_log_scale_pct,log_offset_"
+         "mps,"
+         "sd_log_offset_mps";
+}
+
+std::string replayOwnShipCsvLine(const sim::ReplayOwnRow& o) {
+  const sim::CalibrationEstimate& c = o.calibration;
   char buf[768];
-  for (const auto& o : r.own) {
-    const sim::CalibrationEstimate& c = o.calibration;
-    std::snprintf(
-        buf, sizeof buf,
-        "%.6f,%s,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f,%.9f,%.9f,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,"
-        "%.3f,%.3f,%.4f,%.4f\n",
-        toSeconds(o.timeUs), io::formatIso8601(o.utcUs).c_str(), o.estimate.xM, o.estimate.yM,
-        o.estimate.vxMps, o.estimate.vyMps, o.estimate.sdXM, o.estimate.sdYM, o.estimate.sdVxMps,
-        o.estimate.sdVyMps, o.estimate.latDeg, o.estimate.lonDeg, o.sensors.c_str(), o.rowsApplied,
-        c.currentXMps, c.currentYMps, c.sdCurrentXMps, c.sdCurrentYMps, radToDeg(c.headingBiasRad),
-        radToDeg(c.sdHeadingBiasRad), 100.0 * c.logScale, 100.0 * c.sdLogScale, c.logOffsetMps,
-        c.sdLogOffsetMps);
-    text.append(buf);
-  }
+  std::snprintf(
+      buf, sizeof buf,
+      "%.6f,%s,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.5f,%.5f,%.9f,%.9f,%s,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,"
+      "%.3f,%.3f,%.4f,%.4f",
+      toSeconds(o.timeUs), io::formatIso8601(o.utcUs).c_str(), o.estimate.xM, o.estimate.yM, o.estimate.vxMps,
+      o.estimate.vyMps, o.estimate.sdXM, o.estimate.sdYM, o.estimate.sdVxMps, o.estimate.sdVyMps,
+      o.estimate.latDeg, o.estimate.lonDeg, o.sensors.c_str(), o.rowsApplied, c.currentXMps, c.currentYMps,
+      c.sdCurrentXMps, c.sdCurrentYMps, radToDeg(c.headingBiasRad), radToDeg(c.sdHeadingBiasRad),
+      100.0 * c.logScale, 100.0 * c.sdLogScale, c.logOffsetMps, c.sdLogOffsetMps);
+  return buf;
+}
+
+void writeReplayOwnShipCsv(const std::string& path, const sim::ReplayResult& r) {
+  std::string text = replayOwnShipCsvHeader();
+  text += '\n';
+  for (const auto& o : r.own) text.append(replayOwnShipCsvLine(o)).append("\n");
   writeTextFile(path, text);
 }
 
+std::string replayTargetsCsvHeader() {
+  return "t_s,utc,track_id,target_id,status,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,"
+         "sd_vy_mps,est_lat_deg,est_lon_deg,course_deg,speed_kn,cpa_nm,tcpa_min,nis,manoeuvring";
+}
+
+std::string replayTargetsCsvLine(const sim::TrackRow& t, UtcUs utc,
+                                 std::span<const std::string> targetLabels) {
+  char head[128];
+  std::snprintf(head, sizeof head, "%.6f,%s,%d,", toSeconds(t.timeUs), io::formatIso8601(utc).c_str(),
+                t.trackId);
+  std::string s = head;
+  if (t.targetId >= 0 && static_cast<std::size_t>(t.targetId) < targetLabels.size())
+    s.append(targetLabels[static_cast<std::size_t>(t.targetId)]);
+  s += ',';
+  s.append(track::trackStatusName(t.status));
+  appendNumber(s, t.estXM, "%.3f");
+  appendNumber(s, t.estYM, "%.3f");
+  appendNumber(s, t.estVxMps, "%.4f");
+  appendNumber(s, t.estVyMps, "%.4f");
+  appendNumber(s, t.sdXM, "%.4f");
+  appendNumber(s, t.sdYM, "%.4f");
+  appendNumber(s, t.sdVxMps, "%.5f");
+  appendNumber(s, t.sdVyMps, "%.5f");
+  appendNumber(s, t.estLatDeg, "%.9f");
+  appendNumber(s, t.estLonDeg, "%.9f");
+  appendNumber(s, t.courseDeg, "%.3f");
+  appendNumber(s, t.speedKn, "%.3f");
+  appendNumber(s, t.cpaNm, "%.5f");
+  appendNumber(s, t.tcpaMin, "%.4f");
+  appendNumber(s, t.nis, "%.4f");
+  s.append(t.manoeuvring ? ",1" : ",0");
+  return s;
+}
+
 void writeReplayTargetsCsv(const std::string& path, const sim::ReplayResult& r) {
-  std::string text =
-      "t_s,utc,track_id,target_id,status,est_x_m,est_y_m,est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,"
-      "sd_vy_mps,est_lat_deg,est_lon_deg,course_deg,speed_kn,cpa_nm,tcpa_min,nis,manoeuvring\n";
-  for (std::size_t i = 0; i < r.tracks.size(); ++i) {
-    const sim::TrackRow& t = r.tracks[i];
-    char head[128];
-    std::snprintf(head, sizeof head, "%.6f,%s,%d,", toSeconds(t.timeUs),
-                  io::formatIso8601(r.trackRowUtc[i]).c_str(), t.trackId);
-    std::string s = head;
-    if (t.targetId >= 0 && static_cast<std::size_t>(t.targetId) < r.targetLabels.size())
-      s.append(r.targetLabels[static_cast<std::size_t>(t.targetId)]);
-    s += ',';
-    s.append(track::trackStatusName(t.status));
-    appendNumber(s, t.estXM, "%.3f");
-    appendNumber(s, t.estYM, "%.3f");
-    appendNumber(s, t.estVxMps, "%.4f");
-    appendNumber(s, t.estVyMps, "%.4f");
-    appendNumber(s, t.sdXM, "%.4f");
-    appendNumber(s, t.sdYM, "%.4f");
-    appendNumber(s, t.sdVxMps, "%.5f");
-    appendNumber(s, t.sdVyMps, "%.5f");
-    appendNumber(s, t.estLatDeg, "%.9f");
-    appendNumber(s, t.estLonDeg, "%.9f");
-    appendNumber(s, t.courseDeg, "%.3f");
-    appendNumber(s, t.speedKn, "%.3f");
-    appendNumber(s, t.cpaNm, "%.5f");
-    appendNumber(s, t.tcpaMin, "%.4f");
-    appendNumber(s, t.nis, "%.4f");
-    s.append(t.manoeuvring ? ",1" : ",0");
-    text.append(s);
-    text += '\n';
-  }
+  std::string text = replayTargetsCsvHeader();
+  text += '\n';
+  for (std::size_t i = 0; i < r.tracks.size(); ++i)
+    text.append(replayTargetsCsvLine(r.tracks[i], r.trackRowUtc[i], r.targetLabels)).append("\n");
   writeTextFile(path, text);
 }
 
@@ -244,6 +256,12 @@ void writeRadarCounts(JsonWriter& w, const sim::ReplayResult& r) {
 }  // namespace
 
 std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nmeaName) {
+  const double span = r.own.empty() ? 0.0 : toSeconds(r.own.back().timeUs - r.own.front().timeUs);
+  return replaySummaryJson(r, nmeaName, span);
+}
+
+std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nmeaName, double ownSpanS,
+                              const std::function<void(JsonWriter&)>& extra) {
   JsonWriter w;
   w.beginObject();
   w.key("nmea_file").value(nmeaName);
@@ -252,13 +270,13 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   writeNmeaCounts(w, r.stats);
   writeOwnShipFilter(w, r);
   w.key("sources").beginArray();
-  const double span = r.own.empty() ? 0.0 : toSeconds(r.own.back().timeUs - r.own.front().timeUs);
-  for (const sim::SourceStats& src : r.sources) writeSource(w, src, span);
+  for (const sim::SourceStats& src : r.sources) writeSource(w, src, ownSpanS);
   w.endArray();
   writeRadarCounts(w, r);
   w.key("warnings").beginArray();
   for (const auto& warning : r.warnings) w.value(warning);
   w.endArray();
+  if (extra) extra(w);
   w.endObject();
   return w.str();
 }

@@ -19,6 +19,17 @@ replay_input::NmeaOptions nmeaOptionsOf(const ReplayOptions& o) {
   return n;
 }
 
+/// An AIS sentence: "!xxVDM" or "!xxVDO", after an NMEA 4 tag block "\\...\\" when there is one.
+bool isAisLine(std::string_view line) {
+  if (!line.empty() && line.front() == '\\') {
+    const auto end = line.find('\\', 1);
+    if (end == std::string_view::npos) return false;
+    line.remove_prefix(end + 1);
+  }
+  return line.size() >= 6 && line[0] == '!' && line.substr(3, 2) == "VD" &&
+         (line[5] == 'M' || line[5] == 'O');
+}
+
 }  // namespace
 
 LiveSession::LiveSession(LiveOptions options)
@@ -37,8 +48,14 @@ LiveSession::LiveSession(LiveOptions options)
 
 LiveSession::~LiveSession() = default;
 
-void LiveSession::nmea(std::string_view line, std::optional<UtcUs> receivedUtc) {
+void LiveSession::nmea(std::string_view line, std::optional<UtcUs> receivedUtc, std::string_view source) {
   if (finished_) return;
+  if (isAisLine(line)) {
+    const std::optional<UtcUs> at = receivedUtc ? receivedUtc : lastRun_;
+    auto m = ais_.feed(line, at ? static_cast<double>(*at) * 1e-6 : -1.0);
+    if (m) aisOut_.push_back({at.value_or(0), std::string(source), std::move(*m)});
+    return;
+  }
   stream_->push(line, receivedUtc);
   for (replay_input::Epoch& e : stream_->takeEpochs()) waiting_.push_back(std::move(e));
   if (plots_ && receivedUtc) plots_->expire(*receivedUtc);
@@ -131,6 +148,12 @@ std::vector<ReplayOwnRow> LiveSession::takeOwnRows() {
   refreshSources();
   std::vector<ReplayOwnRow> out;
   out.swap(res_.own);
+  return out;
+}
+
+std::vector<LiveAisMessage> LiveSession::takeAisMessages() {
+  std::vector<LiveAisMessage> out;
+  out.swap(aisOut_);
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/ais.h"
 #include "sim/replay.h"
 
 namespace reckoner::sim {
@@ -35,6 +36,13 @@ struct LiveOptions {
   bool radar = false;
 };
 
+/// An AIS message decoded from a live stream, with when and where it arrived.
+struct LiveAisMessage {
+  UtcUs utc = 0;       ///< receive time, else the time of the latest own-ship epoch
+  std::string source;  ///< the connection's name
+  io::AisMessage message;
+};
+
 class LiveSession {
  public:
   /// Throws io::InputError when the settings' tracker configuration is unusable.
@@ -43,8 +51,10 @@ class LiveSession {
   LiveSession(const LiveSession&) = delete;
   LiveSession& operator=(const LiveSession&) = delete;
 
-  /// One own-ship NMEA line as received (receivedUtc: the receive clock, when there is one).
-  void nmea(std::string_view line, std::optional<UtcUs> receivedUtc = std::nullopt);
+  /// One NMEA line as received (receivedUtc: the receive clock, when there is one). AIS sentences
+  /// (!xxVDM, !xxVDO, after an optional tag block) go to the AIS decoder; the rest to own ship.
+  void nmea(std::string_view line, std::optional<UtcUs> receivedUtc = std::nullopt,
+            std::string_view source = {});
   /// One radar CSV row (or its header) as received. An own-ship epoch waits while a plot older than it
   /// is undecided (the stream-time window after it, or 10 s on the receive clock), so the bank gets the
   /// plots between two epochs before the second, as in a file replay.
@@ -60,6 +70,10 @@ class LiveSession {
   std::vector<ReplayOwnRow> takeOwnRows();
   /// The track rows since the last call, with the UTC of each (they leave result().tracks).
   std::vector<TrackRow> takeTrackRows(std::vector<UtcUs>* utc = nullptr);
+  /// The AIS messages decoded since the last call.
+  std::vector<LiveAisMessage> takeAisMessages();
+  /// What became of the AIS lines (decoded, rejected by reason, fragments).
+  [[nodiscard]] const io::AisCounters& aisCounters() const { return ais_.counters(); }
 
  private:
   void run(const replay_input::Epoch& e);
@@ -72,6 +86,8 @@ class LiveSession {
   std::unique_ptr<replay_input::NmeaStream> stream_;
   std::unique_ptr<replay_input::PlotStream> plots_;
   std::unique_ptr<replay_runner::Runner> runner_;
+  io::AisDecoder ais_;
+  std::vector<LiveAisMessage> aisOut_;
   std::deque<replay_input::Epoch> waiting_;  ///< decided, waiting for older plots to be decided
   std::optional<UtcUs> lastRun_;
   bool anyEpoch_ = false, finished_ = false;

@@ -1,0 +1,94 @@
+#include "files/live_output.h"
+
+#include <cerrno>
+#include <cstring>
+
+#include "files/ais_output.h"
+#include "files/track_output.h"
+#include "io/input_error.h"
+#include "io/json.h"
+#include "io/text_file.h"
+
+namespace reckoner::files {
+
+LiveOutputWriter::File LiveOutputWriter::open(const std::string& path, const std::string& header) {
+  File file{path, std::fopen(path.c_str(), "wb")};
+  if (!file.f) throw io::InputError(path, 0, "", std::string("cannot write: ") + std::strerror(errno));
+  put(file, header);
+  flush(file);
+  return file;
+}
+
+void LiveOutputWriter::put(File& file, const std::string& line) {
+  if (!file.f) return;
+  if (std::fwrite(line.data(), 1, line.size(), file.f) != line.size() || std::fputc('\n', file.f) == EOF)
+    throw io::InputError(file.path, 0, "", std::string("write failed: ") + std::strerror(errno));
+}
+
+void LiveOutputWriter::flush(File& file) {
+  if (file.f && std::fflush(file.f) != 0)
+    throw io::InputError(file.path, 0, "", std::string("write failed: ") + std::strerror(errno));
+}
+
+LiveOutputWriter::LiveOutputWriter(const std::string& dir, bool radar)
+    : dir_(dir),
+      own_(open(dir + "/ownship.csv", replayOwnShipCsvHeader())),
+      ais_(open(dir + "/ais.csv", aisCsvHeader())) {
+  if (radar) targets_ = open(dir + "/targets.csv", replayTargetsCsvHeader());
+}
+
+LiveOutputWriter::~LiveOutputWriter() {
+  for (File* file : {&own_, &targets_, &ais_})
+    if (file->f) std::fclose(file->f);
+}
+
+void LiveOutputWriter::append(sim::LiveSession& session) {
+  const std::vector<sim::ReplayOwnRow> own = session.takeOwnRows();
+  for (const sim::ReplayOwnRow& r : own) put(own_, replayOwnShipCsvLine(r));
+  if (!own.empty()) {
+    if (!firstOwn_) firstOwn_ = own.front().timeUs;
+    lastOwn_ = own.back().timeUs;
+    ownRows_ += static_cast<long>(own.size());
+    flush(own_);
+  }
+  std::vector<UtcUs> utc;
+  const std::vector<sim::TrackRow> tracks = session.takeTrackRows(&utc);
+  if (targets_.f && !tracks.empty()) {
+    for (std::size_t i = 0; i < tracks.size(); ++i)
+      put(targets_, replayTargetsCsvLine(tracks[i], utc[i], session.result().targetLabels));
+    trackRows_ += static_cast<long>(tracks.size());
+    flush(targets_);
+  }
+  const std::vector<sim::LiveAisMessage> ais = session.takeAisMessages();
+  for (const sim::LiveAisMessage& m : ais) put(ais_, aisCsvLine(m.utc, m.source, m.message));
+  if (!ais.empty()) {
+    aisRows_ += static_cast<long>(ais.size());
+    flush(ais_);
+  }
+}
+
+void LiveOutputWriter::finish(sim::LiveSession& session, const std::string& inputName) {
+  append(session);
+  const double span = firstOwn_ ? toSeconds(*lastOwn_ - *firstOwn_) : 0.0;
+  const io::AisCounters& c = session.aisCounters();
+  const auto aisObject = [&c](io::JsonWriter& w) {
+    const auto count = [&w](const char* k, std::uint64_t v) { w.key(k).value(static_cast<std::int64_t>(v)); };
+    w.key("ais").beginObject();
+    count("lines", c.lines);
+    count("decoded", c.decoded);
+    count("bad_checksum", c.badChecksum);
+    count("malformed", c.malformed);
+    count("bad_armour", c.badArmour);
+    count("bad_fill", c.badFill);
+    count("too_long", c.tooLong);
+    count("orphan_fragments", c.orphanFragments);
+    count("expired_partials", c.expiredPartials);
+    count("evicted_partials", c.evictedPartials);
+    count("unsupported_type", c.unsupportedType);
+    count("too_short", c.tooShort);
+    w.endObject();
+  };
+  io::writeTextFile(dir_ + "/summary.json", replaySummaryJson(session.result(), inputName, span, aisObject));
+}
+
+}  // namespace reckoner::files

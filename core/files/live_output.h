@@ -1,0 +1,48 @@
+#pragma once
+// The files of a live run (docs/outputs.md, "Live input"): ownship.csv and targets.csv in the replay's
+// formats, and ais.csv, each written a row at a time as the run goes (flushed once per batch, so a
+// killed run leaves whole rows up to its last batch), and summary.json when it ends.
+#include <cstdio>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sim/live_session.h"
+
+namespace reckoner::files {
+
+class LiveOutputWriter {
+ public:
+  /// Creates (truncates) dir/ownship.csv, dir/ais.csv and, with radar, dir/targets.csv. Throws
+  /// io::InputError naming the file when one cannot be written.
+  LiveOutputWriter(const std::string& dir, bool radar);
+  ~LiveOutputWriter();
+  LiveOutputWriter(const LiveOutputWriter&) = delete;
+  LiveOutputWriter& operator=(const LiveOutputWriter&) = delete;
+
+  /// Appends what the session produced since the last call (rows taken from it) and flushes.
+  void append(sim::LiveSession& session);
+  /// After session.finish(): the last rows, then summary.json (the replay's, with an "ais" object).
+  void finish(sim::LiveSession& session, const std::string& inputName);
+
+  [[nodiscard]] long ownRows() const { return ownRows_; }
+  [[nodiscard]] long trackRows() const { return trackRows_; }
+  [[nodiscard]] long aisRows() const { return aisRows_; }
+  [[nodiscard]] const std::string& dir() const { return dir_; }
+
+ private:
+  struct File {
+    std::string path;
+    std::FILE* f = nullptr;
+  };
+  static File open(const std::string& path, const std::string& header);
+  static void put(File& file, const std::string& line);
+  static void flush(File& file);
+
+  std::string dir_;
+  File own_, targets_, ais_;
+  long ownRows_ = 0, trackRows_ = 0, aisRows_ = 0;
+  std::optional<TimeUs> firstOwn_, lastOwn_;
+};
+
+}  // namespace reckoner::files

@@ -1,7 +1,6 @@
 // replay --nmea FILE and export SCENARIO: recorded NMEA (and radar plots) through the DRKF and the
 // trackers, and a simulated run written as such a recording.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -9,6 +8,7 @@
 
 #include "cli/cli_options.h"
 #include "cli/commands.h"
+#include "cli/replay_settings.h"
 #include "common/angles.h"
 #include "common/time.h"
 #include "files/track_output.h"
@@ -24,50 +24,10 @@ namespace {
 
 // ---- replay --------------------------------------------------------------------------------------
 struct ReplayArgs {
-  std::optional<std::string> nmea, radar, config;
-  bool assumeAssociation = false;
-  double maxGapS = sim::ReplayOptions{}.maxGapS;
-  std::optional<double> variationDeg;
-  std::optional<std::string> date;
-  std::string profile;
-  std::string adaptiveGnss;
+  std::optional<std::string> nmea, radar;
+  ReplaySettings settings;
   OutputArgs output;
 };
-
-/// --date YYYY-MM-DD as {year, month, day}.
-std::array<int, 3> parseDate(const std::string& date) {
-  const auto day = io::parseIso8601(date + "T00:00:00Z");
-  if (!day || date.size() != 10) throw UsageError("--date: expected YYYY-MM-DD, got " + io::quoted(date));
-  return {std::stoi(date.substr(0, 4)), std::stoi(date.substr(5, 2)), std::stoi(date.substr(8, 2))};
-}
-
-sim::ReplayOptions replayOptions(const ReplayArgs& a) {
-  sim::ReplayOptions o;
-  const auto profile = profileOf(a.profile);
-  if (a.config) {
-    o.settings = loadScenario(*a.config);
-    o.settingsName = *a.config;
-    o.originFromSettings = true;
-    if (profile) sim::applySensorProfile(o.settings, *profile);
-  } else {
-    o.settings = loadScenario("builtin:default");
-    // Recorded data come from real sensors: the realistic profile unless asked otherwise (paper: the
-    // default scenario's figures, seed 000's Table I).
-    sim::applySensorProfile(o.settings, profile.value_or(sim::SensorProfile::Realistic));
-    o.sweepFromPlots = true;  // no radar configured: the antenna's rotation as the plots show it
-  }
-  if (!o.settings.radar.fitted) {  // the radar noise a replay assumes without a configured radar
-    o.settings.radar.fitted = true;
-    o.settings.radar.rangeSdM = 20.0;
-    o.settings.radar.bearingSdRad = degToRad(0.5);
-  }
-  o.assumeAssociation = a.assumeAssociation;
-  if (!a.adaptiveGnss.empty()) o.settings.filter.adaptiveGnssNoise = a.adaptiveGnss == "on";
-  o.maxGapS = a.maxGapS;
-  if (a.variationDeg) o.variationDeg = *a.variationDeg;
-  if (a.date) o.date = parseDate(*a.date);
-  return o;
-}
 
 void printReplayInput(const sim::ReplayResult& r) {
   const auto& st = r.stats;
@@ -112,7 +72,7 @@ void printReplay(const sim::ReplayResult& r, const ReplayArgs& a, const std::str
         "confirmed (%s)\n",
         st.radarLines, st.radarPlots, st.radarBad, st.radarDuplicates, st.radarTimeJumps,
         r.tracking.tracksStarted, r.tracking.tracksConfirmed,
-        a.assumeAssociation ? "association by target_id" : "nearest neighbour");
+        a.settings.assumeAssociation ? "association by target_id" : "nearest neighbour");
   if (!r.own.empty()) {
     const auto& last = r.own.back();
     std::printf("  final estimate %s %s, position sd %.1f m\n",
@@ -126,7 +86,7 @@ void printReplay(const sim::ReplayResult& r, const ReplayArgs& a, const std::str
 
 int replayCommand(const ReplayArgs& a) {
   if (!a.nmea) throw UsageError("--nmea FILE is required");
-  const sim::ReplayOptions o = replayOptions(a);
+  const sim::ReplayOptions o = replayOptions(a.settings);
   const std::string out = prepareOutDir(a.output);
   const std::string nmea = io::readTextFile(*a.nmea);
   std::optional<std::string> radar;
@@ -148,19 +108,7 @@ void addReplay(CLI::App& root, Commands& out) {
       root.add_subcommand("replay", "recorded NMEA 0183 (and radar plots) through the DRKF and the trackers");
   addText(*app, "nmea", a->nmea, "FILE", "the NMEA 0183 log, required");
   addText(*app, "radar", a->radar, "FILE.csv", "radar plots (docs/outputs.md, radar.csv)");
-  addText(*app, "config", a->config, "SCENARIO",
-          "settings (sensors, filter, radar, origin) from this scenario; default builtin:default with the "
-          "realistic profile");
-  addFlag(*app, "assume-association", a->assumeAssociation,
-          "associate plots to tracks by the file's target_id (else nearest neighbour)");
-  addReal(*app, "max-gap", a->maxGapS, 1.0, 1e7, "S",
-          "no data for longer than this restarts the DRKF, seconds");
-  addText(*app, "date", a->date, "YYYY-MM-DD", "the day, for a log without dates");
-  addReal(*app, "variation", a->variationDeg, -180.0, 180.0, "DEG",
-          "magnetic variation, degrees east positive, when the file gives none");
-  addProfile(*app, a->profile, "sensor profile (default realistic, or the --config scenario's own figures)");
-  addChoice(*app, "adaptive-gnss", {"on", "off"}, a->adaptiveGnss,
-            "scale the receiver's position noise by a variational-Bayes estimate (default: the settings')");
+  addReplaySettings(*app, a->settings);
   addOutputOptions(*app, a->output, Summary::Json, "ownship.csv, summary.json, targets.csv with --radar");
   out.push_back(
       {app, [a] { return replayCommand(*a); }, "replay takes no positional arguments (use --nmea FILE)"});

@@ -15,132 +15,13 @@
 #include <vector>
 
 #include "io/ais.h"
+#include "support/ais_corpus.h"
 #include "support/compare_near.h"
 
 using namespace reckoner::io;
+using namespace reckoner::test::ais;
 
 namespace {
-
-/// A payload written field by field, most significant bit first, then armoured into a sentence.
-struct PayloadBuilder {
-  std::vector<int> bits;
-  PayloadBuilder& put(long long value, int width) {
-    for (int i = width - 1; i >= 0; --i) bits.push_back(static_cast<int>((value >> i) & 1));
-    return *this;
-  }
-  PayloadBuilder& text(const std::string& s, int chars) {
-    for (int i = 0; i < chars; ++i) {
-      const int c = i < static_cast<int>(s.size()) ? s[static_cast<std::size_t>(i)] : '@';
-      put(c >= 64 ? c - 64 : c, 6);
-    }
-    return *this;
-  }
-  PayloadBuilder& truncate(std::size_t n) {
-    bits.resize(n);
-    return *this;
-  }
-  /// The armoured payload and its fill bits.
-  std::pair<std::string, int> armoured() const {
-    std::string s;
-    const int fill = static_cast<int>((6 - bits.size() % 6) % 6);
-    for (std::size_t i = 0; i < bits.size(); i += 6) {
-      int v = 0;
-      for (std::size_t j = i; j < i + 6; ++j) v = (v << 1) | (j < bits.size() ? bits[j] : 0);
-      s.push_back(static_cast<char>(v < 40 ? v + 48 : v + 56));
-    }
-    return {s, fill};
-  }
-};
-
-std::string withSum(const std::string& body) {
-  unsigned x = 0;
-  for (const char c : body) x ^= static_cast<unsigned char>(c);
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "*%02X", x);
-  return "!" + body + buf;
-}
-
-std::string sentence(const std::string& payload, int fill, const std::string& frag = "1,1,",
-                     char channel = 'A') {
-  return withSum("AIVDM," + frag + "," + std::string(1, channel) + "," + payload + "," +
-                 std::to_string(fill));
-}
-
-std::string sentence(const PayloadBuilder& p) {
-  const auto [s, fill] = p.armoured();
-  return sentence(s, fill);
-}
-
-/// Type 1-3 class A position report (168 bits).
-PayloadBuilder classA(int type, long long mmsi, int status, int rot, int sog, long long lon, long long lat,
-                      int cog, int heading) {
-  PayloadBuilder p;
-  p.put(type, 6).put(0, 2).put(mmsi, 30).put(status, 4).put(rot, 8).put(sog, 10).put(1, 1);
-  p.put(lon, 28)
-      .put(lat, 27)
-      .put(cog, 12)
-      .put(heading, 9)
-      .put(33, 6)
-      .put(0, 2)
-      .put(0, 3)
-      .put(0, 1)
-      .put(0, 19);
-  return p;
-}
-
-PayloadBuilder baseStation() {
-  PayloadBuilder p;
-  p.put(4, 6).put(0, 2).put(3669702, 30).put(2007, 14).put(5, 4).put(14, 5).put(19, 5).put(57, 6).put(39, 6);
-  p.put(1, 1).put(-45811417, 28).put(22130260, 27).put(7, 4).put(0, 10).put(0, 1).put(0, 19);
-  return p;
-}
-
-PayloadBuilder staticVoyage() {
-  PayloadBuilder p;
-  p.put(5, 6)
-      .put(0, 2)
-      .put(351759000, 30)
-      .put(0, 2)
-      .put(9134270, 30)
-      .text("3FOF8", 7)
-      .text("EVER DIADEM", 20);
-  p.put(70, 8).put(225, 9).put(70, 9).put(1, 6).put(31, 6).put(1, 4).put(5, 4).put(15, 5).put(14, 5).put(0,
-                                                                                                         6);
-  p.put(122, 8).text("NEW YORK", 20).put(0, 1).put(0, 1);
-  return p;
-}
-
-PayloadBuilder classB(int type) {
-  PayloadBuilder p;
-  p.put(type, 6).put(0, 2).put(338087471, 30).put(0, 8).put(1, 10).put(0, 1).put(-44443279, 28);
-  p.put(24410724, 27).put(796, 12).put(511, 9).put(49, 6);
-  if (type == 18) return p.put(0, 2).put(0x3f, 6).put(0, 20);
-  p.put(0, 4).text("CAPT.J.RIMES", 20).put(70, 8).put(5, 9).put(21, 9).put(4, 6).put(4, 6).put(1, 4);
-  return p.put(0, 1).put(0, 1).put(0, 1).put(0, 4);
-}
-
-PayloadBuilder aidToNavigation(const std::string& name, const std::string& extension) {
-  PayloadBuilder p;
-  p.put(21, 6).put(0, 2).put(123456789, 30).put(20, 5).text(name, 20).put(0, 1).put(-73619155, 28);
-  p.put(28752371, 27).put(5, 9).put(5, 9).put(5, 6).put(5, 6).put(1, 4).put(50, 6).put(1, 1).put(165, 8);
-  p.put(0, 1).put(1, 1).put(0, 1).put(0, 1);
-  if (!extension.empty()) p.text(extension, static_cast<int>(extension.size()));
-  return p;
-}
-
-PayloadBuilder staticReport(int part) {
-  PayloadBuilder p;
-  p.put(24, 6).put(0, 2).put(271041815, 30).put(part, 2);
-  if (part == 0) return p.text("PROGUY", 20).put(0, 8);
-  p.put(60, 8).text("1D0", 3).put(12, 4).put(199796, 20).text("TC6163", 7).put(0, 9).put(15, 9).put(0, 6);
-  return p.put(5, 6).put(0, 6);
-}
-
-PayloadBuilder longRange(long long lon, long long lat, int sog, int cog) {
-  PayloadBuilder p;
-  p.put(27, 6).put(1, 2).put(206914217, 30).put(0, 1).put(0, 1).put(2, 4).put(lon, 18).put(lat, 17);
-  return p.put(sog, 6).put(cog, 9).put(0, 1).put(0, 1);
-}
 
 std::optional<AisMessage> decodeOne(const std::string& line, AisCounters* counters = nullptr) {
   AisDecoder d;

@@ -109,10 +109,15 @@ void classBExtended(const AisBits& b, AisMessage& m) {
 
 void aidToNavigation(const AisBits& b, AisMessage& m) {
   m.aidType = static_cast<int>(b.u(38, 5));
-  // The name's last 14 characters are in the extension after bit 272 (as many as the payload holds).
+  // The name's last 14 characters are in the extension after bit 272 (as many as the payload holds),
+  // which follows the first 20 as they are, spaces included, when those run to the end ('@'-free).
   m.name = b.text(43, 20);
-  if (m.name.size() == 20 && b.size() >= 278)
-    m.name += b.text(272, std::min<std::size_t>(14, (b.size() - 272) / 6));
+  bool full = true;
+  for (std::size_t i = 0; i < 20; ++i) full = full && b.u(43 + 6 * i, 6) != 0;
+  if (full && b.size() >= 278) {
+    const std::string extension = b.text(272, std::min<std::size_t>(14, (b.size() - 272) / 6));
+    if (!extension.empty()) m.name = m.name + std::string(20 - m.name.size(), ' ') + extension;
+  }
   m.accuracy = b.u(163, 1) != 0;
   position(b, 164, 28, 600000.0, m);
   dimensions(b, 219, m);

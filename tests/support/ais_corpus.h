@@ -103,7 +103,7 @@ inline PayloadBuilder classB(int type) {
   PayloadBuilder p;
   p.put(type, 6).put(0, 2).put(338087471, 30).put(0, 8).put(1, 10).put(0, 1).put(-44443279, 28);
   p.put(24410724, 27).put(796, 12).put(511, 9).put(49, 6);
-  if (type == 18) return p.put(0, 2).put(0x3f, 6).put(0, 20);
+  if (type == 18) return p.put(0, 2).put(0x3f, 6).put(0, 1).put(0, 20);  // 168 bits
   p.put(0, 4).text("CAPT.J.RIMES", 20).put(70, 8).put(5, 9).put(21, 9).put(4, 6).put(4, 6).put(1, 4);
   return p.put(0, 1).put(0, 1).put(0, 1).put(0, 4);
 }

@@ -12,6 +12,10 @@ if(NOT TARGET reckoner::GeographicLib)
     INTERFACE_LINK_LIBRARIES "${GeographicLib_LIBRARIES}")
 endif()
 
+if(RECKONER_FUZZ)  # core/ alone: no Qt, no GDAL
+  return()
+endif()
+
 # Widgets, Charts and GDAL are for ui/ and charts/; finding them already makes every configure prove
 # that the bootstrap installs them (Debian's Qt6 Charts also needs libqt6opengl6-dev and
 # libxkbcommon-dev, a known trap).

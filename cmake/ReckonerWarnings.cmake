@@ -11,3 +11,8 @@ if(RECKONER_SANITIZE)
                                                      -fno-sanitize-recover=undefined)
   target_link_options(reckoner_warnings INTERFACE -fsanitize=address,undefined)
 endif()
+if(RECKONER_FUZZ)
+  target_compile_options(reckoner_warnings INTERFACE -fsanitize=fuzzer-no-link,address,undefined
+                                                     -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_link_options(reckoner_warnings INTERFACE -fsanitize=address,undefined)
+endif()

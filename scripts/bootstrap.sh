@@ -5,6 +5,7 @@
 #   scripts/bootstrap.sh test   # install, build, run the whole test suite (ctest, Qt on offscreen)
 #   scripts/bootstrap.sh deps   # only install the Debian packages
 #   scripts/bootstrap.sh build  # install and build
+#   scripts/bootstrap.sh fuzz   # install clang and libFuzzer, build the fuzz targets (docs/robustness.md)
 #
 # Environment: RECKONER_PRESET (default: ci = Release with warnings as errors), RECKONER_JOBS.
 set -euo pipefail
@@ -24,9 +25,13 @@ packages=(
   gpsd-clients  # gpsdecode, the independent AIS oracle of tests/app/tst_ais_cli.cpp (docs/ais.md)
 )
 
+# The fuzz targets only: clang's libFuzzer runtime is in libclang-rt-14-dev, which clang merely
+# recommends, so it is named.
+fuzz_packages=(clang libclang-rt-14-dev)
+
 install_deps() {
   local missing=() p
-  for p in "${packages[@]}"; do
+  for p in "${packages[@]}" "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
@@ -61,5 +66,10 @@ case "$action" in
     install_deps; build
     QT_QPA_PLATFORM=offscreen ctest --preset "$preset" -j "$jobs"
     ;;
-  *) echo "usage: scripts/bootstrap.sh run|test|deps|build" >&2; exit 2 ;;
+  fuzz)
+    install_deps "${fuzz_packages[@]}"
+    cmake --preset fuzz >/dev/null
+    cmake --build --preset fuzz -j "$jobs"
+    ;;
+  *) echo "usage: scripts/bootstrap.sh run|test|deps|build|fuzz" >&2; exit 2 ;;
 esac

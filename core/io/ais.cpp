@@ -84,7 +84,7 @@ AisLineResult parseAisSentence(std::string_view line, AisSentence& out) {
   std::string_view body;
   if (!checksumOk(start.substr(1), body)) return AisLineResult::BadChecksum;
   const auto f = splitFields(body);
-  if (f.size() != 7) return AisLineResult::Malformed;
+  if (f.size() != 7 || f[0].size() != 5) return AisLineResult::Malformed;  // e.g. "!M,VDO,..."
   out.talker = std::string(f[0].substr(0, 2));
   out.own = f[0].substr(2) == "VDO";
   out.total = digit(f[1], 1, 9);

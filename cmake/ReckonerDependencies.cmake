@@ -20,6 +20,8 @@ endif()
 # that the bootstrap installs them (Debian's Qt6 Charts also needs libqt6opengl6-dev and
 # libxkbcommon-dev, a known trap).
 find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets Charts Test)
+# The live connections (connections/): sockets and serial ports (Debian qt6-base-dev, qt6-serialport-dev).
+find_package(Qt6 6.4 REQUIRED COMPONENTS Network SerialPort)
 # The alerts' audible signal (ui/panels/alert_sound.cpp): Qt Multimedia where it is installed (the
 # bootstrap installs Debian's qt6-multimedia-dev); without it the window is silent.
 find_package(Qt6 6.4 QUIET COMPONENTS Multimedia)

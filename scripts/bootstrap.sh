@@ -22,6 +22,10 @@ packages=(
   qt6-base-dev qt6-charts-dev qt6-multimedia-dev libqt6opengl6-dev libxkbcommon-dev qt6-qpa-plugins
   libgdal-dev gdal-bin zlib1g-dev libbenchmark-dev libcli11-dev python3
   gmt-gshhg-low  # GSHHG shorelines (LGPL data), read at run time for the world background (docs/charts.md)
+  qt6-serialport-dev libqt6serialport6  # serial sources of connections/ (QSerialPort; docs/connections.md)
+  gpsd  # the real gpsd that tests/connections/tst_connection_devices.cpp connects a gpsd source to
+  socat  # pseudo-terminal pairs for the serial source tests (tests/connections/)
+  clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz/; the runtime is only a recommendation of clang)
   gpsd-clients  # gpsdecode, the independent AIS oracle of tests/app/tst_ais_cli.cpp (docs/ais.md)
 )
 

@@ -28,7 +28,7 @@ import re
 import sys
 
 ROOT = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).resolve().parent.parent)
-SOURCE_DIRS = ["app", "core", "charts", "ui"]
+SOURCE_DIRS = ["app", "core", "charts", "connections", "ui"]
 MAX_FILE_LINES = 600
 # Tests that score the project against an independent reference with no code of core/, not even its
 # constants (see their header comments); the unit-literal rule does not apply to them.
@@ -99,6 +99,8 @@ def include_target(inc, diagrams):
     parts = inc.split("/")
     if len(parts) < 2:
         return None
+    if parts[0] == "connections":
+        return "connections", "."
     if parts[0] in ("ui", "charts"):
         return parts[0], (parts[1] if len(parts) > 2 else ".")
     if parts[0] == "resources":
@@ -159,6 +161,8 @@ def check_libraries():
     rules = [
         (re.compile(r"^<Q"), lambda rel: rel.parts[0] == "core", "Qt in core/"),
         (re.compile(r"^<(gdal|ogr|cpl_)"), lambda rel: rel.parts[:2] != ("charts", "s57"), "GDAL outside charts/s57/"),
+        (re.compile(r"^<(QtGui|QtWidgets|QWidget|QPainter|QImage|QApplication|QGuiApplication)"),
+         lambda rel: rel.parts[0] == "connections", "Qt Gui or Widgets in connections/"),
         (re.compile(r"^<QtCharts|^<QChart|^<QLineSeries|^<QValueAxis"), lambda rel: rel.parts[:2] != ("ui", "plots"),
          "Qt Charts outside ui/plots/"),
     ]

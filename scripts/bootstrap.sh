@@ -25,7 +25,6 @@ packages=(
   qt6-serialport-dev libqt6serialport6  # serial sources of connections/ (QSerialPort; docs/connections.md)
   gpsd  # the real gpsd that tests/connections/tst_connection_devices.cpp connects a gpsd source to
   socat  # pseudo-terminal pairs for the serial source tests (tests/connections/)
-  clang libclang-rt-14-dev  # libFuzzer targets (tests/fuzz/; the runtime is only a recommendation of clang)
   gpsd-clients  # gpsdecode, the independent AIS oracle of tests/app/tst_ais_cli.cpp (docs/ais.md)
 )
 

@@ -27,5 +27,6 @@ void addManoeuvreCommand(CLI::App& root, Commands& out);  // manoeuvre-report (m
 void addChartCommands(CLI::App& root, Commands& out);     // chart info|render|pick (chart_commands.cpp)
 void addScenarioCommands(CLI::App& root, Commands& out);  // validate, scenarios (scenario_commands.cpp)
 void addAisCommands(CLI::App& root, Commands& out);       // ais decode (ais_commands.cpp)
+void addLiveCommands(CLI::App& root, Commands& out);      // live (live_commands.cpp)
 
 }  // namespace reckoner::cli

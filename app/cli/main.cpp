@@ -117,8 +117,9 @@ int run(int argc, char** argv) {
                             ")",
                         "Print the version of reckoner-cli and of the libraries it runs on, and exit");
   Commands commands;
-  for (const auto add : {addRunCommands, addReplayCommands, addStudyCommands, addImoCommand, addSeedCommands,
-                         addManoeuvreCommand, addChartCommands, addScenarioCommands, addAisCommands})
+  for (const auto add :
+       {addRunCommands, addReplayCommands, addStudyCommands, addImoCommand, addSeedCommands,
+        addManoeuvreCommand, addChartCommands, addScenarioCommands, addAisCommands, addLiveCommands})
     add(root, commands);
   for (const auto& c : commands) c.app->allow_extras();
   root.footer(kFooter);  // after the commands: theirs would inherit it

@@ -1,0 +1,191 @@
+// live: NMEA 0183, AIS and radar plots from live connections (UDP, TCP, serial, gpsd, a file played in
+// real time) through the replay's engine as they arrive (sim/live_session.h), written to the replay's
+// ownship.csv, targets.csv and summary.json plus ais.csv (docs/outputs.md, "Live input"), until SIGINT,
+// SIGTERM, --duration or, with files alone, their end.
+#include <QCoreApplication>
+#include <QSocketNotifier>
+#include <QTimer>
+
+#include <unistd.h>
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cli/cli_options.h"
+#include "cli/commands.h"
+#include "cli/replay_settings.h"
+#include "connection_hub.h"
+#include "files/live_output.h"
+#include "io/input_error.h"
+#include "sim/live_session.h"
+#include "source_config.h"
+
+namespace reckoner::cli {
+namespace {
+
+struct LiveArgs {
+  std::vector<std::string> udp, tcp, serial, gpsd, file, source, radarUdp, radarTcp;
+  std::optional<double> durationS;
+  double reorderHorizonS = 1.0;
+  double statusIntervalS = 1.0;
+  double fileRate = 1.0;
+  ReplaySettings settings;
+  OutputArgs output;
+};
+
+// SIGINT / SIGTERM end the run through a pipe the event loop watches (the handler only writes a byte).
+int stopPipe[2] = {-1, -1};
+extern "C" void onStopSignal(int) {
+  const char c = 's';
+  [[maybe_unused]] const auto n = ::write(stopPipe[1], &c, 1);
+}
+
+/// The sources of the command line, each named (the spec's name= or kind and number) and unique.
+std::vector<conn::SourceConfig> sourcesOf(const LiveArgs& a) {
+  std::vector<conn::SourceConfig> out;
+  std::set<std::string> names;
+  const auto add = [&](const std::string& spec, const std::string& name, bool radar) {
+    conn::SourceConfig c = conn::parseSource(spec);  // std::invalid_argument naming the spec's field
+    if (spec.find("name=") == std::string::npos) c.name = name;
+    if (radar) c.role = conn::Role::Radar;
+    if (!names.insert(c.name).second) throw UsageError("two sources are named " + c.name);
+    out.push_back(c);
+  };
+  int n = 0;
+  const auto name = [&n](const char* kind) { return std::string(kind) + std::to_string(++n); };
+  for (const auto& p : a.udp) add("udp://:" + p, name("udp"), false);
+  for (const auto& p : a.tcp) add("tcp://" + p, name("tcp"), false);
+  for (const auto& p : a.serial) add("serial://" + p, name("serial"), false);
+  for (const auto& p : a.gpsd) add("gpsd://" + p, name("gpsd"), false);
+  for (const auto& p : a.file) add("file://" + p + "?rate=x" + numberText(a.fileRate), name("file"), false);
+  for (const auto& s : a.source) add(s, name("source"), false);
+  for (const auto& p : a.radarUdp) add("udp://:" + p, name("radar"), true);
+  for (const auto& p : a.radarTcp) add("tcp://" + p, name("radar"), true);
+  if (out.empty())
+    throw UsageError("live needs at least one source (--udp, --tcp, --serial, --gpsd, --file or --source)");
+  return out;
+}
+
+int liveCommand(const LiveArgs& a) {
+  const std::vector<conn::SourceConfig> sources = sourcesOf(a);
+  bool radar = false;
+  for (const auto& c : sources) radar = radar || c.role == conn::Role::Radar;
+  sim::LiveOptions lo;
+  lo.replay = replayOptions(a.settings);
+  lo.name = "live";
+  lo.reorderHorizonS = a.reorderHorizonS;
+  lo.radar = radar;
+  const std::string out = prepareOutDir(a.output);
+  sim::LiveSession session(lo);
+  files::LiveOutputWriter writer(out, radar);
+
+  int argc = 1;
+  char arg0[] = "reckoner-cli";
+  char* argv[] = {arg0, nullptr};
+  QCoreApplication app(argc, argv);
+  if (::pipe(stopPipe) != 0) throw std::runtime_error("cannot make the signal pipe");
+  std::signal(SIGINT, onStopSignal);
+  std::signal(SIGTERM, onStopSignal);
+  QSocketNotifier stopNotifier(stopPipe[0], QSocketNotifier::Read);
+  QObject::connect(&stopNotifier, &QSocketNotifier::activated, &app, [&app] { app.quit(); });
+
+  conn::ConnectionHub hub;
+  for (const auto& c : sources) hub.add(c);
+  long lines = 0, radarLines = 0;
+  std::string lastError;
+  const auto consume = [&] {
+    for (const conn::ReceivedLine& l : hub.take()) {
+      if (l.role == conn::Role::Radar) {
+        session.radar(l.line, l.receivedUtc);
+        ++radarLines;
+      } else {
+        session.nmea(l.line, l.receivedUtc, l.source);
+        ++lines;
+      }
+    }
+    writer.append(session);
+  };
+  QObject::connect(&hub, &conn::ConnectionHub::linesAvailable, &app, [&] {
+    try {
+      consume();
+    } catch (const std::exception& e) {  // an output that cannot be written: stop, report it
+      lastError = e.what();
+      app.quit();
+    }
+  });
+  QTimer status;
+  QObject::connect(&status, &QTimer::timeout, &app, [&] {
+    std::fprintf(stderr,
+                 "live: %ld lines, %ld radar lines, %ld own-ship rows, %ld track rows, %ld AIS messages",
+                 lines, radarLines, writer.ownRows(), writer.trackRows(), writer.aisRows());
+    for (const conn::SourceStatus& s : hub.status())
+      std::fprintf(stderr, "; %s %s %llu lines", s.name.c_str(), conn::stateName(s.state),
+                   static_cast<unsigned long long>(s.lines));
+    std::fputc('\n', stderr);
+  });
+  // A run of files alone ends when every file has been played to its end.
+  const bool filesOnly =
+      std::all_of(sources.begin(), sources.end(), [](const auto& c) { return c.kind == conn::Kind::File; });
+  QObject::connect(&hub, &conn::ConnectionHub::stateChanged, &app, [&] {
+    const auto st = hub.status();
+    if (filesOnly &&
+        std::all_of(st.begin(), st.end(), [](const auto& s) { return s.state == conn::State::Finished; }))
+      app.quit();
+  });
+  if (a.statusIntervalS > 0) status.start(static_cast<int>(a.statusIntervalS * 1000.0));
+  if (a.durationS) QTimer::singleShot(static_cast<int>(*a.durationS * 1000.0), &app, [&app] { app.quit(); });
+  hub.start();
+  app.exec();
+  hub.stop();
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (!lastError.empty()) throw std::runtime_error(lastError);
+  consume();
+  session.finish();
+  writer.finish(session, "live");
+  for (const auto& w : session.result().warnings)
+    std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
+  if (wantsTable(a.output))
+    std::printf(
+        "Reckoner live: %ld lines, %ld radar lines; wrote %ld own-ship rows, %ld track rows, %ld AIS "
+        "messages to %s\n",
+        lines, radarLines, writer.ownRows(), writer.trackRows(), writer.aisRows(), out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+void addLiveCommands(CLI::App& root, Commands& out) {
+  auto a = std::make_shared<LiveArgs>();
+  CLI::App* app = root.add_subcommand(
+      "live",
+      "live NMEA 0183, AIS and radar plots through the DRKF and the trackers, until SIGINT or --duration");
+  app->add_option("--udp", a->udp, "NMEA over UDP on this local port (repeatable)")->type_name("PORT");
+  app->add_option("--tcp", a->tcp, "NMEA from a TCP server, reconnecting when it goes away")
+      ->type_name("HOST:PORT");
+  app->add_option("--serial", a->serial, "NMEA from a serial port, default 4800 baud")
+      ->type_name("DEV[:BAUD]");
+  app->add_option("--gpsd", a->gpsd, "the NMEA a gpsd relays (its watch protocol)")->type_name("HOST:PORT");
+  app->add_option("--file", a->file, "a recording played at its own pace (--file-rate)")->type_name("PATH");
+  app->add_option("--source", a->source, "any source spec (docs/connections.md)")->type_name("SPEC");
+  app->add_option("--radar-udp", a->radarUdp, "radar plots (radar CSV rows) over UDP")->type_name("PORT");
+  app->add_option("--radar-tcp", a->radarTcp, "radar plots (radar CSV rows) from a TCP server")
+      ->type_name("HOST:PORT");
+  addReal(*app, "file-rate", a->fileRate, 0.01, 1e6, "X",
+          "--file played this many times faster than real time");
+  addReal(*app, "duration", a->durationS, 0.001, 1e9, "S", "stop after this many seconds (default: SIGINT)");
+  addReal(*app, "reorder-horizon", a->reorderHorizonS, 0.0, 60.0, "S",
+          "hold sentences this long for ones that arrive out of order, seconds");
+  addReal(*app, "status-interval", a->statusIntervalS, 0.0, 3600.0, "S",
+          "a status line on stderr this often, seconds (0: none)");
+  addReplaySettings(*app, a->settings);
+  addOutputOptions(*app, a->output, Summary::None,
+                   "ownship.csv, summary.json, ais.csv, targets.csv with radar");
+  out.push_back({app, [a] { return liveCommand(*a); }, "live takes no positional arguments"});
+}
+
+}  // namespace reckoner::cli

@@ -61,6 +61,11 @@ Source::Source(std::shared_ptr<Slot> slot, HubCore& core, const HubOptions& opti
   });
 }
 
+Source::~Source() {
+  framer_.reset();
+  publishCounters();
+}
+
 void Source::start() {
   core_.setState(*slot_, State::Connecting);
   open();

@@ -113,6 +113,8 @@ void HubCore::noteConnected(Slot& slot) {
   {
     std::lock_guard lock(mutex_);
     ++slot.status.connects;
+    slot.rateStart = std::chrono::steady_clock::now();
+    slot.rateLines = 0;
   }
   setState(slot, State::Connected);
 }

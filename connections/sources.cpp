@@ -4,6 +4,7 @@
 #include <QHostAddress>
 #include <QNetworkDatagram>
 #include <QNetworkInterface>
+#include <QNetworkProxy>
 #include <QSerialPort>
 #include <QTcpSocket>
 #include <QTimer>
@@ -61,6 +62,11 @@ Source::Source(std::shared_ptr<Slot> slot, HubCore& core, const HubOptions& opti
   });
 }
 
+Source::~Source() {
+  framer_.reset();
+  publishCounters();
+}
+
 void Source::start() {
   core_.setState(*slot_, State::Connecting);
   open();
@@ -111,6 +117,7 @@ void UdpSource::open() {
   const SourceConfig& c = slot_->config;
   if (!socket_) {
     socket_ = new QUdpSocket(this);
+    socket_->setProxy(QNetworkProxy::NoProxy);
     connect(socket_, &QUdpSocket::readyRead, this, [this] {
       while (socket_->hasPendingDatagrams()) receivedDatagram(socket_->receiveDatagram().data());
     });
@@ -157,6 +164,9 @@ void UdpSource::open() {
 TcpSource::TcpSource(std::shared_ptr<Slot> slot, HubCore& core, const HubOptions& options)
     : Source(std::move(slot), core, options), socket_(new QTcpSocket(this)), connectTimer_(new QTimer(this)) {
   socket_->setReadBufferSize(kSocketBuffer);
+  // Instruments on the bridge LAN are reached directly: no system proxy lookup (libproxy may go to
+  // the network for WPAD) and no HTTP proxy between us and a multiplexer.
+  socket_->setProxy(QNetworkProxy::NoProxy);
   connectTimer_->setSingleShot(true);
   const bool gpsd = slot_->config.kind == Kind::Gpsd;
   connect(connectTimer_, &QTimer::timeout, this, [this] {

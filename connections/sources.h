@@ -27,6 +27,10 @@ namespace conn::detail {
 class Source : public QObject {
  public:
   Source(std::shared_ptr<Slot> slot, HubCore& core, const HubOptions& options);
+  /// Stopping counts the half line buffered, as a disconnect does.
+  ~Source() override;
+  Source(const Source&) = delete;
+  Source& operator=(const Source&) = delete;
   /// Opens (binds, connects); failures are retried with back-off.
   virtual void start();
 

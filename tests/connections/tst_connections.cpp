@@ -232,6 +232,27 @@ class TstConnections : public QObject {
     delete peer;
   }
 
+  void hubAddsEnablesAndRemovesSources() {
+    conn::ConnectionHub hub(fastRetry());
+    const quint16 port = freeUdpPort();
+    hub.add(conn::parseSource("udp://127.0.0.1:" + std::to_string(port) + "?name=a"));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, hub.add(conn::parseSource("udp://:1?name=a")));
+    hub.add(conn::parseSource("udp://127.0.0.1:" + std::to_string(freeUdpPort()) + "?name=b&enabled=0"));
+    QCOMPARE(statusOf(hub, "b").state, conn::State::Disabled);
+    hub.start();
+    QTRY_VERIFY_WITH_TIMEOUT(statusOf(hub, "a").state == conn::State::Connected, kCapMs);
+    QCOMPARE(statusOf(hub, "b").state, conn::State::Disabled);
+    QVERIFY(hub.setEnabled("b", true));
+    QTRY_VERIFY_WITH_TIMEOUT(statusOf(hub, "b").state == conn::State::Connected, kCapMs);
+    QVERIFY(hub.setEnabled("a", false));
+    QCOMPARE(statusOf(hub, "a").state, conn::State::Disabled);
+    QVERIFY(hub.remove("a"));
+    QVERIFY(!hub.remove("a"));
+    QCOMPARE(hub.status().size(), std::size_t{1});
+    hub.stop();
+    QCOMPARE(statusOf(hub, "b").state, conn::State::Stopped);
+  }
+
   void fullQueueDropsTheOldestAndCountsThem() {
     const quint16 port = freeUdpPort();
     conn::HubOptions o = fastRetry();

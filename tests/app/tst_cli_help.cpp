@@ -51,6 +51,13 @@ class TestCliHelp : public QObject {
           "--category base|standard|all", "--safety-contour M", "--out FILE.png", "--repeat K"}},
         {"chart pick", {"PATH", "--at LAT,LON", "--scale N", "--tolerance PX"}},
         {"ais decode", {"FILE", "--json"}},
+        {"live",
+         {"--udp PORT", "--tcp HOST:PORT", "--serial DEV[:BAUD]", "--gpsd HOST:PORT", "--file PATH",
+          "--source SPEC", "--radar-udp PORT", "--radar-tcp HOST:PORT", "--file-rate X", "--duration S",
+          "--reorder-horizon S", "--status-interval S", "--config SCENARIO", "--assume-association",
+          "--max-gap S", "--date YYYY-MM-DD", "--variation DEG", "--profile paper|imo|realistic",
+          "--adaptive-gnss on|off", "--out DIR",
+          "--quiet"}},
         {"validate", {"SCENARIO"}},
         {"scenarios", {}},
     };

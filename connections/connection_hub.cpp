@@ -9,7 +9,7 @@
 #include "hub_core.h"
 #include "sources.h"
 
-namespace conn {
+namespace reckoner::conn {
 
 const char* stateName(State s) {
   switch (s) {
@@ -191,4 +191,4 @@ std::vector<MonitorLine> ConnectionHub::monitor(const MonitorFilter& filter, std
   return core_->monitor(filter, max);
 }
 
-}  // namespace conn
+}  // namespace reckoner::conn

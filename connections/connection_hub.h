@@ -22,7 +22,7 @@
 
 class QThread;
 
-namespace conn {
+namespace reckoner::conn {
 
 using reckoner::UtcUs;
 
@@ -152,4 +152,4 @@ class ConnectionHub : public QObject {
   bool running_ = false;
 };
 
-}  // namespace conn
+}  // namespace reckoner::conn

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace conn::detail {
+namespace reckoner::conn::detail {
 
 namespace {
 
@@ -159,4 +159,4 @@ std::vector<MonitorLine> HubCore::monitor(const MonitorFilter& filter, std::size
   return out;
 }
 
-}  // namespace conn::detail
+}  // namespace reckoner::conn::detail

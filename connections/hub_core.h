@@ -16,7 +16,7 @@
 
 class QObject;
 
-namespace conn::detail {
+namespace reckoner::conn::detail {
 
 struct Slot {
   SourceConfig config;
@@ -61,4 +61,4 @@ class HubCore {
 /// The system clock in UTC microseconds.
 UtcUs nowUtc();
 
-}  // namespace conn::detail
+}  // namespace reckoner::conn::detail

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace conn {
+namespace reckoner::conn {
 
 namespace {
 
@@ -286,4 +286,4 @@ bool sentenceId(const std::string& line, std::string& talker, std::string& type)
   return !type.empty();
 }
 
-}  // namespace conn
+}  // namespace reckoner::conn

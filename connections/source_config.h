@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace conn {
+namespace reckoner::conn {
 
 enum class Kind : std::uint8_t { Udp, Tcp, Serial, Gpsd, File };
 /// What the lines are: NMEA 0183 / AIS sentences, or radar plot CSV rows (docs/outputs.md).
@@ -69,4 +69,4 @@ std::string toSpec(const SourceConfig& c);
 /// block "\...\"); false for a line that is no sentence.
 bool sentenceId(const std::string& line, std::string& talker, std::string& type);
 
-}  // namespace conn
+}  // namespace reckoner::conn

@@ -15,7 +15,7 @@
 
 #include "io/nmea.h"
 
-namespace conn::detail {
+namespace reckoner::conn::detail {
 
 namespace {
 
@@ -137,6 +137,10 @@ void UdpSource::open() {
            State::Error);
     return;
   }
+  // A 10,000 sentence/s feed is about 8 MB/s of kernel buffer accounting on loopback; the default
+  // 208 kB holds some 25 ms of it, so a reader held up for longer loses datagrams the kernel counts
+  // nowhere we can see. 4 MB (Linux caps it at net.core.rmem_max) rides out half a second.
+  socket_->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, 4 * 1024 * 1024);
   if (c.multicast) {
     const QHostAddress group(qs(c.host));
     bool joined = false;
@@ -329,4 +333,4 @@ void FileSource::pump() {
   pace_->start(0);
 }
 
-}  // namespace conn::detail
+}  // namespace reckoner::conn::detail

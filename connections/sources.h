@@ -22,7 +22,7 @@ class QTcpSocket;
 class QSerialPort;
 class QFile;
 
-namespace conn::detail {
+namespace reckoner::conn::detail {
 
 class Source : public QObject {
  public:
@@ -107,4 +107,4 @@ class FileSource final : public Source {
   bool eof_ = false;
 };
 
-}  // namespace conn::detail
+}  // namespace reckoner::conn::detail

@@ -24,6 +24,9 @@
 #include <thread>
 #include <vector>
 
+#include "common/angles.h"
+#include "common/percentile.h"
+#include "common/units.h"
 #include "connection_hub.h"
 #include "io/nmea.h"
 #include "sim/live_session.h"
@@ -46,7 +49,8 @@ double residentMb() {
 int secondOfStream(int s, int perSecond, std::vector<std::string>& out, int& aisMessages) {
   out.clear();
   const int hh = (s / 3600) % 24, mm = (s / 60) % 60, ss = s % 60;
-  const double lonMin = 30.0 + 10.0 * 1852.0 / 3600.0 * s / (1852.0 * std::cos(47.5 * M_PI / 180.0));
+  // a minute of longitude is cos(latitude) nautical miles
+  const double lonMin = 30.0 + knotsToMps(10.0) * s / (kMetresPerNauticalMile * std::cos(degToRad(47.5)));
   const int lonDeg = 122 - static_cast<int>(lonMin / 60.0);
   const double lonM = std::fmod(lonMin, 60.0);
   char b[160];
@@ -74,13 +78,6 @@ int secondOfStream(int s, int perSecond, std::vector<std::string>& out, int& ais
   }
   aisMessages += messages;
   return static_cast<int>(out.size());
-}
-
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(v.size())));
-  return v[std::min(v.size() - 1, rank == 0 ? 0 : rank - 1)];
 }
 
 void BM_LiveFeed10kPerSecond(benchmark::State& state) {
@@ -175,8 +172,8 @@ void BM_LiveFeed10kPerSecond(benchmark::State& state) {
     state.counters["ais_sent"] = aisSent;
     state.counters["ais_decoded"] = static_cast<double>(aisDecoded);
     state.counters["own_rows"] = static_cast<double>(rows);
-    state.counters["batch_p50_ms"] = percentile(batchMs, 0.50);
-    state.counters["batch_p99_ms"] = percentile(batchMs, 0.99);
+    state.counters["batch_p50_ms"] = percentileNearestRank(batchMs, 0.50);
+    state.counters["batch_p99_ms"] = percentileNearestRank(batchMs, 0.99);
     state.counters["batch_max_ms"] =
         batchMs.empty() ? 0.0 : *std::max_element(batchMs.begin(), batchMs.end());
     state.counters["peak_queue"] = static_cast<double>(hub.counters().peakQueued);

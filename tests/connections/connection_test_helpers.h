@@ -11,6 +11,8 @@
 #include "connection_hub.h"
 #include "io/nmea.h"
 
+namespace conn = reckoner::conn;
+
 namespace conn_test {
 
 inline conn::UtcUs nowUtcUs() {

@@ -110,7 +110,7 @@ std::string escapeText(std::string_view text, std::size_t maxChars) {
 }
 
 std::string rmc(std::string_view talker, const RmcOut& v) {
-  const bool valid = v.mode == 'A' || v.mode == 'D';
+  const bool valid = v.mode == 'A' || v.mode == 'D' || v.mode == 'E';
   const std::string lat = nmeaLatitude(v.latDeg), lon = nmeaLongitude(v.lonDeg);
   return sentence(talker, "RMC",
                   {nmeaTime(v.utc), valid ? "A" : "V", lat.substr(0, lat.find(',')),

@@ -34,7 +34,9 @@ struct RmcOut {
   double sogKn = 0, cogTrueDeg = 0;
   char mode = 'A';  ///< A autonomous, D differential, E estimated (dead reckoning), N not valid
 };
-/// $--RMC: status A only for modes A and D (NMEA 0183 3.01: V for every other mode).
+/// $--RMC: status A for modes A, D and E, V for N. NMEA 0183 3.01 asks for V with every mode but A
+/// and D; receivers with dead reckoning (u-blox among them) send A with E instead, and so does Reckoner,
+/// so that plotters keep the dead-reckoned position, flagged estimated by the mode (docs/outputs.md).
 std::string rmc(std::string_view talker, const RmcOut& v);
 
 struct GgaOut {

@@ -152,13 +152,15 @@ std::vector<std::string> NmeaOutput::ownShip(const OwnShipFix& fix) {
   const char mode = fix.deadReckoning ? 'E' : 'A';
   const std::string& talker = options_.ownShipTalker;
   if (options_.ownShip) {
-    out.push_back(nm::rmc(talker, {fix.utcUs, fix.latDeg, fix.lonDeg, fix.sogKn, fix.cogTrueDeg, mode}));
+    // GGA before RMC: a reader that takes GGA's empty satellite count for no fix (gpsd 3.22) has the
+    // RMC's fix last in each cycle.
     nm::GgaOut g;
     g.utc = fix.utcUs;
     g.latDeg = fix.latDeg;
     g.lonDeg = fix.lonDeg;
     g.quality = fix.deadReckoning ? 6 : 1;
     out.push_back(nm::gga(talker, g));
+    out.push_back(nm::rmc(talker, {fix.utcUs, fix.latDeg, fix.lonDeg, fix.sogKn, fix.cogTrueDeg, mode}));
     out.push_back(nm::vtg(talker, {fix.cogTrueDeg, fix.sogKn, mode}));
     if (std::isfinite(fix.headingTrueDeg)) out.push_back(nm::hdt(talker, fix.headingTrueDeg));
     const nm::ErrorEllipse e = nm::errorEllipse(fix.varNorthM2, fix.varEastM2, fix.covNorthEastM2);

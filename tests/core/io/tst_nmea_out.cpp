@@ -46,7 +46,8 @@ class TestNmeaOut : public QObject {
   }
 
   void rmcReadBackWithModeAndStatus() {
-    // GIVEN a fix WHEN encoded with mode A THEN status A; with mode E (dead reckoning) status V.
+    // GIVEN a fix WHEN encoded with mode A THEN status A; with mode E (dead reckoning) status A too, the
+    // mode saying it is no GNSS fix; with N status V.
     const std::string a = rmc("IN", {kUtc, 47.123456789, -122.5, 12.34, 359.996, 'A'});
     const auto f = fieldsOf(a);
     QCOMPARE(f[0], std::string("INRMC"));
@@ -64,9 +65,10 @@ class TestNmeaOut : public QObject {
     QCOMPARE(*r.mode, 'A');
     QVERIFY(gnssFix(r.mode));
     const Rmc e = parsed<Rmc>(rmc("IN", {kUtc, 47.0, 8.0, 5.0, 90.0, 'E'}));
-    QVERIFY(!e.valid);
+    QVERIFY(e.valid);
     QCOMPARE(*e.mode, 'E');
     QVERIFY(!gnssFix(e.mode));
+    QVERIFY(!parsed<Rmc>(rmc("IN", {kUtc, 47.0, 8.0, 5.0, 90.0, 'N'})).valid);
   }
 
   void ggaQuality() {

@@ -22,6 +22,8 @@ packages=(
   libgdal-dev gdal-bin zlib1g-dev libbenchmark-dev libcli11-dev python3
   gmt-gshhg-low  # GSHHG shorelines (LGPL data), read at run time for the world background (docs/charts.md)
   gpsd-clients  # gpsdecode, the independent AIS oracle of tests/app/tst_ais_cli.cpp (docs/ais.md)
+  gpsd  # a real gpsd reads Reckoner's NMEA output in tests/connections/tst_nmea_destination.cpp
+  socat  # pseudo-terminal pairs: serial lines to and from Reckoner in the connection tests (issue 19)
 )
 
 install_deps() {

@@ -25,6 +25,9 @@ packages=(
   gpsd  # a real gpsd reads Reckoner's NMEA output in tests/connections/tst_nmea_destination.cpp
   socat  # pseudo-terminal pairs: serial lines to and from Reckoner in the connection tests (issue 19)
 )
+# Node.js and npm run the Signal K project's NMEA 0183 parser on Reckoner's output (tests/connections/
+# tst_nmea_signalk.cpp, its package pinned in tests/support/signalk/); Debian's only where no node is.
+command -v node >/dev/null || packages+=(nodejs npm)
 
 install_deps() {
   local missing=() p

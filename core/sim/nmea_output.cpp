@@ -148,7 +148,6 @@ std::vector<std::string> NmeaOutput::ownShip(const OwnShipFix& fix) {
     return out;
   }
   lastOwnUtc_ = fix.utcUs;
-  lastOwn_ = fix;
   const char mode = fix.deadReckoning ? 'E' : 'A';
   const std::string& talker = options_.ownShipTalker;
   if (options_.ownShip) {

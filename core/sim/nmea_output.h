@@ -104,7 +104,6 @@ class NmeaOutput {
   NmeaOutputOptions options_;
   NmeaOutputCounters counters_;
   std::optional<UtcUs> lastOwnUtc_, lastSweepUtc_;
-  std::optional<OwnShipFix> lastOwn_;
   std::map<int, int> numbers_;  ///< track id -> target number
   int nextNumber_ = 1;
   std::map<alerts::AlertId, Sent> sent_;

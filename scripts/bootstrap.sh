@@ -26,7 +26,12 @@ packages=(
   gpsd  # the real gpsd that tests/connections/tst_connection_devices.cpp connects a gpsd source to
   socat  # pseudo-terminal pairs for the serial source tests (tests/connections/)
   gpsd-clients  # gpsdecode, the independent AIS oracle of tests/app/tst_ais_cli.cpp (docs/ais.md)
+  gpsd  # a real gpsd reads Reckoner's NMEA output in tests/connections/tst_nmea_destination.cpp
+  socat  # pseudo-terminal pairs: serial lines to and from Reckoner in the connection tests (issue 19)
 )
+# Node.js and npm run the Signal K project's NMEA 0183 parser on Reckoner's output (tests/connections/
+# tst_nmea_signalk.cpp, its package pinned in tests/support/signalk/); Debian's only where no node is.
+command -v node >/dev/null || packages+=(nodejs npm)
 
 # The fuzz targets only: clang's libFuzzer runtime is in libclang-rt-14-dev, which clang merely
 # recommends, so it is named.

@@ -8,6 +8,7 @@
 
 #include "cli/cli_options.h"
 #include "cli/commands.h"
+#include "cli/nmea_out.h"
 #include "cli/replay_settings.h"
 #include "common/angles.h"
 #include "common/time.h"
@@ -17,6 +18,7 @@
 #include "io/text_file.h"
 #include "io/text_format.h"
 #include "sim/nmea_export.h"
+#include "sim/nmea_output.h"
 #include "sim/replay.h"
 
 namespace reckoner::cli {
@@ -24,7 +26,7 @@ namespace {
 
 // ---- replay --------------------------------------------------------------------------------------
 struct ReplayArgs {
-  std::optional<std::string> nmea, radar;
+  std::optional<std::string> nmea, radar, nmeaOut;
   ReplaySettings settings;
   OutputArgs output;
 };
@@ -87,6 +89,8 @@ void printReplay(const sim::ReplayResult& r, const ReplayArgs& a, const std::str
 int replayCommand(const ReplayArgs& a) {
   if (!a.nmea) throw UsageError("--nmea FILE is required");
   const sim::ReplayOptions o = replayOptions(a.settings);
+  std::unique_ptr<NmeaSink> sink;
+  if (a.nmeaOut) sink = std::make_unique<NmeaSink>(*a.nmeaOut);
   const std::string out = prepareOutDir(a.output);
   const std::string nmea = io::readTextFile(*a.nmea);
   std::optional<std::string> radar;
@@ -99,6 +103,11 @@ int replayCommand(const ReplayArgs& a) {
   io::writeTextFile(out + "/summary.json", summary);
   printSummary(a.output, summary);
   if (wantsTable(a.output)) printReplay(r, a, out);
+  if (sink) {
+    sink->write(sim::replayNmea(r));
+    const std::string account = sink->finish();
+    if (wantsTable(a.output)) std::printf("  sent %s\n", account.c_str());
+  }
   return 0;
 }
 
@@ -109,6 +118,7 @@ void addReplay(CLI::App& root, Commands& out) {
   addText(*app, "nmea", a->nmea, "FILE", "the NMEA 0183 log, required");
   addText(*app, "radar", a->radar, "FILE.csv", "radar plots (docs/outputs.md, radar.csv)");
   addReplaySettings(*app, a->settings);
+  addNmeaOut(*app, a->nmeaOut);
   addOutputOptions(*app, a->output, Summary::Json, "ownship.csv, summary.json, targets.csv with --radar");
   out.push_back(
       {app, [a] { return replayCommand(*a); }, "replay takes no positional arguments (use --nmea FILE)"});

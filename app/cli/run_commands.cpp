@@ -7,14 +7,18 @@
 
 #include "cli/cli_options.h"
 #include "cli/commands.h"
+#include "cli/nmea_out.h"
 #include "common/time.h"
 #include "files/own_ship_output.h"
 #include "files/track_output.h"
 #include "geo/local_frame.h"
+#include "io/error_line.h"
+#include "io/iso8601.h"
 #include "io/text_file.h"
 #include "io/text_format.h"
 #include "metrics/own_ship_stats.h"
 #include "metrics/track_stats.h"
+#include "sim/nmea_output.h"
 #include "sim/scenario_run.h"
 #include "studies/own_ship_filters.h"
 
@@ -58,6 +62,8 @@ struct RunArgs {
   std::optional<std::uint64_t> seed;
   std::string filter = "drkf";
   std::string profile;
+  std::optional<std::string> nmeaOut;
+  std::string date = "2026-01-01";
   OutputArgs output;
 };
 
@@ -89,11 +95,24 @@ int runCommand(const RunArgs& a) {
   const sim::Scenario s = loadProfiled(a.scenario, a.profile);
   const std::uint64_t seed = a.seed.value_or(s.seed);
   const studies::OwnShipFilter filter = *studies::ownShipFilterFromName(a.filter);
+  const auto utc0 = io::parseIso8601(a.date + "T00:00:00Z");
+  if (!utc0) throw UsageError("--date: expected YYYY-MM-DD, got " + io::quoted(a.date));
+  if (a.nmeaOut && filter != studies::OwnShipFilter::Drkf)
+    throw UsageError("--nmea-out sends the DRKF's estimate: use it with --own-ship-filter drkf");
+  std::unique_ptr<NmeaSink> nmea;
+  if (a.nmeaOut) nmea = std::make_unique<NmeaSink>(*a.nmeaOut);
   const std::string out = prepareOutDir(a.output);
 
   // The DRKF always runs (it feeds the trackers); seed 002's filters beside it when chosen.
   sim::RunResult run;
-  if (filter == studies::OwnShipFilter::Drkf) {
+  if (nmea) {
+    sim::RunNmeaOutput sentences(s, *utc0);
+    run = sim::runScenario(
+        s, seed,
+        [&](const sim::SimFrame& f, const sim::OwnShipRow& row, std::span<const sim::TrackRow> tracks) {
+          nmea->write(sentences.frame(f, row, tracks));
+        });
+  } else if (filter == studies::OwnShipFilter::Drkf) {
     run = sim::runScenario(s, seed);
   } else {
     studies::OwnShipFilterRun both = studies::runOwnShipFilters(s, seed);
@@ -107,6 +126,10 @@ int runCommand(const RunArgs& a) {
   if (s.radar.fitted) files::writeTargetsCsv(out + "/targets.csv", run.trackRows);
   printSummary(a.output, summary);
   if (wantsTable(a.output)) printRun(s, run, seed, filter, phases, out);
+  if (nmea) {
+    const std::string account = nmea->finish();
+    if (wantsTable(a.output)) std::printf("  sent %s\n", account.c_str());
+  }
   return 0;
 }
 
@@ -120,6 +143,10 @@ void addRun(CLI::App& root, Commands& out) {
   addProfile(*app, a->profile,
              "sensor profile: the sensors' noise and the filter's models (default: the "
              "scenario's own figures)");
+  addNmeaOut(*app, a->nmeaOut);
+  addValue(*app, "date", "YYYY-MM-DD",
+           "the UTC day the run starts at midnight of, for --nmea-out's times (default 2026-01-01)",
+           [p = a.get()](const std::string& t) { p->date = t; });
   addOutputOptions(*app, a->output, Summary::Json, "ownship.csv, summary.json, targets.csv with a radar");
   out.push_back({app, [a] { return runCommand(*a); }, "run needs exactly one SCENARIO"});
 }

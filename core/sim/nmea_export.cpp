@@ -7,21 +7,12 @@
 #include "common/units.h"
 #include "io/iso8601.h"
 #include "io/nmea.h"
+#include "io/nmea_out.h"
 
 namespace reckoner::sim {
 namespace {
-std::string angleField(double deg, int degDigits, char pos, char neg) {
-  const double a = std::abs(deg);
-  int d = static_cast<int>(std::floor(a));
-  double m = (a - d) * 60.0;
-  if (m >= 59.9999995) {  // would print as 60.000000
-    m = 0.0;
-    ++d;
-  }
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%0*d%09.6f,%c", degDigits, d, m, deg < 0 ? neg : pos);
-  return buf;
-}
+using io::nmea::nmeaLatitude;
+using io::nmea::nmeaLongitude;
 
 std::string hhmmss(UtcUs t) {
   const std::string iso = io::formatIso8601(t);  // YYYY-MM-DDThh:mm:ss.ffffffZ
@@ -29,17 +20,9 @@ std::string hhmmss(UtcUs t) {
 }
 
 std::string ddmmyy(UtcUs t) {
-  const std::string iso = io::formatIso8601(t);
-  return iso.substr(8, 2) + iso.substr(5, 2) + iso.substr(2, 2);
+  return io::nmea::nmeaDate(t);
 }
 }  // namespace
-
-std::string nmeaLatitude(double latDeg) {
-  return angleField(latDeg, 2, 'N', 'S');
-}
-std::string nmeaLongitude(double lonDeg) {
-  return angleField(lonDeg, 3, 'E', 'W');
-}
 
 ExportedRun exportRun(const Scenario& s, std::uint64_t seed, UtcUs utc0) {
   ExportedRun out;

@@ -19,8 +19,4 @@ struct ExportedRun {
 /// Runs the scenario with the seed; time zero is utc0.
 ExportedRun exportRun(const Scenario& s, std::uint64_t seed, UtcUs utc0);
 
-/// NMEA ddmm.mmmmmm,N / dddmm.mmmmmm,E fields.
-std::string nmeaLatitude(double latDeg);
-std::string nmeaLongitude(double lonDeg);
-
 }  // namespace reckoner::sim

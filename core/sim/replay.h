@@ -113,6 +113,7 @@ struct ReplayOwnRow {
   CalibrationEstimate calibration;
   std::string sensors;  ///< the sensors of the epoch's samples
   int rowsApplied = 0;
+  bool deadReckoning = false;  ///< no recent position fix (nav::DeadReckoningMonitor's rule)
 };
 
 struct ReplayResult {

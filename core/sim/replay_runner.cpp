@@ -220,6 +220,8 @@ void Runner::ownShip(const Epoch& e) {
   r.calibration = calibrationOf(drkf_->belief(), config_.process);
   r.sensors = samples.empty() ? "none" : labelOf(samples);
   r.rowsApplied = rep.dim;
+  deadReckoning_.addEpoch(rep);
+  r.deadReckoning = deadReckoning_.evaluate(t).active;
   res_.own.push_back(r);
   if (failedEpochs_ >= kFailedEpochsBeforeRestart) {
     stop();
@@ -257,6 +259,7 @@ void Runner::closeSweepsUntil(TimeUs t) {
       res_.tracks.push_back(trackEstimateRow(*nextSweepEnd_, tr.id, tr.tag(), tr.status, tr.dangerous, b,
                                              track::kinematicsOf(b, gamma), tr.lastRadar.nis, frame_));
       res_.tracks.back().manoeuvring = tr.manoeuvring;
+      res_.tracks.back().manual = tr.manual;
       res_.trackRowUtc.push_back(res_.utc0 + *nextSweepEnd_);
     }
     *nextSweepEnd_ += sweepUs_;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "estimation/nis_window.h"
+#include "navigation/dead_reckoning_monitor.h"
 #include "navigation/drkf.h"
 #include "sim/replay.h"
 #include "sim/replay_input.h"
@@ -68,6 +69,7 @@ class Runner {
   TimeUs sweepUs_, maxGapUs_;
   std::optional<TimeUs> nextSweepEnd_, lastEpochUs_;
   nav::DrkfNisWindows nis_{};
+  nav::DeadReckoningMonitor deadReckoning_;
   bool restarted_ = false;
   int failedEpochs_ = 0;
 };

@@ -32,16 +32,27 @@ GroundEstimate groundEstimateOf(const est::drkf::Belief& b, const geo::LocalFram
   const est::Vec<4> g = nav::groundStateOf(b);
   const est::Mat<4> C = nav::groundCovarianceOf(b);
   const geo::GeoPoint ll = geo.toGeodetic({g[0], g[1]});
-  return {g[0],
-          g[1],
-          g[2],
-          g[3],
-          std::sqrt(C(0, 0)),
-          std::sqrt(C(1, 1)),
-          std::sqrt(C(2, 2)),
-          std::sqrt(C(3, 3)),
-          ll.latDeg,
-          ll.lonDeg};
+  GroundEstimate e;
+  e.xM = g[0];
+  e.yM = g[1];
+  e.vxMps = g[2];
+  e.vyMps = g[3];
+  e.sdXM = std::sqrt(C(0, 0));
+  e.sdYM = std::sqrt(C(1, 1));
+  e.sdVxMps = std::sqrt(C(2, 2));
+  e.sdVyMps = std::sqrt(C(3, 3));
+  e.latDeg = ll.latDeg;
+  e.lonDeg = ll.lonDeg;
+  e.covXYM2 = C(0, 1);
+  e.headingRad = headingOf(b);
+  return e;
+}
+
+double headingOf(const est::drkf::Belief& b) {
+  using namespace est::drkf;
+  const double vx = b.x[kVelX], vy = b.x[kVelY];
+  if (!(std::hypot(vx, vy) >= kMinHeadingSpeedMps)) return kNan;
+  return wrapTwoPi(bearingOf(vx, vy));
 }
 
 OwnShipRow groundRow(const SimFrame& f, const est::Gaussian<4>& g, const geo::LocalFrame& geo) {
@@ -64,12 +75,17 @@ OwnShipRow groundRow(const SimFrame& f, const est::Gaussian<4>& g, const geo::Lo
   r.estLonDeg = ll.lonDeg;
   r.nees = est::nees<4>(est::Vec<4>(r.trueXM, r.trueYM, r.trueVxMps, r.trueVyMps) - g.x, g.P);
   r.sensors = f.sensors;
+  r.covXYM2 = g.P(0, 1);
+  r.deadReckoning = f.deadReckoning.active;
   return r;
 }
 
 OwnShipRow makeRow(const SimFrame& f, const geo::LocalFrame& geo, const est::drkf::ProcessParams& process) {
   OwnShipRow r = groundRow(f, {nav::groundStateOf(f.estimate), nav::groundCovarianceOf(f.estimate)}, geo);
   r.nees = nav::drkfNees(f.trueState - f.estimate.x, f.estimate.P, process);
+  r.estHeadingRad = headingOf(f.estimate);
+  r.estCurrentXMps = f.estimate.x[est::drkf::kCurX];
+  r.estCurrentYMps = f.estimate.x[est::drkf::kCurY];
   for (const auto& u : f.updates) r.rowsApplied += u.dim;
   return r;
 }
@@ -128,6 +144,8 @@ TrackRow trackEstimateRow(TimeUs t, int trackId, int targetId, track::TrackStatu
   const geo::GeoPoint ll = geo.toGeodetic({r.estXM, r.estYM});
   r.estLatDeg = ll.latDeg;
   r.estLonDeg = ll.lonDeg;
+  r.rangeNm = metresToNm(k.rangeM);
+  r.bearingDeg = radToDeg(wrapTwoPi(k.trueBearingRad));
   r.courseDeg = radToDeg(k.trueCourseRad);
   r.speedKn = mpsToKnots(k.speedMps);
   r.cpaNm = k.cpa.defined ? metresToNm(k.cpa.cpaM) : kNan;
@@ -161,6 +179,7 @@ TrackRow trackRow(const SweepSnapshot& sw, const TrackSnapshot& t, const std::ve
   TrackRow r = trackEstimateRow(sw.timeUs, t.trackId, t.targetId, t.status, t.dangerous, t.estimate,
                                 t.kinematics, t.lastNis, geo);
   r.manoeuvring = t.manoeuvring;
+  r.manual = t.manual;
   std::size_t i = 0;
   while (i < targets.size() && targets[i].id != t.targetId) ++i;
   if (t.targetId < 0 || i >= targets.size() || i >= sw.targets.size()) return r;

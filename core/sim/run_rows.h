@@ -3,6 +3,7 @@
 // as plain values against the truth. The one row builder: the headless runs write these rows into
 // ownship.csv and targets.csv (runScenario, io/), and the window's worker turns the same rows into
 // what it draws and plots (ui/bridge/simulation_worker.cpp), computing nothing itself.
+#include <limits>
 #include <vector>
 
 #include "estimation/gaussian.h"
@@ -24,6 +25,15 @@ struct OwnShipRow {
   double nees = 0;  ///< the DRKF's NEES over nav::neesStates (11 states with every sensor error modelled)
   SensorStates sensors;
   int rowsApplied = 0;  ///< measurement rows applied during the cycle
+  /// For the NMEA output (sim/nmea_output.h): the position covariance's off-diagonal (grid, m^2); the
+  /// heading (grid, rad: the direction of the velocity through the water; NaN below kMinHeadingSpeedMps
+  /// or for a filter without it); the estimated current (grid, m/s; NaN without one); dead reckoning at
+  /// the row's time (the engine's nav::DeadReckoningMonitor).
+  double covXYM2 = 0;
+  double estHeadingRad = std::numeric_limits<double>::quiet_NaN();
+  double estCurrentXMps = std::numeric_limits<double>::quiet_NaN();
+  double estCurrentYMps = std::numeric_limits<double>::quiet_NaN();
+  bool deadReckoning = false;
 
   [[nodiscard]] double positionErrorM() const;
   [[nodiscard]] double velocityErrorMps() const;
@@ -56,7 +66,15 @@ struct GroundEstimate {
   double xM = 0, yM = 0, vxMps = 0, vyMps = 0;
   double sdXM = 0, sdYM = 0, sdVxMps = 0, sdVyMps = 0;
   double latDeg = 0, lonDeg = 0;
+  double covXYM2 = 0;  ///< the position covariance's off-diagonal, grid m^2
+  /// Grid heading, rad: the direction of the velocity through the water; NaN below kMinHeadingSpeedMps.
+  double headingRad = std::numeric_limits<double>::quiet_NaN();
 };
+/// Below this speed through the water the direction of the DRKF's water velocity is no heading (the
+/// DRKF's own linearisation limit, nav::DrkfConfig::minSpeedMps).
+inline constexpr double kMinHeadingSpeedMps = 0.5;
+/// The DRKF's heading (grid, rad), NaN below kMinHeadingSpeedMps.
+double headingOf(const est::drkf::Belief& b);
 GroundEstimate groundEstimateOf(const est::drkf::Belief& b, const geo::LocalFrame& geo);
 
 /// One track at the end of one radar sweep (targets.csv's columns). Truth columns are filled when the
@@ -75,11 +93,13 @@ struct TrackRow {
   double sdXM = 0, sdYM = 0, sdVxMps = 0, sdVyMps = 0;
   double estLatDeg = 0, estLonDeg = 0;
   double courseDeg = 0, speedKn = 0;
-  double cpaNm = 0, tcpaMin = 0;     ///< NaN when there is no relative motion
-  double nees = 0;                   ///< all 12 TTKF states (own ship and target); NaN without truth
-  double positionVelocityNees4 = 0;  ///< target x, y, vx, vy (4 dof); NaN without truth
-  double nis = 0;                    ///< of the last radar update
-  bool manoeuvring = false;          ///< the track's manoeuvre flag (ekf-ie, imm)
+  double cpaNm = 0, tcpaMin = 0;       ///< NaN when there is no relative motion
+  double nees = 0;                     ///< all 12 TTKF states (own ship and target); NaN without truth
+  double positionVelocityNees4 = 0;    ///< target x, y, vx, vy (4 dof); NaN without truth
+  double nis = 0;                      ///< of the last radar update
+  bool manoeuvring = false;            ///< the track's manoeuvre flag (ekf-ie, imm)
+  bool manual = false;                 ///< acquired by the operator
+  double rangeNm = 0, bearingDeg = 0;  ///< from own ship's estimate, true (track::TrackKinematics)
 
   [[nodiscard]] double positionErrorM() const;
   [[nodiscard]] double velocityErrorMps() const;

@@ -12,6 +12,10 @@
 namespace reckoner::sim {
 
 RunResult runScenario(const Scenario& scenario, std::uint64_t seed) {
+  return runScenario(scenario, seed, FrameObserver{});
+}
+
+RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameObserver& observer) {
   const auto start = std::chrono::steady_clock::now();
   SimulationEngine engine(scenario, seed);
   RunResult result;
@@ -20,7 +24,10 @@ RunResult runScenario(const Scenario& scenario, std::uint64_t seed) {
   while (!engine.finished()) {
     const SimFrame f = engine.step();
     result.rows.push_back(makeRow(f, engine.frame(), engine.drkf().config().process));
+    const std::size_t tracksBefore = result.trackRows.size();
     appendSweepRows(f, scenario, engine.frame(), result.trackRows, result.targetRows);
+    if (observer)
+      observer(f, result.rows.back(), std::span<const TrackRow>(result.trackRows).subspan(tracksBefore));
   }
   result.counters = engine.drkf().counters();
   result.trackCounters = engine.trackers().counters();

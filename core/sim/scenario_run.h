@@ -3,6 +3,7 @@
 // collect are built in sim/run_rows.h.
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "navigation/dead_reckoning_monitor.h"
@@ -27,6 +28,10 @@ struct RunResult {
 
 /// Runs the scenario to its end with the given seed. Throws std::invalid_argument for a bad scenario.
 RunResult runScenario(const Scenario& scenario, std::uint64_t seed);
+/// Called after each frame with its own-ship row and the track rows of the sweeps that ended in it.
+using FrameObserver = std::function<void(const SimFrame&, const OwnShipRow&, std::span<const TrackRow>)>;
+/// The same run, with every frame shown to `observer` as it is made (e.g. sim::RunNmeaOutput).
+RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameObserver& observer);
 
 /// Calls fn(i) for i in [0, runs) on `threads` worker threads (>= 1); rethrows the first exception
 /// (by index) after all have finished.

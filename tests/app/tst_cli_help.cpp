@@ -27,14 +27,14 @@ class TestCliHelp : public QObject {
     return {
         {"run",
          {"SCENARIO", "--seed N", "--own-ship-filter drkf|geodetic|lsq", "--profile paper|imo|realistic",
-          "--out DIR", "--quiet", "--json"}},
+          "--nmea-out DEST", "--date YYYY-MM-DD", "--out DIR", "--quiet", "--json"}},
         {"montecarlo",
          QStringList{"SCENARIO", "--profile paper|imo|realistic", "--out DIR", "--quiet", "--json"} +
              monteCarlo},
         {"replay",
          {"--nmea FILE", "--radar FILE.csv", "--config SCENARIO", "--assume-association", "--max-gap S",
           "--date YYYY-MM-DD", "--variation DEG", "--profile paper|imo|realistic", "--adaptive-gnss on|off",
-          "--out DIR", "--quiet", "--json"}},
+          "--nmea-out DEST", "--out DIR", "--quiet", "--json"}},
         {"export", {"SCENARIO", "--seed N", "--date YYYY-MM-DD", "--out DIR", "--quiet"}},
         {"compare", QStringList{"SCENARIO", "--targets LIST", "--out DIR", "--quiet"} + monteCarlo},
         {"own-ship-compare", QStringList{"SCENARIO"} + monteCarlo},

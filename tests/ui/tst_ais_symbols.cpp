@@ -90,7 +90,12 @@ class TestAisSymbols : public QObject {
     st.vectorMinutes = 1.0;
     // WHEN they are painted
     const QImage img = render({sleeping, activated, selected, dangerous, lost}, geometry(), st);
-    if (qEnvironmentVariableIsSet("RECKONER_AIS_PNG")) img.save(qEnvironmentVariable("RECKONER_AIS_PNG"));
+    if (qEnvironmentVariableIsSet("RECKONER_AIS_PNG")) {  // and the same 4 times larger, to look at
+      const QString path = qEnvironmentVariable("RECKONER_AIS_PNG");
+      img.save(path);
+      img.scaled(4 * kSize, 4 * kSize, Qt::IgnoreAspectRatio, Qt::FastTransformation)
+          .save(QString(path).replace(QStringLiteral(".png"), QStringLiteral("_x4.png")));
+    }
     auto at = [](const AisSymbol& s, int r) {
       const QPointF c = geometry().toWidget(s.xM, s.yM);
       return QRect(static_cast<int>(c.x()) - r, static_cast<int>(c.y()) - r, 2 * r, 2 * r);

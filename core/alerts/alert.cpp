@@ -19,6 +19,7 @@ constexpr std::array<AlertKindTraits, kAlertKindCount> kTraits{{
     {"POSITION DISCREPANCY", Priority::Warning, true, false},
     {"SENSOR NOISE", Priority::Caution, false, false},
     {"CAPACITY", Priority::Caution, false, false},
+    {"AIS CPA/TCPA", Priority::Alarm, false, false},
 }};
 
 }  // namespace

@@ -23,9 +23,10 @@ enum class AlertKind {
   DeadReckoningLimit,   ///< the dead-reckoned position's 95% radius above the operator's limit
   PositionDiscrepancy,  ///< primary and secondary position sources further apart than a limit
   SensorNoise,          ///< a sensor's innovations larger than its configured noise explains
-  Capacity,             ///< the tracker near its capacity
+  Capacity,             ///< the tracker (source 0) or the AIS target table (source 1) near its capacity
+  AisCpaTcpa,           ///< an AIS target's CPA and TCPA under the limits (source: its MMSI)
 };
-inline constexpr int kAlertKindCount = 9;
+inline constexpr int kAlertKindCount = 10;
 
 /// Which condition, from which source (a track number, a zone index, a DRKF block; 0 when the kind has
 /// one source only).

@@ -26,7 +26,8 @@ constexpr AlertKind kAllKinds[] = {AlertKind::CpaTcpa,
                                    AlertKind::DeadReckoningLimit,
                                    AlertKind::PositionDiscrepancy,
                                    AlertKind::SensorNoise,
-                                   AlertKind::Capacity};
+                                   AlertKind::Capacity,
+                                   AlertKind::AisCpaTcpa};
 
 track::Cpa cpaAt(double cpaM, double tcpaS) {
   track::Cpa c;

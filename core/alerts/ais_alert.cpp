@@ -1,0 +1,58 @@
+#include "alerts/ais_alert.h"
+
+#include <cstdio>
+#include <string>
+
+#include "common/units.h"
+
+namespace reckoner::alerts {
+
+namespace {
+std::string targetName(const track::AisTarget& t) {
+  std::string s = std::string("AIS ") + std::to_string(t.mmsi);
+  if (!t.info.name.empty()) s += std::string(" ") + t.info.name;
+  return s;
+}
+std::string cpaText(const track::AisTarget& t) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, ": CPA %.2f NM in %.1f min", t.cpa.cpaM / kMetresPerNauticalMile,
+                t.cpa.tcpaS / 60.0);
+  return targetName(t) + buf;
+}
+}  // namespace
+
+AisAlertFeed::AisAlertFeed(CpaAlertLimits limits) : cpa_(limits) {}
+
+void AisAlertFeed::report(AlertManager& m, TimeUs now, const track::AisTargetTable& table) {
+  std::set<int> cpaNow, lostNow;
+  for (const track::AisTarget& t : table.targets()) {
+    const int id = static_cast<int>(t.mmsi);  // an MMSI has 9 digits: it fits
+    if (t.cpaValid && !t.lost) {
+      if (cpa_.update(id, now, t.cpa)) {
+        cpaNow.insert(id);
+        m.report(now, {AlertKind::AisCpaTcpa, id}, true, cpaText(t));
+      }
+    } else {
+      cpa_.forget(id);
+    }
+    if (t.lost && t.activated) {
+      lostNow.insert(id);
+      m.report(now, {AlertKind::LostAisTarget, id}, true, targetName(t) + std::string(" lost"));
+    }
+  }
+  for (const int id : cpaHeld_)
+    if (!cpaNow.contains(id)) {
+      m.report(now, {AlertKind::AisCpaTcpa, id}, false);
+      if (!table.find(static_cast<std::uint32_t>(id))) cpa_.forget(id);
+    }
+  for (const int id : lostHeld_)
+    if (!lostNow.contains(id)) m.report(now, {AlertKind::LostAisTarget, id}, false);
+  cpaHeld_ = std::move(cpaNow);
+  lostHeld_ = std::move(lostNow);
+  const track::AisTableCounts c = table.counts();
+  m.report(now, {AlertKind::Capacity, kAisCapacitySource}, c.nearCapacity,
+           std::string("AIS targets near capacity: ") + std::to_string(c.activated) +
+               std::string(" activated, ") + std::to_string(c.sleeping) + std::string(" sleeping"));
+}
+
+}  // namespace reckoner::alerts

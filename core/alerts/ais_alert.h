@@ -1,0 +1,31 @@
+#pragma once
+// The alert conditions of the AIS target table (docs/ais.md, "Alerts"): AIS CPA/TCPA (an alarm, with the
+// hysteresis of cpa_alert.h, per MMSI) for each dangerous target, LOST AIS TARGET (a warning held until
+// acknowledged) for each activated target that became lost, and CAPACITY (source 1, a caution) while
+// the table is near its limits. Each report() gives the manager every condition that holds and ends
+// those that held at the previous call and no longer do (a target removed from the table included).
+#include <cstdint>
+#include <set>
+
+#include "alerts/alert_manager.h"
+#include "alerts/cpa_alert.h"
+#include "tracking/ais_targets.h"
+
+namespace reckoner::alerts {
+
+/// The Capacity alert's source for the AIS table (0 is the radar tracker's).
+inline constexpr int kAisCapacitySource = 1;
+
+class AisAlertFeed {
+ public:
+  /// The CPA limits of the AIS CPA/TCPA alert (the table's own limits decide the dangerous flag).
+  explicit AisAlertFeed(CpaAlertLimits limits = {});
+  /// Reports the table's conditions at now (times must not decrease).
+  void report(AlertManager& m, TimeUs now, const track::AisTargetTable& table);
+
+ private:
+  CpaAlertCondition cpa_;
+  std::set<int> cpaHeld_, lostHeld_;
+};
+
+}  // namespace reckoner::alerts

@@ -1,0 +1,183 @@
+#include "ui/map/ecdis_ais.h"
+
+#include <QPainterPath>
+#include <QPolygonF>
+#include <QStringList>
+#include <algorithm>
+#include <cmath>
+
+#include "common/angles.h"
+#include "common/units.h"
+
+namespace reckoner::ui {
+
+namespace {
+
+constexpr double kActivatedUnits = 14.0;  // triangle height, logical units
+constexpr double kSleepingUnits = 10.0;
+
+/// Screen point at `forward` along screen angle a and `right` across it from c (y down).
+QPointF along(QPointF c, double a, double forward, double right) {
+  const double s = std::sin(a), k = std::cos(a);
+  return {c.x() + forward * s + right * k, c.y() - forward * k + right * s};
+}
+
+int paintOrder(const AisSymbol& s) {
+  return s.dangerous ? 3 : s.selected ? 2 : s.activated ? 1 : 0;
+}
+
+void paintOne(QPainter& p, const AisSymbol& s, const AisPaintGeometry& g, const AisPaintStyle& st) {
+  const QPointF c = g.toWidget(s.xM, s.yM);
+  const bool oriented = s.headingGridRad || s.cogGridRad;
+  const double a = s.headingGridRad.value_or(s.cogGridRad.value_or(0.0)) + g.gridNorthScreenRad;
+  const double h = (s.activated ? kActivatedUnits : kSleepingUnits) * st.scale;
+  const QColor colour = s.dangerous && !s.lost ? st.dangerous : st.colour;
+  QPen pen(colour, (s.dangerous && !s.lost ? 3.0 : 1.5) * st.scale);
+  pen.setJoinStyle(Qt::MiterJoin);
+  p.setPen(pen);
+  p.setBrush(Qt::NoBrush);
+
+  // The hull to scale when it is larger on screen than the triangle (the position is the reference
+  // point: A to the bow, B to the stern, C to port, D to starboard).
+  QPointF bow = along(c, a, h / 2.0, 0.0);
+  const bool scaled = oriented && s.toBowM && s.toSternM && s.toPortM && s.toStarboardM &&
+                      (*s.toBowM + *s.toSternM) * g.pixelsPerMetre > h;
+  if (scaled) {
+    const double ppm = g.pixelsPerMetre;
+    const double A = *s.toBowM * ppm, B = *s.toSternM * ppm, C = *s.toPortM * ppm, D = *s.toStarboardM * ppm;
+    const double shoulder = A - 0.2 * (A + B);
+    bow = along(c, a, A, (D - C) / 2.0);
+    p.drawPolygon(QPolygonF(
+        {along(c, a, -B, -C), along(c, a, shoulder, -C), bow, along(c, a, shoulder, D), along(c, a, -B, D)}));
+  } else {
+    const QPolygonF tri({bow, along(c, a, -h / 2.0, -0.3 * h), along(c, a, -h / 2.0, 0.3 * h)});
+    p.drawPolygon(tri);
+  }
+
+  if (s.lost) {  // crossed out, no vector
+    const double r = 0.75 * h;  // a screen-aligned X over the symbol, whatever its heading
+    p.drawLine(QPointF(c.x() - r, c.y() - r), QPointF(c.x() + r, c.y() + r));
+    p.drawLine(QPointF(c.x() - r, c.y() + r), QPointF(c.x() + r, c.y() - r));
+    return;
+  }
+  if (s.activated) {
+    if (s.headingGridRad) {
+      const double lineLen = 2.0 * h;
+      const double ha = *s.headingGridRad + g.gridNorthScreenRad;
+      const QPointF end = along(bow, ha, lineLen, 0.0);
+      p.drawLine(bow, end);
+      if (s.turn != 0) p.drawLine(end, along(end, ha, 0.0, s.turn * 0.4 * h));
+    }
+    if (s.cogGridRad && s.sogMps > 0.0) {
+      const double len = s.sogMps * st.vectorMinutes * 60.0 * g.pixelsPerMetre;
+      QPen dashed = pen;
+      dashed.setStyle(Qt::DashLine);
+      p.setPen(dashed);
+      p.drawLine(c, along(c, *s.cogGridRad + g.gridNorthScreenRad, len, 0.0));
+      p.setPen(pen);
+    }
+  }
+  if (s.selected) {  // four corner brackets of a square 2.4 h wide
+    const double r = 1.2 * h, arm = 0.4 * h;
+    QPen bracket(colour, 1.5 * st.scale);
+    p.setPen(bracket);
+    for (const int sx : {-1, 1})
+      for (const int sy : {-1, 1}) {
+        const QPointF corner(c.x() + sx * r, c.y() + sy * r);
+        p.drawLine(corner, QPointF(corner.x() - sx * arm, corner.y()));
+        p.drawLine(corner, QPointF(corner.x(), corner.y() - sy * arm));
+      }
+  }
+}
+
+QString optText(const std::optional<double>& v, const char* fmt) {
+  return v ? QString::asprintf(fmt, *v) : QStringLiteral("n/a");
+}
+
+}  // namespace
+
+std::optional<AisSymbol> aisSymbolOf(const track::AisTarget& t, const geo::LocalFrame& frame, TimeUs now,
+                                     double turningRotDegMin) {
+  if (!t.hasPosition()) return std::nullopt;
+  geo::GridPoint p = frame.toLocal({*t.latDeg, *t.lonDeg});
+  if (!std::isfinite(p.xM) || !std::isfinite(p.yM)) return std::nullopt;
+  const double conv = frame.gridInfo(p).convergenceRad;
+  AisSymbol s;
+  s.mmsi = t.mmsi;
+  if (t.headingDeg) s.headingGridRad = degToRad(*t.headingDeg) - conv;
+  if (t.cogDeg) s.cogGridRad = degToRad(*t.cogDeg) - conv;
+  s.sogMps = t.sogKn ? knotsToMps(*t.sogKn) : 0.0;
+  if (s.cogGridRad && !t.lost) {  // where the reported motion has taken it by now
+    const double dtS = toSeconds(now - t.lastPositionUs);
+    p.xM += s.sogMps * std::sin(*s.cogGridRad) * dtS;
+    p.yM += s.sogMps * std::cos(*s.cogGridRad) * dtS;
+  }
+  s.xM = p.xM;
+  s.yM = p.yM;
+  if (t.rotFast != 0)
+    s.turn = t.rotFast;
+  else if (t.rotDegMin && std::abs(*t.rotDegMin) >= turningRotDegMin)
+    s.turn = *t.rotDegMin > 0.0 ? 1 : -1;
+  auto dim = [](const std::optional<int>& v) { return v ? std::optional<double>(*v) : std::nullopt; };
+  s.toBowM = dim(t.info.toBowM);
+  s.toSternM = dim(t.info.toSternM);
+  s.toPortM = dim(t.info.toPortM);
+  s.toStarboardM = dim(t.info.toStarboardM);
+  s.activated = t.activated;
+  s.selected = t.selected;
+  s.dangerous = t.dangerous;
+  s.lost = t.lost;
+  return s;
+}
+
+void paintAisTargets(QPainter& p, const std::vector<AisSymbol>& symbols, const AisPaintGeometry& g,
+                     const AisPaintStyle& style) {
+  p.save();
+  p.setRenderHint(QPainter::Antialiasing, true);
+  for (int layer = 0; layer <= 3; ++layer)
+    for (const AisSymbol& s : symbols) {
+      if (paintOrder(s) != layer) continue;
+      if (s.dangerous && !s.lost && !style.flashOn) continue;
+      paintOne(p, s, g, style);
+    }
+  p.restore();
+}
+
+QString aisPickReport(const track::AisTarget& t) {
+  QStringList l;
+  l << QStringLiteral("AIS %1  class %2").arg(t.mmsi).arg(QString::fromLatin1(track::aisClassName(t.cls)));
+  const auto& s = t.info;
+  if (!s.name.empty()) l << QStringLiteral("Name %1").arg(QString::fromStdString(s.name));
+  if (!s.callsign.empty()) l << QStringLiteral("Call sign %1").arg(QString::fromStdString(s.callsign));
+  if (s.imo) l << QStringLiteral("IMO %1").arg(*s.imo);
+  if (s.shipType) l << QStringLiteral("Ship type %1").arg(*s.shipType);
+  if (s.lengthM() && s.beamM())
+    l << QStringLiteral("Length %1 m, beam %2 m").arg(*s.lengthM()).arg(*s.beamM());
+  if (s.draughtM) l << QStringLiteral("Draught %1 m").arg(*s.draughtM, 0, 'f', 1);
+  if (!s.destination.empty())
+    l << QStringLiteral("Destination %1").arg(QString::fromStdString(s.destination));
+  if (s.etaMonth || s.etaDay || s.etaHour || s.etaMinute) {
+    auto part = [](const std::optional<int>& v) {
+      return v ? QStringLiteral("%1").arg(*v, 2, 10, QLatin1Char('0')) : QStringLiteral("--");
+    };
+    l << QStringLiteral("ETA %1-%2 %3:%4 UTC")
+             .arg(part(s.etaMonth), part(s.etaDay), part(s.etaHour), part(s.etaMinute));
+  }
+  if (t.navStatus) l << QStringLiteral("Navigational status %1").arg(*t.navStatus);
+  l << QStringLiteral("SOG %1 kn  COG %2°  HDG %3")
+           .arg(optText(t.sogKn, "%.1f"), optText(t.cogDeg, "%.1f"),
+                t.headingDeg ? QStringLiteral("%1°").arg(*t.headingDeg) : QStringLiteral("n/a"));
+  if (t.rotDegMin) l << QStringLiteral("ROT %1°/min").arg(*t.rotDegMin, 0, 'f', 1);
+  if (t.cpaValid)
+    l << QStringLiteral("CPA %1 NM  TCPA %2 min")
+             .arg(metresToNm(t.cpa.cpaM), 0, 'f', 2)
+             .arg(t.cpa.tcpaS / 60.0, 0, 'f', 1);
+  QStringList state;
+  state << (t.activated ? QStringLiteral("activated") : QStringLiteral("sleeping"));
+  if (t.dangerous) state << QStringLiteral("DANGEROUS");
+  if (t.lost) state << QStringLiteral("LOST");
+  l << state.join(QStringLiteral(", "));
+  return l.join(QLatin1Char('\n'));
+}
+
+}  // namespace reckoner::ui

@@ -2,6 +2,7 @@
 // dialog's table on a real hub with a UDP source on loopback, the form's inline spec errors, the
 // settings round trip, the data monitor's filters, pause and bound, the status-bar indicator, and the
 // three widgets rendered to PNG files to look at.
+#include <QApplication>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
@@ -9,10 +10,13 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUdpSocket>
 #include <QtTest>
+#include <functional>
 
 #include "connection_test_helpers.h"
 #include "ui/panels/connection_indicator.h"
@@ -41,6 +45,24 @@ QString screenshotDir() {
   const QString dir = QCoreApplication::applicationDirPath() + "/screenshots";
   QDir().mkpath(dir);
   return dir;
+}
+
+/// Calls f with the modal form once it is up (the dialog's exec() runs its own loop), polling the
+/// event loop; gives up after many tries (no form: no exec() to end either).
+void whenFormIsUp(const std::function<void(ConnectionForm&)>& f, int tries = 3000) {
+  QTimer::singleShot(10, qApp, [f, tries] {
+    if (auto* form = qobject_cast<ConnectionForm*>(QApplication::activeModalWidget())) {
+      f(*form);
+    } else if (tries > 0) {
+      whenFormIsUp(f, tries - 1);
+    }
+  });
+}
+
+QPushButton* buttonOf(QWidget& w, const QString& text) {
+  for (auto* b : w.findChildren<QPushButton*>())
+    if (b->text() == text) return b;
+  return nullptr;
 }
 
 }  // namespace
@@ -167,6 +189,61 @@ class TstConnectionsDialog : public QObject {
     QVERIFY(back.has_value());
     QCOMPARE(back->name, std::string("ais"));
     QCOMPARE(back->filter.acceptTypes, std::vector<std::string>{"VDM"});
+  }
+
+  void buttonsAddEditRemoveAndSave() {
+    // GIVEN the dialog on an empty hub, saving into an INI file
+    conn::ConnectionHub hub;
+    QTemporaryDir dir;
+    QSettings settings(dir.filePath("reckoner.ini"), QSettings::IniFormat);
+    ConnectionsDialog dialog(hub, &settings);
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    QPushButton* add = buttonOf(dialog, "Add...");
+    QPushButton* edit = buttonOf(dialog, "Edit...");
+    QPushButton* remove = buttonOf(dialog, "Remove");
+    QVERIFY(add && edit && remove);
+    QVERIFY(!edit->isEnabled() && !remove->isEnabled());
+    // WHEN Add is clicked, a bad spec typed, then a good one, then OK
+    QString shownError;
+    bool okWhileBad = true;
+    whenFormIsUp([&](ConnectionForm& form) {
+      QPushButton* ok = form.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+      form.specEdit()->setText("udp://127.0.0.1:0");
+      shownError = form.errorText();
+      okWhileBad = ok->isEnabled();
+      form.specEdit()->setText("udp://127.0.0.1:10110?reject=GSV");
+      QTest::keyClicks(form.nameEdit(), "gps");
+      ok->click();
+      if (form.isVisible()) form.reject();  // OK refused: end exec() all the same, the test fails below
+    });
+    add->click();  // returns when the form is closed
+    // THEN the form showed the error with OK off, and the source is in the hub and in the settings
+    QVERIFY2(shownError.contains("port"), qPrintable(shownError));
+    QVERIFY(!okWhileBad);
+    QCOMPARE(dialog.model()->rowCount(), 1);
+    QCOMPARE(hub.sources().front().name, std::string("gps"));
+    QCOMPARE(loadConnections(settings).front(), hub.sources().front());
+    // WHEN the row is selected and Edit changes the priority THEN the hub and settings have it
+    dialog.table()->selectRow(0);
+    QVERIFY(edit->isEnabled() && remove->isEnabled());
+    QString editSpec;  // (nothing in the lambda may return early: the form must be closed)
+    whenFormIsUp([&](ConnectionForm& form) {
+      editSpec = form.spec();
+      form.findChild<QSpinBox*>()->setValue(9);
+      form.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+      if (form.isVisible()) form.reject();
+    });
+    edit->click();
+    QCOMPARE(editSpec, QStringLiteral("udp://127.0.0.1:10110?reject=GSV"));
+    QCOMPARE(hub.sources().front().priority, 9);
+    QCOMPARE(loadConnections(settings).front().priority, 9);
+    // WHEN Remove is clicked THEN the hub and the settings are empty
+    dialog.table()->selectRow(0);
+    remove->click();
+    QCOMPARE(dialog.model()->rowCount(), 0);
+    QVERIFY(hub.sources().empty());
+    QVERIFY(loadConnections(settings).empty());
   }
 
   void settingsRoundTrip() {

@@ -98,6 +98,7 @@ class ConnectionForm : public QDialog {
   /// Shows an error the hub gave (a name taken) under the fields.
   void showError(const QString& text);
   [[nodiscard]] QLineEdit* specEdit() const { return spec_; }
+  [[nodiscard]] QLineEdit* nameEdit() const { return name_; }
 
  private:
   void validate();

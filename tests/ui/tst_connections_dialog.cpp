@@ -7,6 +7,7 @@
 #include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QFile>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -358,6 +359,44 @@ class TstConnectionsDialog : public QObject {
         (monitor.refresh(), rows() == 5 && monitor.model()->lineAt(4).line == burst.back()), kWaitMs);
     for (int r = 1; r < rows(); ++r)
       QVERIFY(monitor.model()->lineAt(r).index > monitor.model()->lineAt(r - 1).index);
+  }
+
+  void aRealRecordingThroughTheWindow() {
+    // GIVEN a real recording (B&G Zeus2 9, gpsd's regression log; ../shared, not in this repository)
+    // played by a file source at 2,000 lines/s, the dialog and the data monitor on it
+    const QString path = QStringLiteral(RECKONER_SHARED_DIR "/data/nmea/gpsd-bundg_zeus_9.log");
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) QSKIP(qPrintable("no " + path));
+    std::uint64_t nonEmpty = 0, hdg = 0;
+    while (!file.atEnd()) {
+      const QByteArray line = file.readLine().trimmed();
+      if (line.isEmpty()) continue;
+      ++nonEmpty;
+      if (line.contains("HDG")) ++hdg;
+    }
+    conn::ConnectionHub hub;
+    hub.add(conn::parseSource("file://" + path.toStdString() + "?name=zeus&rate=2000"));
+    hub.start();
+    ConnectionsDialog dialog(hub);
+    DataMonitor monitor(hub);
+    monitor.setMaxLines(100'000);
+    monitor.setTextFilter("HDG");
+    // WHEN it has played to its end
+    QTRY_COMPARE_WITH_TIMEOUT(cell(*dialog.model(), 0, ConnectionTableModel::StateColumn),
+                              QStringLiteral("finished"), 60'000);
+    dialog.model()->refresh();
+    monitor.refresh();
+    // THEN every line of the file is accounted for in the row, and the monitor shows heading lines only
+    const conn::SourceStatus& st = *dialog.model()->statusAt(0);
+    QCOMPARE(st.lines + st.errors() + st.filtered, nonEmpty);
+    QCOMPARE(cell(*dialog.model(), 0, ConnectionTableModel::Lines).toULongLong(), st.lines);
+    const int rows = monitor.model()->rowCount();
+    QVERIFY(rows > 0);
+    QVERIFY(static_cast<std::uint64_t>(rows) <= hdg);  // the hub's ring keeps the newest 2,000 lines
+    for (int r = 0; r < rows; ++r) QVERIFY(monitor.model()->lineAt(r).line.find("HDG") != std::string::npos);
+    qInfo("zeus: %llu lines in the file, %llu delivered, %llu errors, %d HDG rows in the monitor",
+          static_cast<unsigned long long>(nonEmpty), static_cast<unsigned long long>(st.lines),
+          static_cast<unsigned long long>(st.errors()), rows);
   }
 
   void indicatorLights() {

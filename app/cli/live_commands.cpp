@@ -17,11 +17,13 @@
 
 #include "cli/cli_options.h"
 #include "cli/commands.h"
+#include "cli/nmea_out.h"
 #include "cli/replay_settings.h"
 #include "connection_hub.h"
 #include "files/live_output.h"
 #include "io/input_error.h"
 #include "sim/live_session.h"
+#include "sim/nmea_output.h"
 #include "source_config.h"
 
 namespace reckoner::cli {
@@ -30,6 +32,8 @@ namespace {
 struct LiveArgs {
   std::vector<std::string> udp, tcp, serial, gpsd, file, source, radarUdp, radarTcp;
   std::optional<double> durationS;
+  std::optional<std::string> nmeaOut;
+  bool nmeaOutAis = false;
   double reorderHorizonS = 1.0;
   double statusIntervalS = 1.0;
   double fileRate = 1.0;
@@ -93,6 +97,18 @@ int liveCommand(const LiveArgs& a) {
   QSocketNotifier stopNotifier(stopPipe[0], QSocketNotifier::Read);
   QObject::connect(&stopNotifier, &QSocketNotifier::activated, &app, [&app] { app.quit(); });
 
+  std::unique_ptr<NmeaSink> sink;  // after the application: a TCP server lives in its event loop
+  if (a.nmeaOut) sink = std::make_unique<NmeaSink>(*a.nmeaOut);
+  sim::NmeaOutputOptions nmeaOptions;
+  nmeaOptions.ais = a.nmeaOutAis;
+  sim::NmeaOutput nmeaOutput(nmeaOptions);
+  const auto send = [&](const files::LiveBatch& batch) {
+    if (!sink || !session.started()) return;
+    const geo::GeoPoint o = session.result().origin;
+    sink->write(sim::rowsNmea(nmeaOutput, batch.own, batch.tracks, batch.trackUtc,
+                              geo::LocalFrame(o.latDeg, o.lonDeg)));
+  };
+
   conn::ConnectionHub hub;
   for (const auto& c : sources) hub.add(c);
   long lines = 0, radarLines = 0;
@@ -105,9 +121,10 @@ int liveCommand(const LiveArgs& a) {
       } else {
         session.nmea(l.line, l.receivedUtc, l.source);
         ++lines;
+        if (sink && a.nmeaOutAis) sink->write(nmeaOutput.ais(l.line));
       }
     }
-    writer.append(session);
+    send(writer.append(session));
   };
   QObject::connect(&hub, &conn::ConnectionHub::linesAvailable, &app, [&] {
     try {
@@ -146,7 +163,7 @@ int liveCommand(const LiveArgs& a) {
   if (!lastError.empty()) throw std::runtime_error(lastError);
   consume();
   session.finish();
-  writer.finish(session, "live");
+  send(writer.finish(session, "live"));
   for (const auto& w : session.result().warnings)
     std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
   if (wantsTable(a.output))
@@ -154,6 +171,10 @@ int liveCommand(const LiveArgs& a) {
         "Reckoner live: %ld lines, %ld radar lines; wrote %ld own-ship rows, %ld track rows, %ld AIS "
         "messages to %s\n",
         lines, radarLines, writer.ownRows(), writer.trackRows(), writer.aisRows(), out.c_str());
+  if (sink) {
+    const std::string account = sink->finish();
+    if (wantsTable(a.output)) std::printf("  sent %s\n", account.c_str());
+  }
   return 0;
 }
 
@@ -182,6 +203,8 @@ void addLiveCommands(CLI::App& root, Commands& out) {
           "hold sentences this long for ones that arrive out of order, seconds");
   addReal(*app, "status-interval", a->statusIntervalS, 0.0, 3600.0, "S",
           "a status line on stderr this often, seconds (0: none)");
+  addNmeaOut(*app, a->nmeaOut);
+  app->add_flag("--nmea-out-ais", a->nmeaOutAis, "pass the AIS sentences received through to --nmea-out");
   addReplaySettings(*app, a->settings);
   addOutputOptions(*app, a->output, Summary::None,
                    "ownship.csv, summary.json, ais.csv, targets.csv with radar");

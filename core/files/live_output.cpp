@@ -42,8 +42,10 @@ LiveOutputWriter::~LiveOutputWriter() {
     if (file->f) std::fclose(file->f);
 }
 
-void LiveOutputWriter::append(sim::LiveSession& session) {
-  const std::vector<sim::ReplayOwnRow> own = session.takeOwnRows();
+LiveBatch LiveOutputWriter::append(sim::LiveSession& session) {
+  LiveBatch batch;
+  batch.own = session.takeOwnRows();
+  const std::vector<sim::ReplayOwnRow>& own = batch.own;
   for (const sim::ReplayOwnRow& r : own) put(own_, replayOwnShipCsvLine(r));
   if (!own.empty()) {
     if (!firstOwn_) firstOwn_ = own.front().timeUs;
@@ -51,8 +53,9 @@ void LiveOutputWriter::append(sim::LiveSession& session) {
     ownRows_ += static_cast<long>(own.size());
     flush(own_);
   }
-  std::vector<UtcUs> utc;
-  const std::vector<sim::TrackRow> tracks = session.takeTrackRows(&utc);
+  std::vector<UtcUs>& utc = batch.trackUtc;
+  batch.tracks = session.takeTrackRows(&utc);
+  const std::vector<sim::TrackRow>& tracks = batch.tracks;
   if (targets_.f && !tracks.empty()) {
     for (std::size_t i = 0; i < tracks.size(); ++i)
       put(targets_, replayTargetsCsvLine(tracks[i], utc[i], session.result().targetLabels));
@@ -65,10 +68,11 @@ void LiveOutputWriter::append(sim::LiveSession& session) {
     aisRows_ += static_cast<long>(ais.size());
     flush(ais_);
   }
+  return batch;
 }
 
-void LiveOutputWriter::finish(sim::LiveSession& session, const std::string& inputName) {
-  append(session);
+LiveBatch LiveOutputWriter::finish(sim::LiveSession& session, const std::string& inputName) {
+  LiveBatch last = append(session);
   const double span = firstOwn_ ? toSeconds(*lastOwn_ - *firstOwn_) : 0.0;
   const io::AisCounters& c = session.aisCounters();
   const auto aisObject = [&c](io::JsonWriter& w) {
@@ -89,6 +93,7 @@ void LiveOutputWriter::finish(sim::LiveSession& session, const std::string& inpu
     w.endObject();
   };
   io::writeTextFile(dir_ + "/summary.json", replaySummaryJson(session.result(), inputName, span, aisObject));
+  return last;
 }
 
 }  // namespace reckoner::files

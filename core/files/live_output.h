@@ -11,6 +11,13 @@
 
 namespace reckoner::files {
 
+/// The rows one append() wrote, for whatever else wants them (the NMEA output of reckoner-cli live).
+struct LiveBatch {
+  std::vector<sim::ReplayOwnRow> own;
+  std::vector<sim::TrackRow> tracks;
+  std::vector<UtcUs> trackUtc;  ///< per track row
+};
+
 class LiveOutputWriter {
  public:
   /// Creates (truncates) dir/ownship.csv, dir/ais.csv and, with radar, dir/targets.csv. Throws
@@ -20,10 +27,12 @@ class LiveOutputWriter {
   LiveOutputWriter(const LiveOutputWriter&) = delete;
   LiveOutputWriter& operator=(const LiveOutputWriter&) = delete;
 
-  /// Appends what the session produced since the last call (rows taken from it) and flushes.
-  void append(sim::LiveSession& session);
-  /// After session.finish(): the last rows, then summary.json (the replay's, with an "ais" object).
-  void finish(sim::LiveSession& session, const std::string& inputName);
+  /// Appends what the session produced since the last call (rows taken from it) and flushes; returns
+  /// the own-ship and track rows written.
+  LiveBatch append(sim::LiveSession& session);
+  /// After session.finish(): the last rows (returned), then summary.json (the replay's, with an "ais"
+  /// object).
+  LiveBatch finish(sim::LiveSession& session, const std::string& inputName);
 
   [[nodiscard]] long ownRows() const { return ownRows_; }
   [[nodiscard]] long trackRows() const { return trackRows_; }

@@ -369,26 +369,31 @@ std::vector<std::string> RunNmeaOutput::frame(const SimFrame& f, const OwnShipRo
   return lines;
 }
 
-std::vector<std::string> replayNmea(const ReplayResult& r, NmeaOutputOptions options) {
-  NmeaOutput out(std::move(options));
-  const geo::LocalFrame geo(r.origin.latDeg, r.origin.lonDeg);
+std::vector<std::string> rowsNmea(NmeaOutput& out, std::span<const ReplayOwnRow> own,
+                                  std::span<const TrackRow> tracks, std::span<const UtcUs> trackUtc,
+                                  const geo::LocalFrame& frame) {
   std::vector<std::string> lines;
+  const std::size_t n = std::min(tracks.size(), trackUtc.size());
   std::size_t t = 0;
   const auto sweepsUntil = [&](std::optional<UtcUs> until) {
-    while (t < r.tracks.size() && t < r.trackRowUtc.size() && (!until || r.trackRowUtc[t] <= *until)) {
+    while (t < n && (!until || trackUtc[t] <= *until)) {
       std::size_t j = t;
-      while (j < r.tracks.size() && j < r.trackRowUtc.size() && r.trackRowUtc[j] == r.trackRowUtc[t]) ++j;
-      for (auto& l : out.sweep(r.trackRowUtc[t], std::span(r.tracks).subspan(t, j - t)))
-        lines.push_back(std::move(l));
+      while (j < n && trackUtc[j] == trackUtc[t]) ++j;
+      for (auto& l : out.sweep(trackUtc[t], tracks.subspan(t, j - t))) lines.push_back(std::move(l));
       t = j;
     }
   };
-  for (const ReplayOwnRow& row : r.own) {
+  for (const ReplayOwnRow& row : own) {
     sweepsUntil(row.utcUs);
-    for (auto& l : out.ownShip(ownShipFixOf(row, geo))) lines.push_back(std::move(l));
+    for (auto& l : out.ownShip(ownShipFixOf(row, frame))) lines.push_back(std::move(l));
   }
   sweepsUntil(std::nullopt);
   return lines;
+}
+
+std::vector<std::string> replayNmea(const ReplayResult& r, NmeaOutputOptions options) {
+  NmeaOutput out(std::move(options));
+  return rowsNmea(out, r.own, r.tracks, r.trackRowUtc, geo::LocalFrame(r.origin.latDeg, r.origin.lonDeg));
 }
 
 }  // namespace reckoner::sim

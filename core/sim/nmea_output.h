@@ -128,6 +128,11 @@ class RunNmeaOutput {
   alerts::AlertManager manager_;
 };
 
+/// The NMEA output of own-ship rows and the track rows (with their UTC) of the same stretch, the sweeps
+/// in UTC order between the own-ship rows: a finished replay at once, or a live run batch by batch.
+std::vector<std::string> rowsNmea(NmeaOutput& out, std::span<const ReplayOwnRow> own,
+                                  std::span<const TrackRow> tracks, std::span<const UtcUs> trackUtc,
+                                  const geo::LocalFrame& frame);
 /// The NMEA output of a finished replay: own-ship rows and track sweeps in UTC order.
 std::vector<std::string> replayNmea(const ReplayResult& r, NmeaOutputOptions options = {});
 

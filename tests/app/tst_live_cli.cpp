@@ -204,10 +204,19 @@ class TestLiveCli : public QObject {
     // GIVEN the recording as a file source played ten times faster than it was recorded
     // WHEN live runs it to its end (a run of files alone stops there)
     const QString out = dir_.path() + "/file";
-    const auto r = runCli({"live", "--file", kZeus, "--file-rate", "10", "--out", out, "--quiet"});
+    const auto r = runCli({"live", "--file", kZeus, "--file-rate", "10", "--out", out, "--quiet",
+                           "--nmea-out", dir_.path() + "/live-out.nmea"});
     QCOMPARE(r.code, 0);
-    // THEN its own-ship estimate is the replay's
+    // THEN its own-ship estimate is the replay's, and so is its NMEA output, sentence for sentence
     compareOwnShip(out, dir_.path() + "/replay");
+    const auto ref = runCli({"replay", "--nmea", kZeus, "--out", dir_.path() + "/replay-nmea", "--quiet",
+                             "--nmea-out", dir_.path() + "/replay-out.nmea"});
+    QCOMPARE(ref.code, 0);
+    QFile mine(dir_.path() + "/live-out.nmea"), theirs(dir_.path() + "/replay-out.nmea");
+    QVERIFY(mine.open(QIODevice::ReadOnly) && theirs.open(QIODevice::ReadOnly));
+    const QByteArray a = mine.readAll(), b = theirs.readAll();
+    QVERIFY(b.count('\n') > 500);
+    QCOMPARE(a, b);
   }
 
   void udpEqualsReplay() {

@@ -74,76 +74,113 @@ std::vector<conn::SourceConfig> sourcesOf(const LiveArgs& a) {
   return out;
 }
 
+/// The session, its files and its NMEA output, fed from the hub on the thread that owns them.
+class LiveEngine {
+ public:
+  LiveEngine(const LiveArgs& a, const sim::LiveOptions& options, const std::string& out)
+      : a_(a), session_(options), writer_(out, options.radar), nmea_(nmeaOptions(a)) {
+    // after the application: a TCP server lives in its event loop
+    if (a.nmeaOut) sink_ = std::make_unique<NmeaSink>(*a.nmeaOut);
+  }
+
+  /// Every line the hub holds into the session; the rows written and sent.
+  void consume(conn::ConnectionHub& hub) {
+    for (const conn::ReceivedLine& l : hub.take()) {
+      if (l.role == conn::Role::Radar) {
+        session_.radar(l.line, l.receivedUtc);
+        ++radarLines_;
+      } else {
+        session_.nmea(l.line, l.receivedUtc, l.source);
+        ++lines_;
+        if (sink_ && a_.nmeaOutAis) sink_->write(nmea_.ais(l.line));
+      }
+    }
+    send(writer_.append(session_));
+  }
+
+  void printStatus(const conn::ConnectionHub& hub) const {
+    std::fprintf(stderr,
+                 "live: %ld lines, %ld radar lines, %ld own-ship rows, %ld track rows, %ld AIS messages",
+                 lines_, radarLines_, writer_.ownRows(), writer_.trackRows(), writer_.aisRows());
+    for (const conn::SourceStatus& s : hub.status())
+      std::fprintf(stderr, "; %s %s %llu lines", s.name.c_str(), conn::stateName(s.state),
+                   static_cast<unsigned long long>(s.lines));
+    std::fputc('\n', stderr);
+  }
+
+  /// After the hub stopped: its last lines, the session's last rows, summary.json, the account.
+  void finish(conn::ConnectionHub& hub, const std::string& out) {
+    consume(hub);
+    session_.finish();
+    send(writer_.finish(session_, "live"));
+    for (const auto& w : session_.result().warnings)
+      std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
+    if (wantsTable(a_.output))
+      std::printf(
+          "Reckoner live: %ld lines, %ld radar lines; wrote %ld own-ship rows, %ld track rows, %ld AIS "
+          "messages to %s\n",
+          lines_, radarLines_, writer_.ownRows(), writer_.trackRows(), writer_.aisRows(), out.c_str());
+    if (sink_) {
+      const std::string account = sink_->finish();
+      if (wantsTable(a_.output)) std::printf("  sent %s\n", account.c_str());
+    }
+  }
+
+ private:
+  static sim::NmeaOutputOptions nmeaOptions(const LiveArgs& a) {
+    sim::NmeaOutputOptions o;
+    o.ais = a.nmeaOutAis;
+    return o;
+  }
+  void send(const files::LiveBatch& batch) {
+    if (!sink_ || !session_.started()) return;
+    const geo::GeoPoint o = session_.result().origin;
+    sink_->write(
+        sim::rowsNmea(nmea_, batch.own, batch.tracks, batch.trackUtc, geo::LocalFrame(o.latDeg, o.lonDeg)));
+  }
+
+  const LiveArgs& a_;
+  sim::LiveSession session_;
+  files::LiveOutputWriter writer_;
+  sim::NmeaOutput nmea_;
+  std::unique_ptr<NmeaSink> sink_;
+  long lines_ = 0, radarLines_ = 0;
+};
+
 int liveCommand(const LiveArgs& a) {
   const std::vector<conn::SourceConfig> sources = sourcesOf(a);
-  bool radar = false;
-  for (const auto& c : sources) radar = radar || c.role == conn::Role::Radar;
   sim::LiveOptions lo;
   lo.replay = replayOptions(a.settings);
   lo.name = "live";
   lo.reorderHorizonS = a.reorderHorizonS;
-  lo.radar = radar;
+  lo.radar =
+      std::any_of(sources.begin(), sources.end(), [](const auto& c) { return c.role == conn::Role::Radar; });
   const std::string out = prepareOutDir(a.output);
-  sim::LiveSession session(lo);
-  files::LiveOutputWriter writer(out, radar);
 
   int argc = 1;
   char arg0[] = "reckoner-cli";
   char* argv[] = {arg0, nullptr};
   QCoreApplication app(argc, argv);
+  LiveEngine engine(a, lo, out);
   if (::pipe(stopPipe) != 0) throw std::runtime_error("cannot make the signal pipe");
   std::signal(SIGINT, onStopSignal);
   std::signal(SIGTERM, onStopSignal);
   QSocketNotifier stopNotifier(stopPipe[0], QSocketNotifier::Read);
   QObject::connect(&stopNotifier, &QSocketNotifier::activated, &app, [&app] { app.quit(); });
 
-  std::unique_ptr<NmeaSink> sink;  // after the application: a TCP server lives in its event loop
-  if (a.nmeaOut) sink = std::make_unique<NmeaSink>(*a.nmeaOut);
-  sim::NmeaOutputOptions nmeaOptions;
-  nmeaOptions.ais = a.nmeaOutAis;
-  sim::NmeaOutput nmeaOutput(nmeaOptions);
-  const auto send = [&](const files::LiveBatch& batch) {
-    if (!sink || !session.started()) return;
-    const geo::GeoPoint o = session.result().origin;
-    sink->write(sim::rowsNmea(nmeaOutput, batch.own, batch.tracks, batch.trackUtc,
-                              geo::LocalFrame(o.latDeg, o.lonDeg)));
-  };
-
   conn::ConnectionHub hub;
   for (const auto& c : sources) hub.add(c);
-  long lines = 0, radarLines = 0;
   std::string lastError;
-  const auto consume = [&] {
-    for (const conn::ReceivedLine& l : hub.take()) {
-      if (l.role == conn::Role::Radar) {
-        session.radar(l.line, l.receivedUtc);
-        ++radarLines;
-      } else {
-        session.nmea(l.line, l.receivedUtc, l.source);
-        ++lines;
-        if (sink && a.nmeaOutAis) sink->write(nmeaOutput.ais(l.line));
-      }
-    }
-    send(writer.append(session));
-  };
   QObject::connect(&hub, &conn::ConnectionHub::linesAvailable, &app, [&] {
     try {
-      consume();
+      engine.consume(hub);
     } catch (const std::exception& e) {  // an output that cannot be written: stop, report it
       lastError = e.what();
       app.quit();
     }
   });
   QTimer status;
-  QObject::connect(&status, &QTimer::timeout, &app, [&] {
-    std::fprintf(stderr,
-                 "live: %ld lines, %ld radar lines, %ld own-ship rows, %ld track rows, %ld AIS messages",
-                 lines, radarLines, writer.ownRows(), writer.trackRows(), writer.aisRows());
-    for (const conn::SourceStatus& s : hub.status())
-      std::fprintf(stderr, "; %s %s %llu lines", s.name.c_str(), conn::stateName(s.state),
-                   static_cast<unsigned long long>(s.lines));
-    std::fputc('\n', stderr);
-  });
+  QObject::connect(&status, &QTimer::timeout, &app, [&] { engine.printStatus(hub); });
   // A run of files alone ends when every file has been played to its end.
   const bool filesOnly =
       std::all_of(sources.begin(), sources.end(), [](const auto& c) { return c.kind == conn::Kind::File; });
@@ -161,20 +198,7 @@ int liveCommand(const LiveArgs& a) {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   if (!lastError.empty()) throw std::runtime_error(lastError);
-  consume();
-  session.finish();
-  send(writer.finish(session, "live"));
-  for (const auto& w : session.result().warnings)
-    std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
-  if (wantsTable(a.output))
-    std::printf(
-        "Reckoner live: %ld lines, %ld radar lines; wrote %ld own-ship rows, %ld track rows, %ld AIS "
-        "messages to %s\n",
-        lines, radarLines, writer.ownRows(), writer.trackRows(), writer.aisRows(), out.c_str());
-  if (sink) {
-    const std::string account = sink->finish();
-    if (wantsTable(a.output)) std::printf("  sent %s\n", account.c_str());
-  }
+  engine.finish(hub, out);
   return 0;
 }
 

@@ -13,22 +13,16 @@
 #include "io/iso8601.h"
 #include "io/nmea.h"
 #include "io/nmea_out.h"
-#include "resources/embedded.h"
 #include "sim/nmea_export.h"
 #include "sim/nmea_output.h"
 #include "sim/scenario_run.h"
 #include "support/compare_near.h"
+#include "support/drkf_fixtures.h"
 
 using namespace reckoner;
 using namespace reckoner::sim;
 
 namespace {
-
-Scenario builtin(const char* name) {
-  const auto* f = resources::findScenario(name);
-  if (!f) qFatal("no built-in scenario %s", name);
-  return files::parseScenario(f->text, std::string("builtin:") + name);
-}
 
 const UtcUs kUtc0 = *io::parseIso8601("2026-01-01T00:00:00Z");
 
@@ -48,7 +42,7 @@ class TestNmeaOutput : public QObject {
   Q_OBJECT
  private slots:
   void runDeadReckoningIsMarkedEstimated() {
-    const Scenario s = builtin("ttkf-matched");
+    const Scenario s = test::builtinScenario("ttkf-matched");
     RunNmeaOutput out(s, kUtc0);
     std::vector<Sent> sent;
     std::vector<OwnShipRow> rows;
@@ -111,7 +105,7 @@ class TestNmeaOutput : public QObject {
   }
 
   void tracksKeepTheirNumbers() {
-    const Scenario s = builtin("ttkf-matched");
+    const Scenario s = test::builtinScenario("ttkf-matched");
     RunNmeaOutput out(s, kUtc0);
     std::map<int, std::set<std::string>> numbersOfTrack;  // track name -> numbers seen
     std::map<std::string, std::pair<std::string, std::string>> lastTtmOfNumber;
@@ -216,7 +210,7 @@ class TestNmeaOutput : public QObject {
   }
 
   void replayOfTheRecordingIsMarkedToo() {
-    const Scenario s = builtin("ttkf-matched");
+    const Scenario s = test::builtinScenario("ttkf-matched");
     const ExportedRun e = exportRun(s, 1, kUtc0);
     ReplayOptions o;
     o.settings = s;

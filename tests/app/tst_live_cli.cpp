@@ -24,8 +24,10 @@
 #include <vector>
 
 #include "app/cli_process.h"
+#include "support/campaign_tools.h"
 
 using reckoner::test::runCli;
+namespace test = reckoner::test;
 
 namespace {
 
@@ -117,51 +119,46 @@ class LiveRun {
   QString err_, last_;
 };
 
-struct Csv {
-  QStringList header;
-  std::vector<QStringList> rows;
-};
-
-Csv readCsv(const QString& path) {
-  Csv c;
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) return c;
-  const auto lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
-  if (lines.isEmpty()) return c;
-  c.header = lines.front().split(',');
-  for (int i = 1; i < lines.size(); ++i) c.rows.push_back(lines[i].split(','));
-  return c;
+/// tests/support's reader, failing the test (not throwing) on a file that cannot be read.
+bool readCsvInto(const QString& path, test::Csv& out) {
+  try {
+    out = test::readCsv(path);
+    return true;
+  } catch (const std::exception& e) {
+    qWarning("%s", e.what());
+    return false;
+  }
 }
 
 /// ownship.csv of a live run against the replay's: the same rows and columns; positions and
 /// velocities to 1 cm (per second), standard deviations and every other number to 1e-6, text equal.
 void compareOwnShip(const QString& liveDir, const QString& replayDir) {
-  const Csv live = readCsv(liveDir + "/ownship.csv"), rep = readCsv(replayDir + "/ownship.csv");
+  test::Csv live, rep;
+  QVERIFY(readCsvInto(liveDir + "/ownship.csv", live) && readCsvInto(replayDir + "/ownship.csv", rep));
   QVERIFY(rep.rows.size() > 100);
-  QCOMPARE(live.header, rep.header);
+  QVERIFY(live.column == rep.column);
   QCOMPARE(live.rows.size(), rep.rows.size());
   double worstM = 0.0, worstSd = 0.0;
   for (std::size_t r = 0; r < rep.rows.size(); ++r) {
-    QCOMPARE(live.rows[r].size(), rep.rows[r].size());
-    for (int c = 0; c < rep.header.size(); ++c) {
+    for (const auto& [name, c] : rep.column) {
+      const QString mine = QString::fromStdString(live.rows[r][c]),
+                    theirs = QString::fromStdString(rep.rows[r][c]);
       bool ok1 = false, ok2 = false;
-      const double a = live.rows[r][c].toDouble(&ok1), b = rep.rows[r][c].toDouble(&ok2);
+      const double a = mine.toDouble(&ok1), b = theirs.toDouble(&ok2);
       if (!ok1 || !ok2) {
-        QCOMPARE(live.rows[r][c], rep.rows[r][c]);
+        QCOMPARE(mine, theirs);
         continue;
       }
-      const QString& name = rep.header[c];
-      const bool metres = name.startsWith("est_") && (name.endsWith("_m") || name.endsWith("_mps"));
-      const bool degrees = name.endsWith("_deg") && name.startsWith("est_l");
+      const QString n = QString::fromStdString(name);
+      const bool metres = n.startsWith("est_") && (n.endsWith("_m") || n.endsWith("_mps"));
+      const bool degrees = n.endsWith("_deg") && n.startsWith("est_l");
       const double d = std::abs(a - b) * (degrees ? 111000.0 : 1.0);  // degrees to metres, roughly
       if (metres || degrees)
         worstM = std::max(worstM, d);
       else
         worstSd = std::max(worstSd, d);
       const double tol = metres || degrees ? 0.01 : 1e-6;
-      if (d > tol)
-        QFAIL(qPrintable(
-            QString("row %1 %2: live %3 replay %4").arg(r).arg(name, live.rows[r][c], rep.rows[r][c])));
+      if (d > tol) QFAIL(qPrintable(QString("row %1 %2: live %3 replay %4").arg(r).arg(n, mine, theirs)));
     }
   }
   qInfo("%zu rows equal: worst position/velocity difference %.3g m, worst other %.3g", rep.rows.size(),
@@ -422,12 +419,11 @@ class TestLiveCli : public QObject {
     QCOMPARE(live.interrupt(), 0);
     // THEN the rows of the gap are dead reckoning (no GNSS among their sensors), those before and after
     // have the GNSS
-    const Csv own = readCsv(out + "/ownship.csv");
-    const int sensors = static_cast<int>(own.header.indexOf("sensors"));
-    QVERIFY(sensors >= 0);
+    test::Csv own;
+    QVERIFY(readCsvInto(out + "/ownship.csv", own));
     int before = 0, dr = 0, after = 0;
-    for (const QStringList& row : own.rows) {
-      const bool gnss = row[sensors].contains("gps");
+    for (const auto& row : own.rows) {
+      const bool gnss = own.get(row, "sensors").find("gps") != std::string::npos;
       if (gnss && dr == 0) ++before;
       if (!gnss) ++dr;
       if (gnss && dr > 0) ++after;

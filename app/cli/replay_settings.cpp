@@ -3,7 +3,6 @@
 #include <array>
 
 #include "cli/cli_options.h"
-#include "common/angles.h"
 #include "io/error_line.h"
 #include "io/iso8601.h"
 
@@ -43,17 +42,10 @@ sim::ReplayOptions replayOptions(const ReplaySettings& a) {
     o.settingsName = *a.config;
     o.originFromSettings = true;
     if (profile) sim::applySensorProfile(o.settings, *profile);
+    sim::assumeRadar(o.settings);
   } else {
-    o.settings = loadScenario("builtin:default");
-    // Recorded data come from real sensors: the realistic profile unless asked otherwise (paper: the
-    // default scenario's figures, seed 000's Table I).
-    sim::applySensorProfile(o.settings, profile.value_or(sim::SensorProfile::Realistic));
-    o.sweepFromPlots = true;  // no radar configured: the antenna's rotation as the plots show it
-  }
-  if (!o.settings.radar.fitted) {  // the radar noise a replay assumes without a configured radar
-    o.settings.radar.fitted = true;
-    o.settings.radar.rangeSdM = 20.0;
-    o.settings.radar.bearingSdRad = degToRad(0.5);
+    o = sim::recordedDataOptions(loadScenario("builtin:default"),
+                                 profile.value_or(sim::SensorProfile::Realistic));
   }
   o.assumeAssociation = a.assumeAssociation;
   if (!a.adaptiveGnss.empty()) o.settings.filter.adaptiveGnssNoise = a.adaptiveGnss == "on";

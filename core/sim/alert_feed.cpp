@@ -39,11 +39,12 @@ void AlertFeed::setSettings(const AlertFeedSettings& s) {
   cpa_ = alerts::CpaAlertCondition(s.cpa);  // the hysteresis starts again under the new limits
 }
 
-void AlertFeed::feed(const SimFrame& f, alerts::AlertManager& m) {
+void AlertFeed::feed(const SimFrame& f, alerts::AlertManager& m, TimeUs clockOffsetUs) {
+  offsetUs_ = clockOffsetUs;
   feedTracks(f, m);
   feedOwnShip(f, m);
   feedDiscrepancy(f, m);
-  m.tick(f.timeUs);
+  m.tick(f.timeUs + offsetUs_);
 }
 
 namespace {
@@ -54,7 +55,7 @@ std::string trackText(int trackId, const char* what) {
 }  // namespace
 
 void AlertFeed::feedTracks(const SimFrame& f, alerts::AlertManager& m) {
-  const TimeUs now = f.timeUs;
+  const TimeUs now = f.timeUs + offsetUs_;
   std::set<int> present;
   for (const TrackSnapshot& t : f.tracks) {
     present.insert(t.trackId);
@@ -86,7 +87,7 @@ void AlertFeed::feedTracks(const SimFrame& f, alerts::AlertManager& m) {
 }
 
 void AlertFeed::feedOwnShip(const SimFrame& f, alerts::AlertManager& m) const {
-  const TimeUs now = f.timeUs;
+  const TimeUs now = f.timeUs + offsetUs_;
   m.report(now, {AlertKind::PositionSourceLost, 0}, f.deadReckoning.active,
            "no position fix: dead reckoning");
   if (settings_.drLimitM > 0.0) {
@@ -141,7 +142,7 @@ void AlertFeed::feedDiscrepancy(const SimFrame& f, alerts::AlertManager& m) {
   char text[96] = "";
   if (discrepant_)
     std::snprintf(text, sizeof text, "GPS and Loran-C %.0f m apart, limit %.0f m", apartM, limit);
-  m.report(f.timeUs, {AlertKind::PositionDiscrepancy, 0}, discrepant_, text);
+  m.report(f.timeUs + offsetUs_, {AlertKind::PositionDiscrepancy, 0}, discrepant_, text);
 }
 
 }  // namespace reckoner::sim

@@ -46,8 +46,9 @@ class AlertFeed {
  public:
   explicit AlertFeed(AlertFeedSettings settings = {});
 
-  /// Reports every condition of `f` to `m`, then advances m's timers to f.timeUs.
-  void feed(const SimFrame& f, alerts::AlertManager& m);
+  /// Reports every condition of `f` to `m`, then advances m's timers to f.timeUs. The manager's clock
+  /// is the frame's time plus clockOffsetUs (a live run's manager keeps its own zero: sim/live_watch.h).
+  void feed(const SimFrame& f, alerts::AlertManager& m, TimeUs clockOffsetUs = 0);
   /// New limits from the next frame on (throws as validate does).
   void setSettings(const AlertFeedSettings& s);
   [[nodiscard]] const AlertFeedSettings& settings() const { return settings_; }
@@ -63,6 +64,7 @@ class AlertFeed {
   };
 
   AlertFeedSettings settings_;
+  TimeUs offsetUs_ = 0;  ///< of the feed() in progress
   alerts::CpaAlertCondition cpa_;
   std::set<int> tracks_;                ///< the tracks of the previous frame
   std::optional<Fix> gps_, loran_;      ///< the latest fix of each position source

@@ -6,6 +6,7 @@
 #include "io/input_error.h"
 #include "sim/replay_runner.h"
 #include "sim/replay_stream.h"
+#include "tracking/ais_targets.h"
 
 namespace reckoner::sim {
 namespace {
@@ -30,6 +31,10 @@ bool isAisLine(std::string_view line) {
          (line[5] == 'M' || line[5] == 'O');
 }
 
+/// The stream's clock may lead the last epoch run (by the receive clock since) by at most this before
+/// it is taken for a clock error (a sentence stamped far ahead that the jump rule will drop).
+constexpr std::int64_t kMaxClockLeadUs = 30'000'000;
+
 }  // namespace
 
 LiveSession::LiveSession(LiveOptions options)
@@ -51,15 +56,28 @@ LiveSession::~LiveSession() = default;
 void LiveSession::nmea(std::string_view line, std::optional<UtcUs> receivedUtc, std::string_view source) {
   if (finished_) return;
   if (isAisLine(line)) {
-    const std::optional<UtcUs> at = receivedUtc ? receivedUtc : lastRun_;
+    const std::optional<UtcUs> at = clockAt(receivedUtc);
     auto m = ais_.feed(line, at ? static_cast<double>(*at) * 1e-6 : -1.0);
-    if (m) aisOut_.push_back({at.value_or(0), std::string(source), std::move(*m)});
+    if (m) aisOut_.push_back({at.value_or(0), track::isOwnShipSentence(line), std::string(source), std::move(*m)});
     return;
   }
   stream_->push(line, receivedUtc);
   for (replay_input::Epoch& e : stream_->takeEpochs()) waiting_.push_back(std::move(e));
   if (plots_ && receivedUtc) plots_->expire(*receivedUtc);
+  const std::optional<UtcUs> ran = lastRun_;
   drain(false);
+  if (lastRun_ != ran) receivedAtLastRun_ = receivedUtc;
+}
+
+std::optional<UtcUs> LiveSession::clockAt(std::optional<UtcUs> receivedUtc) const {
+  const std::optional<UtcUs> stream = stream_->clockAt(receivedUtc);
+  std::optional<UtcUs> run = lastRun_;
+  if (run && receivedUtc && receivedAtLastRun_ && *receivedUtc > *receivedAtLastRun_)
+    *run += *receivedUtc - *receivedAtLastRun_;
+  if (stream && run && *stream - *run > kMaxClockLeadUs) return run;  // a clock error ahead
+  if (stream) return stream;
+  if (run) return run;
+  return receivedUtc;
 }
 
 void LiveSession::radar(std::string_view line, std::optional<UtcUs> receivedUtc) {
@@ -108,7 +126,16 @@ void LiveSession::run(const replay_input::Epoch& e) {
       return;
     }
     res_.origin = replay_runner::chooseOrigin(o_.replay, e, o_.name, res_.warnings);
+    frame_.emplace(res_.origin.latDeg, res_.origin.lonDeg);
     runner_ = std::make_unique<replay_runner::Runner>(o_.replay, res_, o_.radar);
+    if (o_.frames)
+      runner_->setFrameSink([this](SimFrame&& f) {
+        if (frames_.size() >= kMaxFrames) {
+          frames_.pop_front();
+          ++framesDropped_;
+        }
+        frames_.push_back(std::move(f));
+      });
   }
   runner_->ownShip(e);
 }
@@ -154,6 +181,12 @@ std::vector<ReplayOwnRow> LiveSession::takeOwnRows() {
 std::vector<LiveAisMessage> LiveSession::takeAisMessages() {
   std::vector<LiveAisMessage> out;
   out.swap(aisOut_);
+  return out;
+}
+
+std::vector<SimFrame> LiveSession::takeFrames() {
+  std::vector<SimFrame> out(std::make_move_iterator(frames_.begin()), std::make_move_iterator(frames_.end()));
+  frames_.clear();
   return out;
 }
 

@@ -11,8 +11,10 @@
 #include <string_view>
 #include <vector>
 
+#include "geo/local_frame.h"
 #include "io/ais.h"
 #include "sim/replay.h"
+#include "sim/simulation_engine.h"
 
 namespace reckoner::sim {
 
@@ -34,11 +36,17 @@ struct LiveOptions {
   double reorderHorizonS = 0.0;
   /// A radar plot source is connected (radar CSV rows through radar()): the track bank runs.
   bool radar = false;
+  /// Keep a SimFrame (without truth) of every own-ship epoch run, for takeFrames(): the alerts and the
+  /// window read them. At most kMaxFrames are held; older ones are dropped (counted).
+  bool frames = false;
 };
 
 /// An AIS message decoded from a live stream, with when and where it arrived.
 struct LiveAisMessage {
-  UtcUs utc = 0;       ///< receive time, else the time of the latest own-ship epoch
+  /// On the own-ship stream's clock (the latest timed sentence's UTC carried on by the receive clock)
+  /// once there is one, else the receive time; 0 when neither is known.
+  UtcUs utc = 0;
+  bool ownShip = false;  ///< it came in a !xxVDO sentence
   std::string source;  ///< the connection's name
   io::AisMessage message;
 };
@@ -72,6 +80,15 @@ class LiveSession {
   std::vector<TrackRow> takeTrackRows(std::vector<UtcUs>* utc = nullptr);
   /// The AIS messages decoded since the last call.
   std::vector<LiveAisMessage> takeAisMessages();
+  /// With LiveOptions::frames: the frames of the epochs run since the last call, in time order.
+  std::vector<SimFrame> takeFrames();
+  static constexpr std::size_t kMaxFrames = 10000;
+  /// Frames dropped because no one took them in time.
+  [[nodiscard]] long framesDropped() const { return framesDropped_; }
+  /// The grid frame of the run (origin of result()); only once started().
+  [[nodiscard]] const geo::LocalFrame& frame() const { return *frame_; }
+  /// The stream's clock at a receive time (LiveAisMessage::utc's rule); nullopt before any time.
+  [[nodiscard]] std::optional<UtcUs> clockAt(std::optional<UtcUs> receivedUtc) const;
   /// What became of the AIS lines (decoded, rejected by reason, fragments).
   [[nodiscard]] const io::AisCounters& aisCounters() const { return ais_.counters(); }
 
@@ -88,6 +105,10 @@ class LiveSession {
   std::unique_ptr<replay_runner::Runner> runner_;
   io::AisDecoder ais_;
   std::vector<LiveAisMessage> aisOut_;
+  std::deque<SimFrame> frames_;
+  long framesDropped_ = 0;
+  std::optional<geo::LocalFrame> frame_;
+  std::optional<UtcUs> receivedAtLastRun_;
   std::deque<replay_input::Epoch> waiting_;  ///< decided, waiting for older plots to be decided
   std::optional<UtcUs> lastRun_;
   bool anyEpoch_ = false, finished_ = false;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/angles.h"
 #include "io/error_line.h"
 #include "io/input_error.h"
 #include "sim/replay_input.h"
@@ -14,6 +15,22 @@ using replay_runner::Epoch;
 using replay_runner::Plot;
 using replay_runner::Runner;
 using replay_runner::trackerConfigOf;
+
+ReplayOptions recordedDataOptions(Scenario defaults, SensorProfile profile) {
+  ReplayOptions o;
+  o.settings = std::move(defaults);
+  applySensorProfile(o.settings, profile);
+  assumeRadar(o.settings);
+  o.sweepFromPlots = true;  // no radar configured: the antenna's rotation as the plots show it
+  return o;
+}
+
+void assumeRadar(Scenario& s) {
+  if (s.radar.fitted) return;
+  s.radar.fitted = true;
+  s.radar.rangeSdM = 20.0;
+  s.radar.bearingSdRad = degToRad(0.5);
+}
 
 ReplayResult replay(const std::string& nmeaText, const std::string& nmeaName, const std::string* radarCsv,
                     const std::string& radarName, const ReplayOptions& options) {

@@ -14,6 +14,7 @@
 #include "estimation/nis_window.h"
 #include "navigation/drkf.h"
 #include "sim/scenario.h"
+#include "sim/sensor_profile.h"
 #include "sim/scenario_run.h"
 #include "sim/stream_time.h"
 #include "tracking/track_manager.h"
@@ -58,6 +59,14 @@ struct ReplayOptions {
   /// rotationPeriodS), when they show one, rather than settings.radar's.
   bool sweepFromPlots = false;
 };
+
+/// The options of a replay or live run of recorded data that has no settings of its own (the window's
+/// Live mode, `replay` and `live` without --config): `defaults` (the built-in default scenario) with a
+/// sensor profile (real sensors: the realistic one; the paper's figures are seed 000's Table I), the
+/// radar assumed as assumeRadar() does, and the antenna's rotation taken from the plots.
+ReplayOptions recordedDataOptions(Scenario defaults, SensorProfile profile = SensorProfile::Realistic);
+/// Settings without a radar get the plot noise a replay assumes of one: 20 m in range, 0.5 deg in bearing.
+void assumeRadar(Scenario& s);
 
 /// Outcome of the DRKF updates of one sensor block over the replay (all restarts summed).
 struct SensorUpdateCounts {

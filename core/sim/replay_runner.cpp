@@ -18,6 +18,10 @@ constexpr double kMaxFrameDistanceM = 1000e3;
 constexpr int kFailedEpochsBeforeRestart = 3;
 /// Sweeps closed one by one after the bank has emptied, before a gap in the plots is skipped whole.
 constexpr int kIdleSweeps = 3;
+/// A live frame shows a sensor on while its latest sample is at most this old.
+constexpr TimeUs kSensorHeardUs = 10 * kMicrosPerSecond;
+/// Plots a live frame carries at most (a flood of plots between two epochs is thinned for display).
+constexpr std::size_t kMaxFramePlots = 4096;
 
 std::string labelOf(const std::vector<sensors::OwnShipSample>& samples) {
   std::string s;
@@ -221,8 +225,14 @@ void Runner::ownShip(const Epoch& e) {
   r.sensors = samples.empty() ? "none" : labelOf(samples);
   r.rowsApplied = rep.dim;
   deadReckoning_.addEpoch(rep);
-  r.deadReckoning = deadReckoning_.evaluate(t).active;
+  const nav::DeadReckoningStatus dr = deadReckoning_.evaluate(t);
+  r.deadReckoning = dr.active;
   res_.own.push_back(r);
+  if (sink_) {
+    emitFrame(t, std::move(samples), rep, dr);
+  } else if (bank_) {
+    (void)bank_->takeEvents();  // no one reads them: keep the bank's event list bounded
+  }
   if (failedEpochs_ >= kFailedEpochsBeforeRestart) {
     stop();
     ++stats.restartsAfterFailure;
@@ -262,8 +272,54 @@ void Runner::closeSweepsUntil(TimeUs t) {
       res_.tracks.back().manual = tr.manual;
       res_.trackRowUtc.push_back(res_.utc0 + *nextSweepEnd_);
     }
+    if (sink_) {
+      SweepSnapshot snap;
+      snap.timeUs = *nextSweepEnd_;
+      for (const auto& tr : bank_->tracks()) snap.tracks.push_back(trackSnapshotOf(*bank_, tr, snap.timeUs, gamma));
+      sweeps_.push_back(std::move(snap));
+    }
     *nextSweepEnd_ += sweepUs_;
   }
+}
+
+void Runner::emitFrame(TimeUs t, std::vector<sensors::OwnShipSample>&& samples,
+                       const nav::DrkfUpdateReport& rep, const nav::DeadReckoningStatus& dr) {
+  SimFrame f;
+  f.timeUs = t;
+  f.hasTruth = false;
+  f.estimate = drkf_->belief();
+  // No truth: the estimate stands in its place for geometry only (SimFrame::hasTruth).
+  f.trueState = f.estimate.x;
+  f.truth.timeUs = t;
+  f.truth.position = {f.estimate.x[est::drkf::kPosX], f.estimate.x[est::drkf::kPosY]};
+  f.truth.waterVxMps = f.estimate.x[est::drkf::kVelX] - f.estimate.x[est::drkf::kCurX];
+  f.truth.waterVyMps = f.estimate.x[est::drkf::kVelY] - f.estimate.x[est::drkf::kCurY];
+  f.truth.currentXMps = f.estimate.x[est::drkf::kCurX];
+  f.truth.currentYMps = f.estimate.x[est::drkf::kCurY];
+  const double heading = headingOf(f.estimate);
+  f.truth.headingRad = std::isfinite(heading) ? heading : 0.0;
+  for (std::size_t b = 0; b < nis_.size(); ++b) f.noisierThanConfigured[b] = nis_[b].lastAbove();
+  for (const auto& m : samples) {
+    lastSampleUs_[static_cast<std::size_t>(sensors::sensorOf(m))] = t;
+    if (const auto* log = std::get_if<sensors::SpeedlogSample>(&m)) logMode_ = log->mode;
+  }
+  for (std::size_t i = 0; i < lastSampleUs_.size(); ++i)
+    f.sensors.on[i] = lastSampleUs_[i] && t - *lastSampleUs_[i] <= kSensorHeardUs;
+  f.sensors.speedlogMode = logMode_;
+  f.measurements = std::move(samples);
+  f.updates.push_back(rep);
+  f.deadReckoning = dr;
+  if (bank_) {
+    const double gamma = ownInput().convergenceRad;
+    for (const auto& tr : bank_->tracks()) f.tracks.push_back(trackSnapshotOf(*bank_, tr, t, gamma));
+    f.trackEvents = bank_->takeEvents();
+    f.capacityWarning = bank_->capacityWarning();
+    f.zones = bank_->zones();
+  }
+  f.sweeps.swap(sweeps_);
+  f.plots.swap(plots_);
+  f.plotSources.assign(f.plots.size(), -1);
+  sink_(std::move(f));
 }
 
 void Runner::plot(const Plot& p) {
@@ -278,6 +334,7 @@ void Runner::plot(const Plot& p) {
   const sensors::RadarPlot rp{tp, p.rangeM, p.bearingRad, o_.settings.radar.plotRangeVarM2(),
                               o_.settings.radar.plotBearingVarRad2()};
   bank_->addPlot(track::toGrid(rp, frame_.gridInfo({own.x[0], own.x[1]})), p.tag);
+  if (sink_ && plots_.size() < kMaxFramePlots) plots_.push_back(rp);
 }
 
 void Runner::finish() {

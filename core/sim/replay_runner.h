@@ -2,6 +2,8 @@
 // Internal to sim/: the engine of a replay (sim/replay.h) and of a live run (sim/live_session.h): the
 // DRKF and the track bank driven through own-ship epochs and radar plots in time order, their rows and
 // counts written into a ReplayResult. One engine, so a live run fed a recording gives the replay's rows.
+#include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +13,7 @@
 #include "navigation/drkf.h"
 #include "sim/replay.h"
 #include "sim/replay_input.h"
+#include "sim/simulation_engine.h"
 #include "tracking/track_manager.h"
 
 namespace reckoner::sim::replay_runner {
@@ -42,6 +45,10 @@ class Runner {
   void ownShip(const Epoch& e);
   void plot(const Plot& p);
   void finish();
+  /// A live run's frames: after every own-ship epoch the DRKF ran, a SimFrame without truth (estimate,
+  /// samples, update report, sensors heard, tracks, the sweeps closed and plots taken since the
+  /// previous frame, track events, dead reckoning) goes to the sink. None without one.
+  void setFrameSink(std::function<void(SimFrame&&)> sink) { sink_ = std::move(sink); }
 
  private:
   [[nodiscard]] TimeUs rel(UtcUs u) const { return u - res_.utc0; }
@@ -59,6 +66,8 @@ class Runner {
   void count(const nav::DrkfUpdateReport& rep, const std::vector<sensors::OwnShipSample>& samples);
   [[nodiscard]] track::OwnShipInput ownInput() const;
   void closeSweepsUntil(TimeUs t);
+  void emitFrame(TimeUs t, std::vector<sensors::OwnShipSample>&& samples, const nav::DrkfUpdateReport& rep,
+                 const nav::DeadReckoningStatus& dr);
 
   const ReplayOptions& o_;
   ReplayResult& res_;
@@ -72,6 +81,12 @@ class Runner {
   nav::DeadReckoningMonitor deadReckoning_;
   bool restarted_ = false;
   int failedEpochs_ = 0;
+  // The frame sink and what its next frame carries besides the epoch.
+  std::function<void(SimFrame&&)> sink_;
+  std::vector<SweepSnapshot> sweeps_;
+  std::vector<sensors::RadarPlot> plots_;
+  std::array<std::optional<TimeUs>, sensors::kOwnShipSensorCount> lastSampleUs_{};
+  sensors::SpeedlogMode logMode_ = sensors::SpeedlogMode::GroundLock;
 };
 
 }  // namespace reckoner::sim::replay_runner

@@ -43,6 +43,12 @@ void NmeaStream::push(std::string_view line, std::optional<UtcUs> receivedUtc) {
   place(std::move(*p), receivedUtc);
 }
 
+std::optional<UtcUs> NmeaStream::clockAt(std::optional<UtcUs> receivedUtc) const {
+  if (!lastTimedUtc_) return std::nullopt;
+  if (!receivedUtc || !lastTimedReceived_ || *receivedUtc < *lastTimedReceived_) return lastTimedUtc_;
+  return *lastTimedUtc_ + (*receivedUtc - *lastTimedReceived_);
+}
+
 void NmeaStream::startDays(std::optional<UtcUs> receivedUtc) {
   const auto dated = std::find_if(undated_.begin(), undated_.end(),
                                   [](const Held& q) { return detail::hasDate(q.p.sentence); });

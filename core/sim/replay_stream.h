@@ -49,6 +49,9 @@ class NmeaStream {
 
   /// Every source seen, in first-seen order.
   [[nodiscard]] std::vector<SourceStats> sources() const;
+  /// The stream's clock at a receive time: the latest timed sentence's UTC, carried on by the receive
+  /// clock since it arrived (when both have one); nullopt before the first timed sentence is placed.
+  [[nodiscard]] std::optional<UtcUs> clockAt(std::optional<UtcUs> receivedUtc) const;
   std::vector<std::string>& warnings() { return warnings_; }
 
  private:

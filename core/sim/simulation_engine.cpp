@@ -173,7 +173,8 @@ track::OwnShipInput SimulationEngine::ownShipInput() const {
   return in;
 }
 
-TrackSnapshot SimulationEngine::snapshotOf(const track::Track& t, TimeUs time, double convergence) const {
+TrackSnapshot trackSnapshotOf(const track::TrackManager& bank, const track::Track& t, TimeUs time,
+                              double convergenceRad) {
   TrackSnapshot s;
   s.trackId = t.id;
   s.targetId = t.tag();
@@ -183,8 +184,8 @@ TrackSnapshot SimulationEngine::snapshotOf(const track::Track& t, TimeUs time, d
   s.manoeuvring = t.manoeuvring;
   s.kind = t.filter.kind();
   s.initiatedUs = t.initiatedUs;
-  s.estimate = manager_->beliefAt(t, time);
-  s.kinematics = track::kinematicsOf(s.estimate, convergence);
+  s.estimate = bank.beliefAt(t, time);
+  s.kinematics = track::kinematicsOf(s.estimate, convergenceRad);
   s.radarUpdates = t.radarUpdates;
   s.lastNis = t.lastRadar.nis;
   return s;
@@ -238,7 +239,7 @@ void SimulationEngine::startSweep(TimeUs t, SimFrame& frame) {
     snap.ownTruth = truth_.state();
     for (const auto& m : targets_) snap.targets.push_back(m.state());
     const double convergence = ownShipInput().convergenceRad;
-    for (const auto& tr : manager_->tracks()) snap.tracks.push_back(snapshotOf(tr, t, convergence));
+    for (const auto& tr : manager_->tracks()) snap.tracks.push_back(trackSnapshotOf(*manager_, tr, t, convergence));
     frame.sweeps.push_back(std::move(snap));
     matchRadar(t, frame);
   }
@@ -328,7 +329,7 @@ SimFrame SimulationEngine::step() {
   }
   if (!manager_->tracks().empty()) {
     const double convergence = ownShipInput().convergenceRad;
-    for (const auto& t : manager_->tracks()) frame.tracks.push_back(snapshotOf(t, end, convergence));
+    for (const auto& t : manager_->tracks()) frame.tracks.push_back(trackSnapshotOf(*manager_, t, end, convergence));
   }
   frame.trackEvents = manager_->takeEvents();
   frame.capacityWarning = manager_->capacityWarning();

@@ -78,6 +78,10 @@ struct RadarPicture {
 
 struct SimFrame {
   TimeUs timeUs = 0;
+  /// A simulation's frame carries the truth; a live run's (sim/live_session.h) does not: its truth
+  /// and trueState then hold the estimate, only so that geometry (the grid convergence at own ship)
+  /// has a place; nothing may score or draw them as truth.
+  bool hasTruth = true;
   VesselTruth truth;
   est::drkf::State trueState;  ///< truth in the DRKF's coordinates (incl. sensor error states)
   bool shipMotion = false;     ///< trueState's x4, x8 are the ship model's (along-track, turn rate)
@@ -104,6 +108,11 @@ struct SimFrame {
   /// Dead reckoning at timeUs: no recent position fix (nav::DeadReckoningMonitor's rule).
   nav::DeadReckoningStatus deadReckoning;
 };
+
+/// A track of `bank` as the ARPA shows it at `time` (its belief predicted there; lost: at its last
+/// plot), with course and speed true through the grid convergence at own ship.
+TrackSnapshot trackSnapshotOf(const track::TrackManager& bank, const track::Track& t, TimeUs time,
+                              double convergenceRad);
 
 /// Truth of own ship and a target in the TTKF's coordinates (own acceleration: through the water,
 /// exact when there is no current).
@@ -185,7 +194,6 @@ class SimulationEngine {
   const geo::GridInfo& truthGrid();
   void ownShipEpoch(TimeUs t, SimFrame& frame);
   void startSweep(TimeUs t, SimFrame& frame);
-  [[nodiscard]] TrackSnapshot snapshotOf(const track::Track& t, TimeUs time, double convergence) const;
   void radarPlot(const PendingPlot& p, SimFrame& frame);
   void advanceTargetsTo(TimeUs t);
   void matchRadar(TimeUs t, SimFrame& frame);

@@ -335,6 +335,13 @@ std::size_t AisTargetTable::activatedCount() const {
       std::count_if(targets_.begin(), targets_.end(), [](const auto& e) { return e.second.activated; }));
 }
 
+bool AisTargetTable::setDangerLimits(double cpaM, double tcpaS) {
+  if (!(std::isfinite(cpaM) && cpaM > 0.0 && std::isfinite(tcpaS) && tcpaS > 0.0)) return false;
+  limits_.cpaLimitM = cpaM;
+  limits_.tcpaLimitS = tcpaS;
+  return true;
+}
+
 bool AisTargetTable::activate(std::uint32_t mmsi, bool on) {
   auto it = targets_.find(mmsi);
   if (it == targets_.end()) return false;

@@ -141,6 +141,9 @@ class AisTargetTable {
   /// Operator activation (true) or deactivation; false when the target is unknown or the activated
   /// limit is reached (counted).
   bool activate(std::uint32_t mmsi, bool on = true);
+  /// The operator's CPA (m) and TCPA (s) limits of the dangerous flag from the next update(); false,
+  /// changing nothing, unless both are finite and positive.
+  bool setDangerLimits(double cpaM, double tcpaS);
   /// Selects one target (0: none); false when the MMSI is unknown.
   bool select(std::uint32_t mmsi);
 

@@ -1,7 +1,8 @@
 // live: NMEA 0183, AIS and radar plots from live connections (UDP, TCP, serial, gpsd, a file played in
-// real time) through the replay's engine as they arrive (sim/live_session.h), written to the replay's
-// ownship.csv, targets.csv and summary.json plus ais.csv (docs/outputs.md, "Live input"), until SIGINT,
-// SIGTERM, --duration or, with files alone, their end.
+// real time) through the replay's engine as they arrive (sim/live_session.h), the alerts and the AIS
+// target table kept beside it (sim/live_watch.h), written to the replay's ownship.csv, targets.csv and
+// summary.json plus ais.csv and alerts.csv (docs/outputs.md, "Live input"), until SIGINT, SIGTERM,
+// --duration or, with files alone, their end.
 #include <QCoreApplication>
 #include <QSocketNotifier>
 #include <QTimer>
@@ -23,6 +24,7 @@
 #include "files/live_output.h"
 #include "io/input_error.h"
 #include "sim/live_session.h"
+#include "sim/live_watch.h"
 #include "sim/nmea_output.h"
 #include "source_config.h"
 
@@ -34,6 +36,7 @@ struct LiveArgs {
   std::optional<double> durationS;
   std::optional<std::string> nmeaOut;
   bool nmeaOutAis = false;
+  bool noNmeaOutAlerts = false;
   double reorderHorizonS = 1.0;
   double statusIntervalS = 1.0;
   double fileRate = 1.0;
@@ -78,14 +81,20 @@ std::vector<conn::SourceConfig> sourcesOf(const LiveArgs& a) {
 class LiveEngine {
  public:
   LiveEngine(const LiveArgs& a, const sim::LiveOptions& options, const std::string& out)
-      : a_(a), session_(options), writer_(out, options.radar), nmea_(nmeaOptions(a)) {
+      : a_(a),
+        session_(options),
+        watch_(watchSettings(options)),
+        writer_(out, options.radar),
+        nmea_(nmeaOptions(a)) {
     // after the application: a TCP server lives in its event loop
     if (a.nmeaOut) sink_ = std::make_unique<NmeaSink>(*a.nmeaOut);
   }
 
   /// Every line the hub holds into the session; the rows written and sent.
   void consume(conn::ConnectionHub& hub) {
+    std::optional<UtcUs> received;
     for (const conn::ReceivedLine& l : hub.take()) {
+      if (l.receivedUtc) received = l.receivedUtc;
       if (l.role == conn::Role::Radar) {
         session_.radar(l.line, l.receivedUtc);
         ++radarLines_;
@@ -95,13 +104,16 @@ class LiveEngine {
         if (sink_ && a_.nmeaOutAis) sink_->write(nmea_.ais(l.line));
       }
     }
-    send(writer_.append(session_));
+    const sim::LiveWatch::Taken taken = watch_.absorb(session_, received);
+    send(writer_.append(session_, taken.ais, watch_));
   }
 
   void printStatus(const conn::ConnectionHub& hub) const {
     std::fprintf(stderr,
-                 "live: %ld lines, %ld radar lines, %ld own-ship rows, %ld track rows, %ld AIS messages",
-                 lines_, radarLines_, writer_.ownRows(), writer_.trackRows(), writer_.aisRows());
+                 "live: %ld lines, %ld radar lines, %ld own-ship rows, %ld track rows, %ld AIS messages, "
+                 "%zu AIS targets, %zu alerts",
+                 lines_, radarLines_, writer_.ownRows(), writer_.trackRows(), writer_.aisRows(),
+                 watch_.aisTable().size(), watch_.alerts().alerts().size());
     for (const conn::SourceStatus& s : hub.status())
       std::fprintf(stderr, "; %s %s %llu lines", s.name.c_str(), conn::stateName(s.state),
                    static_cast<unsigned long long>(s.lines));
@@ -112,14 +124,16 @@ class LiveEngine {
   void finish(conn::ConnectionHub& hub, const std::string& out) {
     consume(hub);
     session_.finish();
-    send(writer_.finish(session_, "live"));
+    const sim::LiveWatch::Taken taken = watch_.absorb(session_, std::nullopt);
+    send(writer_.finish(session_, taken.ais, watch_, "live"));
     for (const auto& w : session_.result().warnings)
       std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
     if (wantsTable(a_.output))
       std::printf(
           "Reckoner live: %ld lines, %ld radar lines; wrote %ld own-ship rows, %ld track rows, %ld AIS "
-          "messages to %s\n",
-          lines_, radarLines_, writer_.ownRows(), writer_.trackRows(), writer_.aisRows(), out.c_str());
+          "messages, %ld alert changes to %s\n",
+          lines_, radarLines_, writer_.ownRows(), writer_.trackRows(), writer_.aisRows(), writer_.alertRows(),
+          out.c_str());
     if (sink_) {
       const std::string account = sink_->finish();
       if (wantsTable(a_.output)) std::printf("  sent %s\n", account.c_str());
@@ -127,20 +141,33 @@ class LiveEngine {
   }
 
  private:
+  /// The alert limits of the settings (their tracker's CPA/TCPA for radar tracks and AIS targets alike).
+  static sim::LiveWatchSettings watchSettings(const sim::LiveOptions& o) {
+    sim::LiveWatchSettings w;
+    w.alerts = sim::alertFeedSettingsFor(o.replay.settings);
+    w.ais.cpaLimitM = w.alerts.cpa.cpaM;
+    w.ais.tcpaLimitS = w.alerts.cpa.tcpaS;
+    return w;
+  }
   static sim::NmeaOutputOptions nmeaOptions(const LiveArgs& a) {
     sim::NmeaOutputOptions o;
     o.ais = a.nmeaOutAis;
     return o;
   }
   void send(const files::LiveBatch& batch) {
-    if (!sink_ || !session_.started()) return;
-    const geo::GeoPoint o = session_.result().origin;
-    sink_->write(
-        sim::rowsNmea(nmea_, batch.own, batch.tracks, batch.trackUtc, geo::LocalFrame(o.latDeg, o.lonDeg)));
+    if (!sink_) return;
+    if (session_.started()) {
+      const geo::GeoPoint o = session_.result().origin;
+      sink_->write(
+          sim::rowsNmea(nmea_, batch.own, batch.tracks, batch.trackUtc, geo::LocalFrame(o.latDeg, o.lonDeg)));
+    }
+    if (!a_.noNmeaOutAlerts && watch_.zeroUtc() != 0)
+      sink_->write(nmea_.alerts(watch_.nowUs(), watch_.nowUtc(), watch_.alerts().alerts()));
   }
 
   const LiveArgs& a_;
   sim::LiveSession session_;
+  sim::LiveWatch watch_;
   files::LiveOutputWriter writer_;
   sim::NmeaOutput nmea_;
   std::unique_ptr<NmeaSink> sink_;
@@ -155,6 +182,7 @@ int liveCommand(const LiveArgs& a) {
   lo.reorderHorizonS = a.reorderHorizonS;
   lo.radar =
       std::any_of(sources.begin(), sources.end(), [](const auto& c) { return c.role == conn::Role::Radar; });
+  lo.frames = true;  // the watch's alerts read them
   const std::string out = prepareOutDir(a.output);
 
   int argc = 1;
@@ -229,9 +257,11 @@ void addLiveCommands(CLI::App& root, Commands& out) {
           "a status line on stderr this often, seconds (0: none)");
   addNmeaOut(*app, a->nmeaOut);
   app->add_flag("--nmea-out-ais", a->nmeaOutAis, "pass the AIS sentences received through to --nmea-out");
+  app->add_flag("--no-nmea-out-alerts", a->noNmeaOutAlerts,
+                "send no alert sentences (ALR, ALF, ALC) to --nmea-out, only own ship and tracks");
   addReplaySettings(*app, a->settings);
   addOutputOptions(*app, a->output, Summary::None,
-                   "ownship.csv, summary.json, ais.csv, targets.csv with radar");
+                   "ownship.csv, summary.json, ais.csv, alerts.csv, targets.csv with radar");
   out.push_back({app, [a] { return liveCommand(*a); }, "live takes no positional arguments"});
 }
 

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "files/ais_output.h"
+#include "files/alert_output.h"
 #include "files/track_output.h"
 #include "io/input_error.h"
 #include "io/json.h"
@@ -33,16 +34,18 @@ void LiveOutputWriter::flush(File& file) {
 LiveOutputWriter::LiveOutputWriter(const std::string& dir, bool radar)
     : dir_(dir),
       own_(open(dir + "/ownship.csv", replayOwnShipCsvHeader())),
-      ais_(open(dir + "/ais.csv", aisCsvHeader())) {
+      ais_(open(dir + "/ais.csv", aisCsvHeader())),
+      alerts_(open(dir + "/alerts.csv", alertCsvHeader())) {
   if (radar) targets_ = open(dir + "/targets.csv", replayTargetsCsvHeader());
 }
 
 LiveOutputWriter::~LiveOutputWriter() {
-  for (File* file : {&own_, &targets_, &ais_})
+  for (File* file : {&own_, &targets_, &ais_, &alerts_})
     if (file->f) std::fclose(file->f);
 }
 
-LiveBatch LiveOutputWriter::append(sim::LiveSession& session) {
+LiveBatch LiveOutputWriter::append(sim::LiveSession& session, const std::vector<sim::LiveAisMessage>& ais,
+                                   sim::LiveWatch& watch) {
   LiveBatch batch;
   batch.own = session.takeOwnRows();
   const std::vector<sim::ReplayOwnRow>& own = batch.own;
@@ -62,20 +65,27 @@ LiveBatch LiveOutputWriter::append(sim::LiveSession& session) {
     trackRows_ += static_cast<long>(tracks.size());
     flush(targets_);
   }
-  const std::vector<sim::LiveAisMessage> ais = session.takeAisMessages();
   for (const sim::LiveAisMessage& m : ais) put(ais_, aisCsvLine(m.utc, m.source, m.message));
   if (!ais.empty()) {
     aisRows_ += static_cast<long>(ais.size());
     flush(ais_);
   }
+  const std::vector<alerts::AlertLogEntry> log = watch.alerts().takeLog();
+  for (const alerts::AlertLogEntry& e : log) put(alerts_, alertCsvLine(e, watch.zeroUtc()));
+  if (!log.empty()) {
+    alertRows_ += static_cast<long>(log.size());
+    flush(alerts_);
+  }
   return batch;
 }
 
-LiveBatch LiveOutputWriter::finish(sim::LiveSession& session, const std::string& inputName) {
-  LiveBatch last = append(session);
+LiveBatch LiveOutputWriter::finish(sim::LiveSession& session, const std::vector<sim::LiveAisMessage>& ais,
+                                   sim::LiveWatch& watch, const std::string& inputName) {
+  LiveBatch last = append(session, ais, watch);
+  const track::AisTableCounts t = watch.aisTable().counts();
   const double span = firstOwn_ ? toSeconds(*lastOwn_ - *firstOwn_) : 0.0;
   const io::AisCounters& c = session.aisCounters();
-  const auto aisObject = [&c](io::JsonWriter& w) {
+  const auto aisObject = [&c, &t, &watch](io::JsonWriter& w) {
     const auto count = [&w](const char* k, std::uint64_t v) { w.key(k).value(static_cast<std::int64_t>(v)); };
     w.key("ais").beginObject();
     count("lines", c.lines);
@@ -90,6 +100,24 @@ LiveBatch LiveOutputWriter::finish(sim::LiveSession& session, const std::string&
     count("evicted_partials", c.evictedPartials);
     count("unsupported_type", c.unsupportedType);
     count("too_short", c.tooShort);
+    w.endObject();
+    w.key("ais_targets").beginObject();
+    count("targets", t.targets);
+    count("dangerous", t.dangerous);
+    count("lost", t.lost);
+    count("messages", t.messages);
+    count("own_ship_messages", t.ownShipMessages);
+    count("invalid_mmsi", t.invalidMmsi);
+    count("dropped_at_capacity", t.droppedAtCapacity);
+    count("lost_events", t.lostEvents);
+    count("removed", t.removed);
+    w.endObject();
+    w.key("alerts").beginObject();
+    for (int k = 0; k < alerts::kAlertKindCount; ++k) {
+      const auto kind = static_cast<alerts::AlertKind>(k);
+      const int n = watch.alerts().raisedCount(kind);
+      if (n > 0) w.key(alerts::traitsOf(kind).name).value(static_cast<std::int64_t>(n));
+    }
     w.endObject();
   };
   io::writeTextFile(dir_ + "/summary.json", replaySummaryJson(session.result(), inputName, span, aisObject));

@@ -72,7 +72,7 @@ class TestCliHelp : public QObject {
           "--profile paper|imo|realistic",
           "--adaptive-gnss on|off",
           "--nmea-out DEST",
-          "--nmea-out-ais",
+          "--nmea-out-ais", "--no-nmea-out-alerts",
           "--out DIR",
           "--quiet"}},
         {"validate", {"SCENARIO"}},

@@ -15,6 +15,7 @@
 #include "io/json.h"
 #include "io/text_file.h"
 #include "sim/live_session.h"
+#include "sim/live_watch.h"
 #include "sim/replay.h"
 #include "support/text_lines.h"
 
@@ -35,8 +36,14 @@ class TestLiveOutput : public QObject {
     const std::string out = dir.path().toStdString();
     // WHEN fed line by line to a live session whose rows are written every 50 lines
     sim::LiveOptions lo;
+    lo.frames = true;
     sim::LiveSession session(lo);
+    sim::LiveWatch watch;
     files::LiveOutputWriter writer(out, false);
+    const auto write = [&] {
+      const sim::LiveWatch::Taken taken = watch.absorb(session, std::nullopt);
+      writer.append(session, taken.ais, watch);
+    };
     std::size_t a = 0, n = 0;
     io::AisDecoder reference;
     std::size_t aisDecoded = 0;
@@ -46,10 +53,11 @@ class TestLiveOutput : public QObject {
         if (reference.feed(ais[a])) ++aisDecoded;
         session.nmea(ais[a++], std::nullopt, "bus");
       }
-      if (n % 50 == 0) writer.append(session);
+      if (n % 50 == 0) write();
     }
     session.finish();
-    writer.finish(session, "bus");
+    const sim::LiveWatch::Taken last = watch.absorb(session, std::nullopt);
+    writer.finish(session, last.ais, watch, "bus");
     // THEN ownship.csv is the replay's, byte for byte
     const sim::ReplayResult batch = sim::replay(nmea, "bus", nullptr, "", sim::ReplayOptions{});
     files::writeReplayOwnShipCsv(out + "/replay_ownship.csv", batch);
@@ -72,6 +80,14 @@ class TestLiveOutput : public QObject {
     const io::JsonValue* counts = summary.find("nmea");
     QVERIFY(counts && counts->find("epochs"));
     QCOMPARE(counts->find("epochs")->number, static_cast<double>(batch.stats.epochs));
+    // AND the AIS table's and the alerts' objects are there, the table holding the sample's stations
+    const io::JsonValue* targets = summary.find("ais_targets");
+    QVERIFY(targets && targets->find("targets") && targets->find("messages"));
+    QVERIFY(targets->find("targets")->number >= 5);
+    QVERIFY(summary.find("alerts") != nullptr);
+    const auto alertRows = test::splitLines(io::readTextFile(out + "/alerts.csv"));
+    QCOMPARE(alertRows.front(), std::string("utc,t_s,event,priority,kind,source,text"));
+    QCOMPARE(static_cast<long>(alertRows.size()) - 1, writer.alertRows());
   }
 
   void aDirectoryThatCannotBeWrittenIsOneErrorNamingTheFile() {

@@ -51,7 +51,7 @@ constexpr int kRepaintMs = 33;  // <= 30 Hz
 constexpr int kPlotMs = 500;
 constexpr int kMaxRecent = 8;
 const QString kBuiltinPrefix = QStringLiteral("builtin:");
-constexpr int kDockStateVersion = 3;
+constexpr int kDockStateVersion = 4;  // 4: the AIS and data monitor docks
 
 QString clockText(double s) {
   const int total = static_cast<int>(std::floor(s));
@@ -150,6 +150,8 @@ MainWindow::MainWindow(const MainWindowOptions& options, QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+  controller_->stopLive();
+  hub_->stop();
   chartLoad_.worker()->requests().issue();  // stops a load in progress; chartLoad_ then stops the thread
 }
 
@@ -331,6 +333,7 @@ void MainWindow::onFrame(const LiveFrame& frame) {
     if (auto* d = findChild<QDockWidget*>(QStringLiteral("alarmDock"))) d->raise();
   frameDirty_ = true;
   plotsDirty_ = true;
+  if (frame.live) liveFrameArrived(frame);
   if (!frame.running) QTimer::singleShot(0, this, &MainWindow::refreshPlots);  // paused: show all now
   if (firstFrame_ && localFrame_) {
     firstFrame_ = false;
@@ -359,6 +362,7 @@ void MainWindow::repaintTick() {
     radarMatchAction_->setChecked(live.radarMatching);
     radarMatchAction_->setEnabled(live.chartContourSegments > 0 || live.radarMatching);
   }
+  if (live.live) refreshAisTable(live);
   const std::optional<int> selected = view_->selectedTrack();
   model_->setTracks(live.frame.tracks);
   if (selected) {
@@ -387,6 +391,10 @@ void MainWindow::refreshPlots() {
 
 void MainWindow::updateClock() {
   const LiveFrame& live = history_.latest();
+  if (controller_->isLive()) {
+    clock_->setText(live.live ? liveClockText(live) : tr("LIVE  waiting for a position fix"));
+    return;
+  }
   const double t = toSeconds(live.frame.timeUs);
   QString rate;
   if (live.rate == 0.0)

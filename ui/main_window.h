@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "connections/connection_hub.h"
 #include "ui/bridge/chart_load_worker.h"
 #include "ui/bridge/sim_history.h"
 #include "ui/bridge/simulation_controller.h"
@@ -21,6 +22,7 @@
 QT_BEGIN_NAMESPACE
 class QActionGroup;
 class QComboBox;
+class QDockWidget;
 class QDoubleSpinBox;
 class QListWidget;
 class QMenu;
@@ -34,7 +36,10 @@ QT_END_NAMESPACE
 
 namespace reckoner::ui {
 
+class AisTableModel;
 class AlertPanel;
+class ConnectionIndicator;
+class DataMonitor;
 class AlertSound;
 class MessageBar;
 class ChartListPanel;
@@ -92,7 +97,21 @@ class MainWindow : public QMainWindow {
   /// (remembered); refused with a message outside the hull.
   void setCcrp(double fromBowM, double toStarboardM);
 
+  /// Live mode (Live > Live mode, docs/gui.md "Live"): the window's connections through the live
+  /// session instead of the simulation; false with a message when there is no connection. stopLive()
+  /// goes back to the simulation, the scenario loaded again from its start.
+  bool startLive();
+  void stopLive();
+  [[nodiscard]] bool isLive() const;
+
   // For tests and the benchmark.
+  /// The window's connections (Live > Connections), loaded from the settings at start.
+  [[nodiscard]] conn::ConnectionHub* hub() const { return hub_; }
+  [[nodiscard]] AisTableModel* aisModel() const { return aisModel_; }
+  [[nodiscard]] QTableView* aisTable() const { return aisTable_; }
+  [[nodiscard]] DataMonitor* dataMonitor() const { return monitor_; }
+  [[nodiscard]] ConnectionIndicator* connectionIndicator() const { return indicator_; }
+  [[nodiscard]] QLabel* clock() const { return clock_; }
   [[nodiscard]] EcdisView* chart() const { return view_; }
   [[nodiscard]] SimulationController* controller() const { return controller_; }
   [[nodiscard]] const SimHistory& history() const { return history_; }
@@ -138,6 +157,8 @@ class MainWindow : public QMainWindow {
 
  private:
   // main_window_actions.cpp: the docks, menus and toolbars.
+  /// A dock holding `w` in a scroll area (so that no dock sets the window's minimum size).
+  QDockWidget* addScrollDock(const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area);
   void buildDocks();
   void arrangeDocks();
   void buildActions();
@@ -173,6 +194,13 @@ class MainWindow : public QMainWindow {
   void showArrivedCharts(const std::vector<charts::CellPtr>& cells, const QString& failures);
   /// The status bar's chart figures after a render: cells, scale, overscale, render time.
   void showChartStatus(double renderMs);
+  // main_window_live.cpp: Live mode.
+  void buildLive();
+  void buildLiveMenu();
+  /// A live frame: the view's grid frame follows the live run's origin.
+  void liveFrameArrived(const LiveFrame& frame);
+  void refreshAisTable(const LiveFrame& live);
+  [[nodiscard]] QString liveClockText(const LiveFrame& live) const;
   /// A checkable action in `menu` that switches one overlay setting.
   QAction* addOverlayToggle(QMenu* menu, const QString& name, bool OverlaySettings::*member);
 
@@ -241,6 +269,19 @@ class MainWindow : public QMainWindow {
   WorkerThread<ChartLoadWorker> chartLoad_{QStringLiteral("chart-load")};
   bool chartsLoading_ = false;
   ChartArrival chartArrival_ = ChartArrival::Stay;  ///< of the latest load
+  // Live mode.
+  conn::ConnectionHub* hub_ = nullptr;
+  ConnectionIndicator* indicator_ = nullptr;
+  DataMonitor* monitor_ = nullptr;
+  AisTableModel* aisModel_ = nullptr;
+  QSortFilterProxyModel* aisProxy_ = nullptr;
+  QTableView* aisTable_ = nullptr;
+  QAction* liveAction_ = nullptr;
+  /// The AIS table the AIS dock shows (held, so that a new table is never taken for it by address).
+  std::shared_ptr<const std::vector<track::AisTarget>> aisShown_;
+  /// What only the simulation uses (disabled in Live mode).
+  std::vector<QWidget*> simulationControls_;
+  std::vector<QAction*> simulationActions_;
 };
 
 }  // namespace reckoner::ui

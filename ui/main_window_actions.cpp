@@ -54,18 +54,23 @@ QString defaultChartPath() {
 }
 }  // namespace
 
-void MainWindow::buildDocks() {
+QDockWidget* MainWindow::addScrollDock(const QString& title, const QString& name, QWidget* w,
+                                       Qt::DockWidgetArea area) {
   // Every dock scrolls, so that none sets the window's minimum size (it fits a 1024 x 768 screen).
+  auto* d = new QDockWidget(title, this);
+  d->setObjectName(name);
+  auto* scroll = new QScrollArea(d);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setWidget(w);
+  d->setWidget(scroll);
+  addDockWidget(area, d);
+  return d;
+}
+
+void MainWindow::buildDocks() {
   const auto dock = [this](const QString& title, const QString& name, QWidget* w, Qt::DockWidgetArea area) {
-    auto* d = new QDockWidget(title, this);
-    d->setObjectName(name);
-    auto* scroll = new QScrollArea(d);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(w);
-    d->setWidget(scroll);
-    addDockWidget(area, d);
-    return d;
+    return addScrollDock(title, name, w, area);
   };
   ownPanel_ = new OwnShipPanel(this);
   sensors_ = new SensorPanel(this);
@@ -123,6 +128,7 @@ void MainWindow::buildDocks() {
   pick_->setObjectName(QStringLiteral("pickReport"));
   dock(tr("Pick report"), QStringLiteral("pickDock"), pick_, Qt::BottomDockWidgetArea);
   buildChartDock();
+  buildLive();
   arrangeDocks();
 }
 
@@ -132,8 +138,8 @@ void MainWindow::arrangeDocks() {
   // float the docks; the arrangement is remembered (writeSettings).
   const auto d = [this](const char* name) { return findChild<QDockWidget*>(QString::fromLatin1(name)); };
   QDockWidget *own = d("ownShipDock"), *alerts = d("alarmDock");
-  for (const char* name :
-       {"ownShipDock", "sensorDock", "plotDock", "alarmDock", "targetDock", "pickDock", "chartDock"})
+  for (const char* name : {"ownShipDock", "sensorDock", "plotDock", "alarmDock", "targetDock", "aisDock",
+                           "pickDock", "chartDock", "monitorDock"})
     addDockWidget(Qt::RightDockWidgetArea, d(name));
   splitDockWidget(own, alerts, Qt::Vertical);
   tabifyDockWidget(own, d("sensorDock"));
@@ -141,6 +147,8 @@ void MainWindow::arrangeDocks() {
   tabifyDockWidget(alerts, d("targetDock"));
   tabifyDockWidget(alerts, d("pickDock"));
   tabifyDockWidget(alerts, d("chartDock"));
+  tabifyDockWidget(alerts, d("aisDock"));
+  tabifyDockWidget(alerts, d("monitorDock"));
   own->raise();
   alerts->raise();
 }
@@ -153,6 +161,7 @@ void MainWindow::buildActions() {
   buildViewMenu();
   buildHelpMenu();
   buildRadarMenu();
+  buildLiveMenu();
 }
 
 void MainWindow::buildFileMenu() {
@@ -235,6 +244,7 @@ void MainWindow::buildSimulationToolbar() {
   step->setShortcut(QKeySequence(Qt::Key_Period));
   step->setToolTip(tr("Advance one step of the scenario and pause (.)"));
   connect(step, &QAction::triggered, controller_, &SimulationController::stepOnce);
+  simulationActions_ = {runAction_, step};
   rateBox_ = new QComboBox(this);
   rateBox_->setObjectName(QStringLiteral("rate"));
   rateBox_->setToolTip(
@@ -248,6 +258,7 @@ void MainWindow::buildSimulationToolbar() {
     if (history_.latest().running) setRate(lastRunRate_);
   });
   sim->addWidget(rateBox_);
+  simulationControls_ = {rateBox_, sensors_};
   alarmBanner_ = new QLabel(this);
   alarmBanner_->setObjectName(QStringLiteral("alarmBanner"));
   alarmBanner_->setStyleSheet(

@@ -12,8 +12,10 @@
 #include "alerts/alert.h"
 #include "radar/land_mask.h"
 #include "sim/scenario.h"
+#include "sim/live_watch.h"
 #include "sim/simulation_engine.h"
 #include "studies/own_ship_filters.h"
+#include "tracking/ais_targets.h"
 #include "ui/bridge/radar_raster.h"
 
 namespace reckoner::ui {
@@ -136,6 +138,23 @@ struct LiveFrame {
   bool running = false;
   bool finished = false;
   double durationS = 0.0;
+
+  // Live mode (LiveWorker, docs/gui.md "Live"): the frames carry no truth (frame.hasTruth false).
+  bool live = false;
+  /// The live run's grid origin (its first position fix) and the UTC of its time zero.
+  std::optional<geo::GeoPoint> liveOrigin;
+  UtcUs liveUtc0 = 0;
+  /// The AIS target table (shared, replaced when the table changed), its own ship from !xxVDO, its
+  /// counts, the UTC its targets were last brought up to (the symbols are dead reckoned from there),
+  /// and where the watch's own ship came from.
+  std::shared_ptr<const std::vector<track::AisTarget>> aisTargets;
+  std::optional<track::AisTarget> aisOwnShip;
+  track::AisTableCounts aisCounts;
+  UtcUs aisUtc = 0;
+  sim::LiveOwnShipSource ownShipSource = sim::LiveOwnShipSource::None;
+  /// Lines the live run has taken from the connections, and its session's counts.
+  std::uint64_t liveLines = 0;
+  long liveRows = 0;
 };
 
 }  // namespace reckoner::ui

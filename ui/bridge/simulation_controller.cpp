@@ -34,33 +34,41 @@ void SimulationController::load(const sim::Scenario& scenario) {
   sim_.post(&SimulationWorker::load, scenario, loads_.issue());
 }
 void SimulationController::setRate(double rate) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::setRate, rate);
 }
 void SimulationController::stepOnce() {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::stepOnce);
 }
 void SimulationController::runTo(double tS, double rate) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::runTo, tS, rate);
 }
 void SimulationController::orderOwnShip(double trueHeadingRad, double speedMps) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::orderOwnShip, trueHeadingRad, speedMps);
   emit scenarioEdited();
 }
 void SimulationController::orderTarget(int targetId, double trueHeadingRad, double speedMps,
                                        double turnRateRadPerS, double accelerationMps2) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::orderTarget, targetId, trueHeadingRad, speedMps, turnRateRadPerS,
             accelerationMps2);
   emit scenarioEdited();
 }
 void SimulationController::setSensorPower(sensors::SensorId id, bool on) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::setSensorPower, id, on);
   emit scenarioEdited();
 }
 void SimulationController::setSpeedlogMode(sensors::SpeedlogMode mode) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::setSpeedlogMode, mode);
   emit scenarioEdited();
 }
 void SimulationController::setRadarPower(bool on) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::setRadarPower, on);
   emit scenarioEdited();
 }
@@ -68,6 +76,7 @@ void SimulationController::setCharts(const std::vector<charts::CellPtr>& cells) 
   sim_.post(&SimulationWorker::setCharts, cells);
 }
 void SimulationController::setRadarMatching(bool on) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::setRadarMatching, on);
   emit scenarioEdited();
 }
@@ -75,40 +84,88 @@ void SimulationController::setRadarPicturesWanted(bool on) {
   sim_.post(&SimulationWorker::setRadarPicturesWanted, on);
 }
 void SimulationController::setTrackerKind(track::TrackerKind kind) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::setTrackerKind, kind);
   emit scenarioEdited();
 }
 void SimulationController::addTarget(double xM, double yM, double vxMps, double vyMps) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::addTarget, xM, yM, vxMps, vyMps);
   emit scenarioEdited();
 }
 void SimulationController::acquireAt(double xM, double yM) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::acquireAt, xM, yM);
 }
 void SimulationController::cancelTrack(int trackId) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::cancelTrack, trackId);
 }
 void SimulationController::setAutoAcquire(bool on) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::setAutoAcquire, on);
 }
 void SimulationController::setDrLimit(double metres) {
-  sim_.post(&SimulationWorker::setDrLimit, metres);
+  live_ ? live().post(&LiveWorker::setDrLimit, metres) : sim_.post(&SimulationWorker::setDrLimit, metres);
 }
 void SimulationController::setAcquisitionZones(const std::vector<track::AcquisitionZone>& zones) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::setAcquisitionZones, zones);
   emit scenarioEdited();
 }
 void SimulationController::setDiscrepancyLimit(double metres) {
+  if (live_) return;  // the simulation is not running in Live mode
   sim_.post(&SimulationWorker::setDiscrepancyLimit, metres);
 }
 void SimulationController::setCpaLimits(double cpaM, double tcpaS) {
-  sim_.post(&SimulationWorker::setCpaLimits, cpaM, tcpaS);
+  sim_.post(&SimulationWorker::setCpaLimits, cpaM, tcpaS);  // kept for the simulation after Live mode
+  if (live_) live().post(&LiveWorker::setCpaLimits, cpaM, tcpaS);
 }
 void SimulationController::acknowledgeAlert(alerts::AlertId id) {
-  sim_.post(&SimulationWorker::acknowledgeAlert, id);
+  live_ ? live().post(&LiveWorker::acknowledgeAlert, id) : sim_.post(&SimulationWorker::acknowledgeAlert, id);
 }
 void SimulationController::silenceAlerts() {
-  sim_.post(&SimulationWorker::silenceAlerts);
+  live_ ? live().post(&LiveWorker::silenceAlerts) : sim_.post(&SimulationWorker::silenceAlerts);
+}
+
+WorkerThread<LiveWorker>& SimulationController::live() {
+  if (!liveThread_) {
+    liveThread_ = std::make_unique<WorkerThread<LiveWorker>>(QStringLiteral("live"));
+    LiveWorker* w = liveThread_->worker();
+    connect(w, &LiveWorker::frameReady, this, &SimulationController::onLiveFrame, Qt::QueuedConnection);
+    connect(w, &LiveWorker::failed, this, &SimulationController::failed, Qt::QueuedConnection);
+  }
+  return *liveThread_;
+}
+
+void SimulationController::startLive(conn::ConnectionHub* hub, const sim::LiveOptions& options,
+                                     const sim::LiveWatchSettings& watch) {
+  sim_.post(&SimulationWorker::setRate, 0.0);  // the simulation waits, paused, behind the live run
+  live_ = true;
+  latest_ = LiveFrame{};
+  live().post(&LiveWorker::start, hub, options, watch, loads_.issue());
+}
+
+void SimulationController::stopLive() {
+  if (!live_) return;
+  live_ = false;
+  live().post(&LiveWorker::stop);
+  loads_.issue();  // the live run's frames still queued are dropped
+}
+
+void SimulationController::activateAis(quint32 mmsi, bool on) {
+  if (live_) live().post(&LiveWorker::activateAis, mmsi, on);
+}
+void SimulationController::selectAis(quint32 mmsi) {
+  if (live_) live().post(&LiveWorker::selectAis, mmsi);
+}
+
+void SimulationController::onLiveFrame(const LiveFrame& frame) {
+  if (live_ && loads_.isCurrent(frame.loadGeneration)) {
+    latest_ = frame;
+    emit frameArrived(frame);
+  }
+  live().post(&LiveWorker::frameConsumed);
 }
 void SimulationController::requestScenario() {
   sim_.post(&SimulationWorker::requestScenario);

@@ -4,8 +4,10 @@
 // acknowledges each one so that at most one is in flight. Latest load wins: frames of a scenario
 // replaced since (LatestRequest) are acknowledged and dropped.
 #include <QObject>
+#include <memory>
 
 #include "ui/bridge/latest_request.h"
+#include "ui/bridge/live_worker.h"
 #include "ui/bridge/simulation_worker.h"
 #include "ui/bridge/worker_thread.h"
 
@@ -48,6 +50,18 @@ class SimulationController : public QObject {
   /// Asks for the edited scenario; scenarioReady() answers.
   void requestScenario();
 
+  /// Live mode (docs/gui.md, "Live"): the hub's lines through the live session and watch (LiveWorker,
+  /// its own thread, started at the first call) instead of the simulation, which waits paused. The hub
+  /// must outlive the run (stopLive() first). Simulation commands are ignored meanwhile; alerts, CPA
+  /// and DR limits go to the live run.
+  void startLive(conn::ConnectionHub* hub, const sim::LiveOptions& options, const sim::LiveWatchSettings& watch);
+  /// Ends Live mode; the window loads a scenario again to go back to the simulation.
+  void stopLive();
+  [[nodiscard]] bool isLive() const { return live_; }
+  /// Operator activation and selection of an AIS target (Live mode).
+  void activateAis(quint32 mmsi, bool on);
+  void selectAis(quint32 mmsi);
+
   [[nodiscard]] const LiveFrame& latest() const { return latest_; }
   [[nodiscard]] bool hasFrame() const { return latest_.sequence > 0; }
   /// The scenario as loaded (the worker's copy is edited by commands; requestScenario() gets it).
@@ -65,8 +79,12 @@ class SimulationController : public QObject {
 
  private:
   void onFrame(const LiveFrame& frame);
+  void onLiveFrame(const LiveFrame& frame);
+  WorkerThread<LiveWorker>& live();
 
   WorkerThread<SimulationWorker> sim_{QStringLiteral("simulation")};
+  std::unique_ptr<WorkerThread<LiveWorker>> liveThread_;
+  bool live_ = false;
   LiveFrame latest_;
   sim::Scenario scenario_;
   LatestRequest loads_;

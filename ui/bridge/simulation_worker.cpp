@@ -7,6 +7,7 @@
 #include "charts/radar/radar_contours.h"
 #include "common/angles.h"
 #include "sim/run_rows.h"
+#include "ui/bridge/frame_samples.h"
 
 namespace reckoner::ui {
 namespace {
@@ -14,7 +15,6 @@ constexpr qint64 kTickMs = 10;
 constexpr qint64 kStepBudgetNs = 8'000'000;        // per tick: the worker stays responsive to commands
 constexpr qint64 kMinEmitIntervalNs = 33'000'000;  // <= 30 frames per second
 constexpr double kMaxBacklogS = 2.0;               // wall seconds of simulated time the clock may run ahead
-constexpr int kSweepsShown = 6;
 constexpr qint64 kRasterIntervalNs = 100'000'000;  // radar pictures rasterised at most 10 times a second
 constexpr double kChartRadiusM = 100000.0;         // contours and land taken within this of the origin
 
@@ -42,47 +42,6 @@ RadarFixSample radarFixSampleOf(const sim::RadarFixRow& r) {
   return s;
 }
 
-OwnSample ownSampleOf(const sim::OwnShipRow& r, const sim::OwnShipDetailRow& d) {
-  OwnSample s;
-  s.tS = toSeconds(r.timeUs);
-  s.truePos = {r.trueXM, r.trueYM};
-  s.estPos = {r.estXM, r.estYM};
-  s.trueVel = {r.trueVxMps, r.trueVyMps};
-  s.estVel = {r.estVxMps, r.estVyMps};
-  s.sdPos = {r.sdXM, r.sdYM};
-  s.sdVel = {r.sdVxMps, r.sdVyMps};
-  s.trueCurrent = {d.trueCurrentXMps, d.trueCurrentYMps};
-  s.estCurrent = {d.estCurrentXMps, d.estCurrentYMps};
-  s.sdCurrent = {d.sdCurrentXMps, d.sdCurrentYMps};
-  s.trueLoran = {d.trueLoranXM, d.trueLoranYM};
-  s.estLoran = {d.estLoranXM, d.estLoranYM};
-  s.sdLoran = {d.sdLoranXM, d.sdLoranYM};
-  s.trueLogBias = d.trueLogBiasMps;
-  s.estLogBias = d.estLogBiasMps;
-  s.sdLogBias = d.sdLogBiasMps;
-  s.nees = r.nees;
-  s.error95M = d.error95M;
-  return s;
-}
-
-TrackSample trackSampleOf(const sim::TrackRow& r) {
-  TrackSample s;
-  s.tS = toSeconds(r.timeUs);
-  s.trackId = r.trackId;
-  s.targetId = r.targetId;
-  s.manoeuvring = r.manoeuvring;
-  s.estPos = {r.estXM, r.estYM};
-  s.estVel = {r.estVxMps, r.estVyMps};
-  s.sdPos = {r.sdXM, r.sdYM};
-  s.sdVel = {r.sdVxMps, r.sdVyMps};
-  s.hasTruth = r.hasTruth;
-  if (r.hasTruth) {
-    s.truePos = {r.trueXM, r.trueYM};
-    s.trueVel = {r.trueVxMps, r.trueVyMps};
-    s.positionVelocityNees4 = r.positionVelocityNees4;
-  }
-  return s;
-}
 }  // namespace
 
 SimulationWorker::SimulationWorker(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
@@ -114,9 +73,8 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
   targetS_ = 0.0;
   inFlight_ = false;
   pending_ = LiveFrame{};
-  plots_.clear();
+  folder_.clear();
   rateWindow_.clear();
-  sweepCounter_ = 0;
   drHorizon_ = nav::DeadReckoningHorizon{};
   alerts_ = alerts::AlertManager{};
   sim::AlertFeedSettings feedSettings = sim::alertFeedSettingsFor(engine_->scenario());
@@ -208,42 +166,12 @@ void SimulationWorker::stepEngine() {
 void SimulationWorker::absorb(sim::SimFrame&& f) {
   const auto& scenario = engine_->scenario();
   const geo::LocalFrame& geo = engine_->frame();
-  pending_.ownHistory.push_back(
-      ownSampleOf(sim::makeRow(f, geo, engine_->drkf().config().process), sim::ownShipDetailRow(f)));
-  pending_.error95M = pending_.ownHistory.back().error95M;
+  folder_.fold(f, geo, engine_->drkf().config().process, scenario.targets, pending_);
   if (seed002_) {
     seed002_->feed(f);
     pending_.seed002 = std::array<est::Gaussian<4>, 2>{seed002_->ground(studies::OwnShipFilter::Geodetic),
                                                        seed002_->ground(studies::OwnShipFilter::Lsq)};
   }
-  for (const auto& sweep : f.sweeps) {
-    ++sweepCounter_;
-    for (const auto& t : sweep.tracks)
-      pending_.trackHistory.push_back(trackSampleOf(sim::trackRow(sweep, t, scenario.targets, geo)));
-  }
-  const std::vector<geo::GridPoint> placed = sim::plotPositionsFromEstimate(f, geo);
-  for (std::size_t i = 0; i < placed.size(); ++i)
-    plots_.push_back({toSeconds(f.plots[i].timeUs), placed[i].xM, placed[i].yM, sweepCounter_});
-  while (!plots_.empty() && plots_.front().sweep < sweepCounter_ - kSweepsShown) plots_.pop_front();
-  // Last fixes and the last report per measurement block.
-  for (const auto& m : f.measurements) {
-    if (const auto* g = std::get_if<sensors::GpsSample>(&m))
-      pending_.lastFix[0] = {true, toSeconds(g->timeUs), g->position.xM, g->position.yM, false};
-    else if (const auto* l = std::get_if<sensors::LoranSample>(&m))
-      pending_.lastFix[1] = {true, toSeconds(l->timeUs), l->position.xM, l->position.yM, false};
-  }
-  for (const auto& u : f.updates) {
-    for (int b = 0; b < nav::kDrkfBlockCount; ++b) {
-      const est::BlockReport* r = u.block(static_cast<nav::DrkfBlock>(b));
-      if (!r) continue;
-      BlockStatus& s = pending_.blocks[static_cast<std::size_t>(b)];
-      s = {true, toSeconds(u.timeUs), r->nis, r->dim,
-           r->status == est::UpdateStatus::Accepted || r->status == est::UpdateStatus::AcceptedForced};
-      if (b == nav::kGpsPosition && pending_.lastFix[0].valid) pending_.lastFix[0].accepted = s.accepted;
-      if (b == nav::kLoranPosition && pending_.lastFix[1].valid) pending_.lastFix[1].accepted = s.accepted;
-    }
-  }
-  pending_.events.insert(pending_.events.end(), f.trackEvents.begin(), f.trackEvents.end());
   if (alertFeed_) {
     alertFeed_->feed(f, alerts_);
     const auto log = alerts_.takeLog();
@@ -287,7 +215,7 @@ void SimulationWorker::maybeEmit(bool force) {
   updateDeadReckoning();
   pending_.sequence = ++sequence_;
   pending_.loadGeneration = generation_;
-  pending_.recentPlots.assign(plots_.begin(), plots_.end());
+  pending_.recentPlots.assign(folder_.plots().begin(), folder_.plots().end());
   pending_.rate = rate_;
   pending_.radarOn =
       engine_->scenario().radar.fitted && engine_->scenario().radar.power.at(engine_->timeUs());

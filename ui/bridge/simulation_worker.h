@@ -16,6 +16,7 @@
 #include "navigation/dead_reckoning_monitor.h"
 #include "radar/land_mask.h"
 #include "sim/alert_feed.h"
+#include "ui/bridge/frame_samples.h"
 #include "ui/bridge/live_frame.h"
 
 namespace reckoner::ui {
@@ -100,8 +101,7 @@ class SimulationWorker : public QObject {
   std::optional<double> stopAtS_;
   LiveFrame pending_;
   std::deque<std::pair<qint64, double>> rateWindow_;  // (wall ns, sim s) for the achieved rate
-  int sweepCounter_ = 0;
-  std::deque<ShownPlot> plots_;
+  FrameFolder folder_;
   std::vector<charts::CellPtr> cells_;
   std::shared_ptr<const radar::Coastline> coast_;
   std::shared_ptr<const radar::LandMask> landMask_;

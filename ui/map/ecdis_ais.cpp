@@ -1,5 +1,6 @@
 #include "ui/map/ecdis_ais.h"
 
+#include <QDateTime>
 #include <QLineF>
 #include <QPainterPath>
 #include <QPolygonF>
@@ -11,6 +12,7 @@
 
 #include "common/angles.h"
 #include "common/units.h"
+#include "ui/map/ecdis_view.h"
 
 namespace reckoner::ui {
 
@@ -196,6 +198,30 @@ QString aisPickReport(const track::AisTarget& t) {
   if (t.lost) state << QStringLiteral("LOST");
   l << state.join(QStringLiteral(", "));
   return l.join(QLatin1Char('\n'));
+}
+
+void EcdisView::paintAis(QPainter& p) {
+  const LiveFrame& live = history_->latest();
+  if (!live.aisTargets || live.aisTargets->empty()) return;
+  if (aisSymbolsOf_ != live.aisTargets) {
+    aisSymbols_.clear();
+    aisSymbols_.reserve(live.aisTargets->size());
+    for (const track::AisTarget& t : *live.aisTargets)
+      if (auto s = aisSymbolOf(t, *frame_, live.aisUtc)) aisSymbols_.push_back(*s);
+    aisSymbolsOf_ = live.aisTargets;
+  }
+  const geo::GridPoint c = ccrpGrid();
+  const Local at = localAt(c.xM, c.yM);
+  AisPaintGeometry g;
+  g.toWidget = [this](double xM, double yM) { return gridToWidget(xM, yM); };
+  g.pixelsPerMetre = at.pxPerMetre();
+  g.gridNorthScreenRad = std::atan2(at.b, -at.d);  // grid north (0, 1) on screen, clockwise from up
+  AisPaintStyle style;
+  style.colour = colour("ais");
+  style.dangerous = colour("danger");
+  style.vectorMinutes = overlay_.vectorMinutes;
+  style.flashOn = (QDateTime::currentMSecsSinceEpoch() / 500) % 2 == 0;
+  paintAisTargets(p, aisSymbols_, g, style);
 }
 
 }  // namespace reckoner::ui

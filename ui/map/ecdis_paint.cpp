@@ -90,6 +90,7 @@ QColor EcdisView::colour(const char* role) const {
       {"truth", {qRgb(120, 120, 120), qRgb(150, 150, 150), qRgb(80, 80, 80)}},
       {"ellipse", {qRgb(0, 90, 200), qRgb(90, 160, 255), qRgb(50, 90, 150)}},
       {"target", {qRgb(0, 130, 0), qRgb(80, 220, 80), qRgb(40, 130, 40)}},
+      {"ais", {qRgb(20, 20, 20), qRgb(210, 210, 210), qRgb(150, 150, 150)}},
       {"danger", {qRgb(220, 0, 0), qRgb(255, 60, 60), qRgb(170, 30, 30)}},
       {"plot", {qRgb(200, 120, 0), qRgb(255, 190, 60), qRgb(150, 100, 30)}},
       {"tool", {qRgb(120, 0, 140), qRgb(220, 120, 230), qRgb(130, 70, 140)}},
@@ -118,6 +119,7 @@ void EcdisView::paintOverlay(QPainter& p, const charts::Viewport& view) {
     if (overlay_.showRadarEchoes) paintRadarEchoes(p);
     if (overlay_.showPlots) paintPlots(p);
     paintTargets(p);
+    if (overlay_.showAis) paintAis(p);
     paintOwnShip(p);
   }
   // The boxes first (labels keep out of them), the labels last.
@@ -162,13 +164,14 @@ void EcdisView::paintOwnShip(QPainter& p) {
   const geo::GridPoint c = ccrpGrid();
   const Local ccrp = localAt(c.xM, c.yM);
   if (overlay_.showPastTrack) paintPastTrack(p);
-  if (overlay_.showTruth) paintTruth(p, est);
+  if (overlay_.showTruth && history_->latest().frame.hasTruth) paintTruth(p, est);
   paintFixes(p);
   if (overlay_.showEllipses) paintOwnEllipse(p, est);
   if (overlay_.seed002Shown > 0 && history_->latest().seed002) paintSeed002(p);
   paintCourseVector(p, ccrp);
   paintOwnSymbol(p, est, ccrp);
-  paintOrderedVector(p, ccrp);  // above the COG vector and the symbol
+  // above the COG vector and the symbol; a live ship takes no orders from the chart
+  if (!history_->latest().live) paintOrderedVector(p, ccrp);
   if (!ownOutline(est).isEmpty()) {
     // The CCRP on the true-scale outline, above the vectors that start there: a circle with a cross,
     // on a disc of the panel colour.

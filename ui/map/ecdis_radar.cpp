@@ -23,7 +23,7 @@ void EcdisView::paintRadarPicture(QPainter& p) {
   if (!live.radarRaster || live.radarRaster->isNull()) return;
   const RadarRaster& r = *live.radarRaster;
   const QColor c = radarColour();
-  if (radarImageOf_ != live.radarRaster.get() || radarImageColour_ != c.rgb()) {
+  if (radarImageOf_ != live.radarRaster || radarImageColour_ != c.rgb()) {
     radarImage_ = QImage(r.mask.size(), QImage::Format_ARGB32_Premultiplied);
     for (int y = 0; y < r.mask.height(); ++y) {
       const uchar* in = r.mask.constScanLine(y);
@@ -31,7 +31,7 @@ void EcdisView::paintRadarPicture(QPainter& p) {
       for (int x = 0; x < r.mask.width(); ++x)
         out[x] = in[x] ? qPremultiply(qRgba(c.red(), c.green(), c.blue(), in[x])) : 0;
     }
-    radarImageOf_ = live.radarRaster.get();
+    radarImageOf_ = live.radarRaster;
     radarImageColour_ = c.rgb();
   }
   // Grid metres to widget pixels, linearised at the picture's centre (the chart's projection is
@@ -46,7 +46,7 @@ void EcdisView::paintRadarPicture(QPainter& p) {
   const QTransform imageToGrid(m, 0.0, 0.0, -m, r.centreX - h, r.centreY + h);
   p.save();
   if (!overlay_.radarOverChart && live.land && !live.land->empty()) {
-    if (waterOf_ != live.land.get()) {
+    if (waterOf_ != live.land) {
       water_ = QPainterPath();
       water_.setFillRule(Qt::OddEvenFill);
       double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
@@ -65,7 +65,7 @@ void EcdisView::paintRadarPicture(QPainter& p) {
       }
       const double pad = 50000.0;
       water_.addRect(QRectF(QPointF(x0 - pad, y0 - pad), QPointF(x1 + pad, y1 + pad)));
-      waterOf_ = live.land.get();
+      waterOf_ = live.land;
     }
     p.setTransform(gridT);
     p.setClipPath(water_);

@@ -104,6 +104,7 @@ std::pair<double, double> EcdisView::orderedCourseSpeed() const {
 }
 
 void EcdisView::requestOrder(double trueCourseRad, double speedMps) {
+  if (history_ && history_->latest().live) return;  // Live mode: the real ship is steered on the bridge
   if (!std::isfinite(trueCourseRad) || !std::isfinite(speedMps)) return;
   pendingOrder_ = PendingOrder{wrapTwoPi(trueCourseRad), std::max(0.0, speedMps),
                                history_ && !history_->empty() ? history_->latest().sequence : 0};
@@ -122,7 +123,7 @@ void EcdisView::emitOrderShown() {
 }
 
 std::optional<QPointF> EcdisView::handleAt(double minutes) const {
-  if (!haveOwnShip()) return std::nullopt;
+  if (!haveOwnShip() || history_->latest().live) return std::nullopt;  // a live ship takes no helm orders
   const geo::GridPoint c = ccrpGrid();
   const Local own = localAt(c.xM, c.yM);
   const auto [course, speed] = orderedCourseSpeed();

@@ -25,6 +25,7 @@
 #include "ui/bridge/sim_history.h"
 #include "ui/common/display_units.h"
 #include "ui/map/chart_view.h"
+#include "ui/map/ecdis_ais.h"
 #include "ui/map/guard_zones.h"
 
 namespace reckoner::ui {
@@ -75,6 +76,8 @@ struct OverlaySettings {
   double radarOpacity = 0.6;
   int radarColour = 0;  ///< kRadarColours
   bool showRadarEchoes = false;
+  /// AIS targets (Live mode) as IEC 62288 draws them (ecdis_ais.h).
+  bool showAis = true;
 };
 
 /// The radar picture's colours: name and day colour (dimmed at dusk and night).
@@ -272,6 +275,9 @@ class EcdisView : public ChartView {
   /// The readouts top left; returns the box it took (empty when none).
   QRectF paintReadouts(QPainter& p);
   [[nodiscard]] QStringList readoutLines() const;
+  // ecdis_ais.cpp
+  /// The AIS targets of the latest frame; their symbols are made again when the table changed.
+  void paintAis(QPainter& p);
   // ecdis_radar.cpp
   void paintRadarPicture(QPainter& p);
   void paintRadarEchoes(QPainter& p);
@@ -319,10 +325,13 @@ class EcdisView : public ChartView {
   // The radar picture coloured (rebuilt when the raster or the colour changes), and the charted land
   // as one even-odd path in grid metres with a surrounding rectangle: the water, to clip to.
   QImage radarImage_;
-  const void* radarImageOf_ = nullptr;
+  std::shared_ptr<const RadarRaster> radarImageOf_;  // held, so a new raster is never taken for it by address
   QRgb radarImageColour_ = 0;
   QPainterPath water_;
-  const void* waterOf_ = nullptr;
+  std::shared_ptr<const radar::LandMask> waterOf_;  // held, likewise
+  // The AIS symbols of the latest table (made again when the frame brings another table).
+  std::vector<AisSymbol> aisSymbols_;
+  std::shared_ptr<const std::vector<track::AisTarget>> aisSymbolsOf_;  // held: never mistaken by address
 };
 
 }  // namespace reckoner::ui

@@ -168,34 +168,54 @@ QLabel* OwnShipPanel::add(const QString& name) {
   return l;
 }
 
-void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame) {
+void OwnShipPanel::showTruthAndCalibration(const LiveFrame& live, const geo::LocalFrame& frame, double gamma) {
   namespace dk = est::drkf;
   const sim::SimFrame& f = live.frame;
   const auto& x = f.estimate.x;
   const auto& t = f.trueState;
+  if (!f.hasTruth) {
+    // A live run: there is no truth to show or to score against; the estimate and its sd only.
+    const QString none = QStringLiteral("–");
+    truePos_->setText(none);
+    trueCog_->setText(none);
+    error_->setText(QStringLiteral("– / %1 m").arg(live.error95M, 0, 'f', 1));
+    heading_->setText(QStringLiteral("%1 / –").arg(formatBearing(bearingOf(x[dk::kVelX], x[dk::kVelY]) + gamma)));
+    current_->setText(QStringLiteral("%1 @ %2").arg(formatSpeed(std::hypot(x[dk::kCurX], x[dk::kCurY]), units_, 2),
+                                                    formatBearing(bearingOf(x[dk::kCurX], x[dk::kCurY]) + gamma, 0)));
+    log_->setText(formatSpeed(x[dk::kLogBias], units_, 3));
+    loran_->setText(QStringLiteral("(%1, %2) m").arg(x[dk::kLoranX], 0, 'f', 1).arg(x[dk::kLoranY], 0, 'f', 1));
+  } else {
+    truePos_->setText(latLon(frame.toGeodetic(f.truth.position)));
+    error_->setText(QStringLiteral("%1 m / %2 m")
+                        .arg(std::hypot(x[dk::kPosX] - t[dk::kPosX], x[dk::kPosY] - t[dk::kPosY]), 0, 'f', 1)
+                        .arg(live.error95M, 0, 'f', 1));
+    trueCog_->setText(courseSpeed(f.truth.groundVxMps(), f.truth.groundVyMps(), gamma, units_));
+    heading_->setText(
+        QStringLiteral("%1 / %2").arg(formatBearing(bearingOf(x[dk::kVelX], x[dk::kVelY]) + gamma),
+                                      formatBearing(f.truth.headingRad + gamma)));
+    current_->setText(QStringLiteral("%1 / %2 @ %3 / %4")
+                          .arg(formatSpeed(std::hypot(x[dk::kCurX], x[dk::kCurY]), units_, 2, false),
+                               formatSpeed(std::hypot(t[dk::kCurX], t[dk::kCurY]), units_, 2),
+                               formatBearing(bearingOf(x[dk::kCurX], x[dk::kCurY]) + gamma, 0),
+                               formatBearing(bearingOf(t[dk::kCurX], t[dk::kCurY]) + gamma, 0)));
+    log_->setText(QStringLiteral("%1 / %2").arg(formatSpeed(x[dk::kLogBias], units_, 3, false),
+                                                formatSpeed(t[dk::kLogBias], units_, 3)));
+    loran_->setText(QStringLiteral("(%1, %2) / (%3, %4) m")
+                        .arg(x[dk::kLoranX], 0, 'f', 1)
+                        .arg(x[dk::kLoranY], 0, 'f', 1)
+                        .arg(t[dk::kLoranX], 0, 'f', 1)
+                        .arg(t[dk::kLoranY], 0, 'f', 1));
+  }
+}
+
+void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame) {
+  namespace dk = est::drkf;
+  const sim::SimFrame& f = live.frame;
+  const auto& x = f.estimate.x;
   const double gamma = frame.gridInfo({x[dk::kPosX], x[dk::kPosY]}).convergenceRad;
   estPos_->setText(latLon(frame.toGeodetic({x[dk::kPosX], x[dk::kPosY]})));
-  truePos_->setText(latLon(frame.toGeodetic(f.truth.position)));
-  error_->setText(QStringLiteral("%1 m / %2 m")
-                      .arg(std::hypot(x[dk::kPosX] - t[dk::kPosX], x[dk::kPosY] - t[dk::kPosY]), 0, 'f', 1)
-                      .arg(live.error95M, 0, 'f', 1));
   estCog_->setText(courseSpeed(x[dk::kVelX] + x[dk::kCurX], x[dk::kVelY] + x[dk::kCurY], gamma, units_));
-  trueCog_->setText(courseSpeed(f.truth.groundVxMps(), f.truth.groundVyMps(), gamma, units_));
-  heading_->setText(
-      QStringLiteral("%1 / %2").arg(formatBearing(bearingOf(x[dk::kVelX], x[dk::kVelY]) + gamma),
-                                    formatBearing(f.truth.headingRad + gamma)));
-  current_->setText(QStringLiteral("%1 / %2 @ %3 / %4")
-                        .arg(formatSpeed(std::hypot(x[dk::kCurX], x[dk::kCurY]), units_, 2, false),
-                             formatSpeed(std::hypot(t[dk::kCurX], t[dk::kCurY]), units_, 2),
-                             formatBearing(bearingOf(x[dk::kCurX], x[dk::kCurY]) + gamma, 0),
-                             formatBearing(bearingOf(t[dk::kCurX], t[dk::kCurY]) + gamma, 0)));
-  log_->setText(QStringLiteral("%1 / %2").arg(formatSpeed(x[dk::kLogBias], units_, 3, false),
-                                              formatSpeed(t[dk::kLogBias], units_, 3)));
-  loran_->setText(QStringLiteral("(%1, %2) / (%3, %4) m")
-                      .arg(x[dk::kLoranX], 0, 'f', 1)
-                      .arg(x[dk::kLoranY], 0, 'f', 1)
-                      .arg(t[dk::kLoranX], 0, 'f', 1)
-                      .arg(t[dk::kLoranY], 0, 'f', 1));
+  showTruthAndCalibration(live, frame, gamma);
   for (std::size_t i = 0; i < seed002_.size(); ++i) {
     if (!live.seed002) {
       seed002_[i]->setText(QStringLiteral("–"));
@@ -205,6 +225,11 @@ void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame)
     const est::Gaussian<4>& g = (*live.seed002)[i];
     const est::Mat<2> P = g.P.topLeftCorner<2, 2>();
     const double lmax = est::largestEigenvalue(P);
+    if (!f.hasTruth) {
+      seed002_[i]->setText(QStringLiteral("95% %1 m").arg(
+          std::sqrt(est::chiSquareQuantile(0.95, 2.0) * std::max(lmax, 0.0)), 0, 'f', 1));
+      continue;
+    }
     seed002_[i]->setText(
         QStringLiteral("error %1 m / 95% %2 m")
             .arg(std::hypot(g.x[0] - f.truth.position.xM, g.x[1] - f.truth.position.yM), 0, 'f', 1)

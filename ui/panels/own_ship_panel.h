@@ -47,6 +47,8 @@ class OwnShipPanel : public QWidget {
   void orderTyped(double trueCourseRad, double speedMps);
 
  private:
+  /// Truth, error, current, log and Loran-C rows: estimate against truth, or the estimate alone (live).
+  void showTruthAndCalibration(const LiveFrame& live, const geo::LocalFrame& frame, double gamma);
   QLabel* add(const QString& name);
   QWidget* buildOrderRow();
   QLabel* dr_;

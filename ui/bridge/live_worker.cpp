@@ -1,0 +1,199 @@
+#include "ui/bridge/live_worker.h"
+
+#include <QDateTime>
+#include <exception>
+
+namespace reckoner::ui {
+namespace {
+constexpr int kTickMs = 1000;
+constexpr qint64 kMinEmitIntervalNs = 33'000'000;  // <= 30 frames per second
+constexpr qint64 kAisRefreshNs = 250'000'000;      // the AIS table copied for the GUI at most 4 times a second
+
+UtcUs systemUtc() {
+  return static_cast<UtcUs>(QDateTime::currentMSecsSinceEpoch()) * 1000;
+}
+}  // namespace
+
+LiveWorker::LiveWorker(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
+  timer_->setInterval(kTickMs);
+  connect(timer_, &QTimer::timeout, this, &LiveWorker::tick);
+  wall_.start();
+}
+
+LiveWorker::~LiveWorker() = default;
+
+void LiveWorker::start(conn::ConnectionHub* hub, const sim::LiveOptions& options,
+                       const sim::LiveWatchSettings& watch, quint64 generation) {
+  stop();
+  generation_ = generation;
+  sim::LiveOptions o = options;
+  o.frames = true;  // the window draws them
+  try {
+    session_ = std::make_unique<sim::LiveSession>(o);
+    watch_ = std::make_unique<sim::LiveWatch>(watch);
+  } catch (const std::exception& e) {
+    session_.reset();
+    watch_.reset();
+    emit failed(QString::fromStdString(std::string("cannot start the live run: ") + e.what()));
+    return;
+  }
+  process_ = sim::drkfConfigFor(o.replay.settings).process;
+  hub_ = hub;
+  pending_ = LiveFrame{};
+  pending_.live = true;
+  folder_.clear();
+  lines_ = 0;
+  inFlight_ = dirty_ = false;
+  aisVersion_ = 0;
+  linesConnection_ =
+      connect(hub_, &conn::ConnectionHub::linesAvailable, this, &LiveWorker::consume, Qt::QueuedConnection);
+  timer_->start();
+  consume();  // what is queued already
+}
+
+void LiveWorker::stop() {
+  if (!session_) return;
+  disconnect(linesConnection_);
+  timer_->stop();
+  session_.reset();
+  watch_.reset();
+  hub_ = nullptr;
+}
+
+void LiveWorker::consume() {
+  if (!session_ || !hub_) return;
+  const std::vector<conn::ReceivedLine> lines = hub_->take(kBatchLines);
+  std::optional<UtcUs> received;
+  for (const conn::ReceivedLine& l : lines) {
+    received = l.receivedUtc;
+    if (l.role == conn::Role::Radar)
+      session_->radar(l.line, l.receivedUtc);
+    else
+      session_->nmea(l.line, l.receivedUtc, l.source);
+  }
+  lines_ += lines.size();
+  absorb(received);
+  // A full batch leaves lines queued: come back after the commands waiting in the event loop.
+  if (lines.size() == kBatchLines)
+    QMetaObject::invokeMethod(this, &LiveWorker::consume, Qt::QueuedConnection);
+  maybeEmit(false);
+}
+
+void LiveWorker::tick() {
+  if (!session_) return;
+  absorb(systemUtc());
+  maybeEmit(true);
+}
+
+void LiveWorker::absorb(std::optional<UtcUs> receivedUtc) {
+  sim::LiveWatch::Taken taken = watch_->absorb(*session_, receivedUtc);
+  // The rows go to no file here: dropped, so that a long watch does not grow memory.
+  (void)session_->takeOwnRows();
+  (void)session_->takeTrackRows();
+  if (session_->started()) {
+    pending_.liveOrigin = session_->result().origin;
+    pending_.liveUtc0 = session_->result().utc0;
+  }
+  for (sim::SimFrame& f : taken.frames) {
+    folder_.fold(f, session_->frame(), process_, {}, pending_);
+    f.sweeps.clear();  // in trackHistory now
+    pending_.frame = std::move(f);
+    dirty_ = true;
+  }
+  const std::vector<alerts::AlertLogEntry> log = watch_->alerts().takeLog();
+  if (!log.empty()) {
+    pending_.alertLog.insert(pending_.alertLog.end(), log.begin(), log.end());
+    dirty_ = true;
+  }
+  refreshAis(false);
+}
+
+void LiveWorker::refreshAis(bool force) {
+  if (watch_->aisVersion() == aisVersion_) return;
+  const qint64 now = wall_.nsecsElapsed();
+  if (!force && now - lastAisNs_ < kAisRefreshNs) return;
+  aisVersion_ = watch_->aisVersion();
+  lastAisNs_ = now;
+  const track::AisTargetTable& table = watch_->aisTable();
+  pending_.aisTargets = std::make_shared<const std::vector<track::AisTarget>>(table.targets());
+  pending_.aisOwnShip = table.ownShip();
+  pending_.aisCounts = table.counts();
+  pending_.aisUtc = watch_->aisUtc();
+  pending_.ownShipSource = watch_->ownShipSource();
+  dirty_ = true;
+}
+
+void LiveWorker::maybeEmit(bool force) {
+  if (!session_ || inFlight_ || !dirty_ || !session_->started()) return;
+  const qint64 now = wall_.nsecsElapsed();
+  if (!force && now - lastEmitNs_ < kMinEmitIntervalNs) return;
+  refreshAis(true);
+  pending_.sequence = ++sequence_;
+  pending_.loadGeneration = generation_;
+  pending_.recentPlots.assign(folder_.plots().begin(), folder_.plots().end());
+  pending_.alerts = watch_->alerts().alerts();
+  pending_.alertAudible = watch_->alerts().audible();
+  pending_.positionFixUsed = !pending_.frame.deadReckoning.active;
+  pending_.drLimitM = watch_->settings().alerts.drLimitM;
+  pending_.running = true;
+  pending_.rate = 1.0;
+  pending_.achievedRate = 1.0;
+  pending_.radarOn = session_->result().sweepPeriodS > 0.0 && !pending_.frame.tracks.empty();
+  pending_.liveLines = lines_;
+  pending_.liveRows = static_cast<long>(session_->result().stats.epochs);
+  inFlight_ = true;
+  dirty_ = false;
+  lastEmitNs_ = now;
+  emit frameReady(pending_);
+  pending_.ownHistory.clear();
+  pending_.alertLog.clear();
+  pending_.trackHistory.clear();
+  pending_.events.clear();
+}
+
+void LiveWorker::frameConsumed() {
+  inFlight_ = false;
+  maybeEmit(false);
+}
+
+void LiveWorker::acknowledgeAlert(alerts::AlertId id) {
+  if (!watch_ || !watch_->acknowledge(id)) return;
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void LiveWorker::silenceAlerts() {
+  if (!watch_ || watch_->silenceAll() == 0) return;
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void LiveWorker::setCpaLimits(double cpaM, double tcpaS) {
+  if (!watch_) return;
+  try {
+    watch_->setCpaLimits(cpaM, tcpaS);
+  } catch (const std::exception& e) {
+    emit failed(QString::fromStdString(std::string("CPA/TCPA limits: ") + e.what()));
+  }
+}
+
+void LiveWorker::setDrLimit(double metres) {
+  if (!watch_) return;
+  try {
+    watch_->setDrLimit(metres);
+  } catch (const std::exception& e) {
+    emit failed(QString::fromStdString(std::string("dead-reckoning limit: ") + e.what()));
+  }
+}
+
+void LiveWorker::activateAis(quint32 mmsi, bool on) {
+  if (watch_ && watch_->activate(mmsi, on)) refreshAis(true);
+  maybeEmit(true);
+}
+
+void LiveWorker::selectAis(quint32 mmsi) {
+  if (watch_ && watch_->select(mmsi)) refreshAis(true);
+  maybeEmit(true);
+}
+
+}  // namespace reckoner::ui

@@ -1,0 +1,76 @@
+#pragma once
+// The window's Live mode in its own thread (docs/gui.md, "Live"): a QObject living in a QThread that
+// takes the lines of the window's connections (conn::ConnectionHub, owned by the GUI thread; take() is
+// safe from any thread) and runs them through the live session (sim::LiveSession: the replay's reader,
+// DRKF and track bank) and the watch (sim::LiveWatch: alerts, the AIS target table), and sends LiveFrame
+// values to the GUI the way SimulationWorker does: at most one in flight, at most ~30 per second, the
+// epochs in between folded into the frame's history. The frames carry no truth. A timer brings the
+// AIS table and the alerts up to the clock once a second when no line arrives.
+#include <QObject>
+#include <QTimer>
+#include <QElapsedTimer>
+#include <memory>
+#include <optional>
+
+#include "connections/connection_hub.h"
+#include "sim/live_session.h"
+#include "sim/live_watch.h"
+#include "ui/bridge/frame_samples.h"
+#include "ui/bridge/live_frame.h"
+
+namespace reckoner::ui {
+
+class LiveWorker : public QObject {
+  Q_OBJECT
+ public:
+  explicit LiveWorker(QObject* parent = nullptr);
+  ~LiveWorker() override;
+
+  // Called in the worker's thread (queued from the controller).
+  /// Starts a run on the hub's lines (the hub must outlive it: stop() first); a run in progress ends.
+  /// Emits failed() when the options are unusable.
+  void start(conn::ConnectionHub* hub, const sim::LiveOptions& options, const sim::LiveWatchSettings& watch,
+             quint64 generation);
+  /// Ends the run: the lines still queued are read, the session finished, a last frame sent.
+  void stop();
+  void frameConsumed();
+  void acknowledgeAlert(reckoner::alerts::AlertId id);
+  void silenceAlerts();
+  /// The operator's CPA (m) and TCPA (s) limits for radar tracks and AIS targets.
+  void setCpaLimits(double cpaM, double tcpaS);
+  void setDrLimit(double metres);
+  /// Operator activation of an AIS target (true) or back to sleeping.
+  void activateAis(quint32 mmsi, bool on);
+  void selectAis(quint32 mmsi);
+  /// Lines a batch takes from the hub at most (the rest wait for the next turn of the event loop, so
+  /// commands and the frame acknowledgement are never held up by a flood).
+  static constexpr std::size_t kBatchLines = 20'000;
+
+ signals:
+  void frameReady(const reckoner::ui::LiveFrame& frame);
+  void failed(const QString& message);
+
+ private:
+  void consume();
+  void tick();
+  void absorb(std::optional<UtcUs> receivedUtc);
+  void maybeEmit(bool force);
+  /// The AIS table copied into the pending frame when it changed (at most 4 times a second unless forced).
+  void refreshAis(bool force);
+
+  conn::ConnectionHub* hub_ = nullptr;
+  std::unique_ptr<sim::LiveSession> session_;
+  std::unique_ptr<sim::LiveWatch> watch_;
+  QTimer* timer_ = nullptr;
+  QElapsedTimer wall_;
+  qint64 lastEmitNs_ = 0, lastAisNs_ = 0;
+  bool inFlight_ = false, dirty_ = false;
+  quint64 sequence_ = 0, generation_ = 0;
+  std::uint64_t lines_ = 0, aisVersion_ = 0;
+  est::drkf::ProcessParams process_;
+  LiveFrame pending_;
+  FrameFolder folder_;
+  QMetaObject::Connection linesConnection_;
+};
+
+}  // namespace reckoner::ui

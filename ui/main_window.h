@@ -279,6 +279,7 @@ class MainWindow : public QMainWindow {
   QAction* liveAction_ = nullptr;
   /// The AIS table the AIS dock shows (held, so that a new table is never taken for it by address).
   std::shared_ptr<const std::vector<track::AisTarget>> aisShown_;
+  QElapsedTimer aisRefreshed_;  ///< when the AIS list was last refreshed
   /// What only the simulation uses (disabled in Live mode).
   std::vector<QWidget*> simulationControls_;
   std::vector<QAction*> simulationActions_;

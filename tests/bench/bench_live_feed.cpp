@@ -31,73 +31,17 @@
 #include "io/nmea.h"
 #include "sim/live_session.h"
 #include "source_config.h"
-#include "support/ais_corpus.h"
+#include "live_stream.h"
 
 namespace {
 using namespace reckoner;
-
-double residentMb() {
-  std::ifstream statm("/proc/self/statm");
-  long pages = 0, resident = 0;
-  statm >> pages >> resident;
-  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
-
-/// One second of the stream: own ship (RMC, GGA, VTG and ten HDT: a ship steaming east at 10 kn off
-/// 47 N 122 W) and AIS lines from the project's corpus up to `perSecond` sentences; aisMessages
-/// counts the AIS messages in it (the corpus's type 5 is two fragments, kept together).
-void secondOfStream(int s, int perSecond, std::vector<std::string>& out, int& aisMessages) {
-  out.clear();
-  const int hh = (s / 3600) % 24, mm = (s / 60) % 60, ss = s % 60;
-  // a minute of longitude is cos(latitude) nautical miles
-  const double lonMin = 30.0 + knotsToMps(10.0) * s / (kMetresPerNauticalMile * std::cos(degToRad(47.5)));
-  const int lonDeg = 122 - static_cast<int>(lonMin / 60.0);
-  const double lonM = std::fmod(lonMin, 60.0);
-  char b[160];
-  std::snprintf(b, sizeof b, "GPRMC,%02d%02d%02d.00,A,4730.0000,N,%03d%07.4f,W,10.0,90.0,011226,,,A", hh, mm,
-                ss, lonDeg, 60.0 - lonM);
-  out.push_back(io::nmea::withChecksum(b));
-  std::snprintf(b, sizeof b, "GPGGA,%02d%02d%02d.00,4730.0000,N,%03d%07.4f,W,1,09,0.9,10.0,M,-20.0,M,,", hh,
-                mm, ss, lonDeg, 60.0 - lonM);
-  out.push_back(io::nmea::withChecksum(b));
-  out.push_back(io::nmea::withChecksum("GPVTG,90.0,T,,M,10.0,N,18.5,K,A"));
-  for (int i = 0; i < 10; ++i) out.push_back(io::nmea::withChecksum("HEHDT,90.0,T"));
-  static const std::vector<std::string> corpus = test::ais::corpus();
-  int messages = 0;
-  std::size_t k = 0;
-  while (static_cast<int>(out.size()) < perSecond - 1) {
-    const std::string& l = corpus[k % corpus.size()];
-    out.push_back(l);
-    // a first fragment of two ("!AIVDM,2,1,") is completed by the next line of the corpus
-    if (l.compare(0, 11, "!AIVDM,2,1,") == 0) {
-      out.push_back(corpus[(k + 1) % corpus.size()]);
-      ++k;
-    }
-    ++messages;
-    ++k;
-  }
-  aisMessages += messages;
-}
 
 void BM_LiveFeed10kPerSecond(benchmark::State& state) {
   const char* env = std::getenv("RECKONER_BENCH_FEED_S");
   const int seconds = env ? std::max(1, std::atoi(env)) : 60;
   const int perSecond = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
-    sockaddr_in to{};
-    to.sin_family = AF_INET;
-    to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    {
-      // a free port: bound, read back, released
-      const int probe = ::socket(AF_INET, SOCK_DGRAM, 0);
-      sockaddr_in any = to;
-      ::bind(probe, reinterpret_cast<sockaddr*>(&any), sizeof any);
-      socklen_t len = sizeof any;
-      ::getsockname(probe, reinterpret_cast<sockaddr*>(&any), &len);
-      to.sin_port = any.sin_port;
-      ::close(probe);
-    }
+    const sockaddr_in to = bench::freeLoopbackPort();
     conn::ConnectionHub hub;
     hub.add(conn::parseSource("udp://127.0.0.1:" + std::to_string(ntohs(to.sin_port)) + "?name=feed"));
     hub.start();
@@ -107,20 +51,7 @@ void BM_LiveFeed10kPerSecond(benchmark::State& state) {
     std::atomic<long> sent{0};
     int aisSent = 0;
     std::thread sender([&] {
-      std::vector<std::string> lines;
-      QElapsedTimer clock;
-      clock.start();
-      for (int s = 0; s < seconds; ++s) {
-        secondOfStream(s, perSecond, lines, aisSent);
-        // in 100 bursts over the second, each burst no earlier than its time
-        for (std::size_t i = 0; i < lines.size(); ++i) {
-          const qint64 due = s * 1000LL + static_cast<qint64>(i * 1000 / lines.size());
-          while (clock.elapsed() < due) std::this_thread::sleep_for(std::chrono::microseconds(500));
-          const std::string d = lines[i] + "\r\n";
-          ::sendto(fd, d.data(), d.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to);
-          sent.fetch_add(1, std::memory_order_relaxed);
-        }
-      }
+      bench::sendStream(to, seconds, perSecond, nullptr, sent, aisSent);
       done = true;
     });
 
@@ -143,8 +74,8 @@ void BM_LiveFeed10kPerSecond(benchmark::State& state) {
     while (!done) {
       std::this_thread::sleep_for(std::chrono::milliseconds(16));  // a frame of the window
       consume();
-      if (rss10 == 0.0 && run.elapsed() > 10000) rss10 = residentMb();
-      rssPeak = std::max(rssPeak, residentMb());
+      if (rss10 == 0.0 && run.elapsed() > 10000) rss10 = bench::residentMb();
+      rssPeak = std::max(rssPeak, bench::residentMb());
     }
     sender.join();
     // the last datagrams: until the hub has delivered what was sent (or two idle seconds)
@@ -160,7 +91,6 @@ void BM_LiveFeed10kPerSecond(benchmark::State& state) {
     consume();
     session.finish();
     rows += static_cast<long>(session.takeOwnRows().size());
-    ::close(fd);
 
     const auto st = hub.status().front();
     state.counters["sent"] = static_cast<double>(sent);
@@ -178,7 +108,7 @@ void BM_LiveFeed10kPerSecond(benchmark::State& state) {
     state.counters["peak_queue"] = static_cast<double>(hub.counters().peakQueued);
     state.counters["rss_10s_mb"] = rss10;
     state.counters["rss_peak_mb"] = rssPeak;
-    state.counters["rss_end_mb"] = residentMb();
+    state.counters["rss_end_mb"] = bench::residentMb();
   }
 }
 BENCHMARK(BM_LiveFeed10kPerSecond)->Arg(10000)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();

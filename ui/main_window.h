@@ -103,6 +103,9 @@ class MainWindow : public QMainWindow {
   bool startLive();
   void stopLive();
   [[nodiscard]] bool isLive() const;
+  /// Live > NMEA output: where the live run's own ship, tracks and alerts go as NMEA 0183 (a
+  /// --nmea-out destination; empty: nowhere), remembered; false with a message naming what is wrong.
+  bool setLiveNmeaOut(const QString& spec);
 
   // For tests and the benchmark.
   /// The window's connections (Live > Connections), loaded from the settings at start.
@@ -197,6 +200,7 @@ class MainWindow : public QMainWindow {
   // main_window_live.cpp: Live mode.
   void buildLive();
   void buildLiveMenu();
+  void askLiveNmeaOut();
   /// A live frame: the view's grid frame follows the live run's origin.
   void liveFrameArrived(const LiveFrame& frame);
   void refreshAisTable(const LiveFrame& live);

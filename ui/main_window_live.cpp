@@ -5,6 +5,8 @@
 #include <QActionGroup>
 #include <QDockWidget>
 #include <QHeaderView>
+#include <QInputDialog>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QSettings>
 #include <QSortFilterProxyModel>
@@ -17,6 +19,7 @@
 #include "files/scenario_json.h"
 #include "io/text_format.h"
 #include "resources/embedded.h"
+#include "connections/nmea_destination.h"
 #include "ui/main_window.h"
 #include "ui/panels/ais_table_model.h"
 #include "ui/panels/connection_indicator.h"
@@ -102,6 +105,7 @@ void MainWindow::buildLiveMenu() {
     ConnectionsDialog dialog(*hub_, &settings, this);
     dialog.exec();
   });
+  live->addAction(tr("NMEA output…"), this, &MainWindow::askLiveNmeaOut);
   live->addSeparator();
   for (const char* name : {"monitorDock", "aisDock"})
     if (auto* d = findChild<QDockWidget*>(QString::fromLatin1(name))) live->addAction(d->toggleViewAction());
@@ -140,6 +144,7 @@ bool MainWindow::startLive() {
   view_->setSelectedTrack(std::nullopt);
   hub_->start();
   controller_->startLive(hub_, o, w);
+  controller_->setLiveNmeaOut(settings.value(QStringLiteral("live/nmeaOut")).toString());
   {
     const QSignalBlocker block(liveAction_);
     liveAction_->setChecked(true);
@@ -171,6 +176,30 @@ void MainWindow::stopLive() {
   if (scenario.isEmpty() || !openScenario(scenario))
     openScenario(QStringLiteral("builtin:") + QString::fromLatin1(resources::kDefaultScenario.data(),
                                                                  int(resources::kDefaultScenario.size())));
+}
+
+bool MainWindow::setLiveNmeaOut(const QString& spec) {
+  if (!spec.trimmed().isEmpty()) {
+    try {
+      (void)conn::parseDestination(spec.trimmed().toStdString());
+    } catch (const std::invalid_argument& e) {
+      reportError(QString::fromStdString(e.what()));
+      return false;
+    }
+  }
+  QSettings().setValue(QStringLiteral("live/nmeaOut"), spec.trimmed());
+  if (controller_->isLive()) controller_->setLiveNmeaOut(spec.trimmed());
+  return true;
+}
+
+void MainWindow::askLiveNmeaOut() {
+  bool ok = false;
+  const QString spec = QInputDialog::getText(
+      this, tr("NMEA output"),
+      tr("Own ship, tracks and alerts as NMEA 0183 in Live mode, to udp://HOST:PORT (e.g. OpenCPN's\n"
+         "udp://127.0.0.1:10110), tcp://:PORT (a server) or a file path; empty: none"),
+      QLineEdit::Normal, QSettings().value(QStringLiteral("live/nmeaOut")).toString(), &ok);
+  if (ok) setLiveNmeaOut(spec);
 }
 
 bool MainWindow::isLive() const {

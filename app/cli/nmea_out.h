@@ -1,5 +1,5 @@
 #pragma once
-// --nmea-out DEST of run and replay (and, later, live): the NMEA 0183 output (docs/outputs.md, "NMEA 0183
+// --nmea-out DEST of run, replay and live: the NMEA 0183 output (docs/outputs.md, "NMEA 0183
 // output") to udp://HOST:PORT, tcp://:PORT or a file.
 #include <memory>
 #include <optional>

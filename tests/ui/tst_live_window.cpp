@@ -8,6 +8,7 @@
 #include <QFile>
 #include <QSettings>
 #include <QTableView>
+#include <QNetworkDatagram>
 #include <QUdpSocket>
 #include <QtTest>
 #include <cmath>
@@ -16,6 +17,7 @@
 
 #include "common/angles.h"
 #include "common/units.h"
+#include "io/nmea.h"
 #include "io/text_file.h"
 #include "main_window_test_helpers.h"
 #include "support/compare_near.h"
@@ -77,6 +79,12 @@ class TstLiveWindow : public QObject {
     MainWindow w(freshOptions());
     showAndWait(w);
     QCOMPARE(w.hub()->sources().size(), std::size_t{1});
+    // AND its NMEA output to a UDP port the test listens on (a bad destination is refused, naming it)
+    QVERIFY(!w.setLiveNmeaOut(QStringLiteral("udp://127.0.0.1:x")));
+    QVERIFY2(w.lastError().contains("port"), qPrintable(w.lastError()));
+    QUdpSocket rx;
+    QVERIFY(rx.bind(QHostAddress::LocalHost, 0));
+    QVERIFY(w.setLiveNmeaOut(QStringLiteral("udp://127.0.0.1:%1").arg(rx.localPort())));
     // WHEN Live mode starts and the recording is sent in bursts, a few AIS targets with it
     QVERIFY(w.startLive());
     QVERIFY(w.isLive());
@@ -136,6 +144,25 @@ class TstLiveWindow : public QObject {
     for (const track::AisTarget& t : *w.history().latest().aisTargets)
       QVERIFY2(t.rangeM > nmToMetres(0.5) && t.rangeM < nmToMetres(3.0), qPrintable(QString::number(t.rangeM)));
     QCOMPARE(w.history().latest().ownShipSource, sim::LiveOwnShipSource::Drkf);
+    // AND the NMEA output carries own ship, every sentence read back by the project's reader
+    int rmcOut = 0, ggaOut = 0;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        [&] {
+          while (rx.hasPendingDatagrams()) {
+            const QByteArray d = rx.receiveDatagram().data();
+            for (const QByteArray& l : d.split('\n')) {
+              const std::string line = l.trimmed().toStdString();
+              if (line.empty()) continue;
+              const io::nmea::ParseResult p = io::nmea::parse(line);
+              if (p.error == io::nmea::Error::BadChecksum || p.error == io::nmea::Error::Malformed) return false;
+              rmcOut += line.rfind("$INRMC,", 0) == 0;
+              ggaOut += line.rfind("$INGGA,", 0) == 0;
+            }
+          }
+          return rmcOut > 20 && ggaOut > 20;
+        }(),
+        kTimeoutMs);
+    qInfo("NMEA output: %d RMC, %d GGA read back", rmcOut, ggaOut);
     // AND the data monitor shows the raw lines, the clock says LIVE
     QTRY_VERIFY_WITH_TIMEOUT(w.dataMonitor()->model()->rowCount() > 100, kTimeoutMs);
     QTRY_VERIFY2_WITH_TIMEOUT(w.clock()->text().startsWith("LIVE"), qPrintable(w.clock()->text()), kTimeoutMs);

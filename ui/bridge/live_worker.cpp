@@ -87,9 +87,7 @@ void LiveWorker::tick() {
 
 void LiveWorker::absorb(std::optional<UtcUs> receivedUtc) {
   sim::LiveWatch::Taken taken = watch_->absorb(*session_, receivedUtc);
-  // The rows go to no file here: dropped, so that a long watch does not grow memory.
-  (void)session_->takeOwnRows();
-  (void)session_->takeTrackRows();
+  sendNmea();
   if (session_->started()) {
     pending_.liveOrigin = session_->result().origin;
     pending_.liveUtc0 = session_->result().utc0;
@@ -106,6 +104,32 @@ void LiveWorker::absorb(std::optional<UtcUs> receivedUtc) {
     dirty_ = true;
   }
   refreshAis(false);
+}
+
+void LiveWorker::sendNmea() {
+  const std::vector<sim::ReplayOwnRow> own = session_->takeOwnRows();
+  std::vector<UtcUs> trackUtc;
+  const std::vector<sim::TrackRow> tracks = session_->takeTrackRows(&trackUtc);
+  if (!nmeaDest_) return;
+  std::vector<std::string> lines;
+  if (session_->started()) lines = sim::rowsNmea(*nmea_, own, tracks, trackUtc, session_->frame());
+  if (watch_->zeroUtc() != 0) {
+    const auto alerts = nmea_->alerts(watch_->nowUs(), watch_->nowUtc(), watch_->alerts().alerts());
+    lines.insert(lines.end(), alerts.begin(), alerts.end());
+  }
+  if (!lines.empty()) nmeaDest_->write(lines);
+}
+
+void LiveWorker::setNmeaOut(const QString& spec) {
+  nmeaDest_.reset();
+  if (spec.trimmed().isEmpty()) return;
+  try {
+    nmeaDest_ = std::make_unique<conn::NmeaDestination>(conn::parseDestination(spec.trimmed().toStdString()));
+    nmea_ = std::make_unique<sim::NmeaOutput>();
+  } catch (const std::exception& e) {
+    nmeaDest_.reset();
+    emit failed(QStringLiteral("NMEA output %1: %2").arg(spec, QString::fromStdString(e.what())));
+  }
 }
 
 void LiveWorker::refreshAis(bool force) {

@@ -13,8 +13,10 @@
 #include <optional>
 
 #include "connections/connection_hub.h"
+#include "connections/nmea_destination.h"
 #include "sim/live_session.h"
 #include "sim/live_watch.h"
+#include "sim/nmea_output.h"
 #include "ui/bridge/frame_samples.h"
 #include "ui/bridge/live_frame.h"
 
@@ -42,6 +44,10 @@ class LiveWorker : public QObject {
   /// Operator activation of an AIS target (true) or back to sleeping.
   void activateAis(quint32 mmsi, bool on);
   void selectAis(quint32 mmsi);
+  /// NMEA 0183 output of the live run (docs/outputs.md, "NMEA 0183 output"): own ship, tracks and
+  /// alerts to udp://HOST:PORT, tcp://:PORT or a file, as `reckoner-cli live --nmea-out`; empty: none.
+  /// Emits failed() naming the destination when it cannot be opened.
+  void setNmeaOut(const QString& spec);
   /// Lines a batch takes from the hub at most (the rest wait for the next turn of the event loop, so
   /// commands and the frame acknowledgement are never held up by a flood).
   static constexpr std::size_t kBatchLines = 20'000;
@@ -57,6 +63,8 @@ class LiveWorker : public QObject {
   void maybeEmit(bool force);
   /// The AIS table copied into the pending frame when it changed (at most 4 times a second unless forced).
   void refreshAis(bool force);
+  /// The rows since the last call to the NMEA output (dropped without one: a watch does not grow).
+  void sendNmea();
 
   conn::ConnectionHub* hub_ = nullptr;
   std::unique_ptr<sim::LiveSession> session_;
@@ -71,6 +79,8 @@ class LiveWorker : public QObject {
   LiveFrame pending_;
   FrameFolder folder_;
   QMetaObject::Connection linesConnection_;
+  std::unique_ptr<conn::NmeaDestination> nmeaDest_;
+  std::unique_ptr<sim::NmeaOutput> nmea_;
 };
 
 }  // namespace reckoner::ui

@@ -156,6 +156,9 @@ void SimulationController::stopLive() {
 void SimulationController::activateAis(quint32 mmsi, bool on) {
   if (live_) live().post(&LiveWorker::activateAis, mmsi, on);
 }
+void SimulationController::setLiveNmeaOut(const QString& spec) {
+  live().post(&LiveWorker::setNmeaOut, spec);
+}
 void SimulationController::selectAis(quint32 mmsi) {
   if (live_) live().post(&LiveWorker::selectAis, mmsi);
 }

@@ -61,6 +61,8 @@ class SimulationController : public QObject {
   /// Operator activation and selection of an AIS target (Live mode).
   void activateAis(quint32 mmsi, bool on);
   void selectAis(quint32 mmsi);
+  /// The live run's NMEA 0183 output (LiveWorker::setNmeaOut); empty: none.
+  void setLiveNmeaOut(const QString& spec);
 
   [[nodiscard]] const LiveFrame& latest() const { return latest_; }
   [[nodiscard]] bool hasFrame() const { return latest_.sequence > 0; }

@@ -155,6 +155,15 @@ struct LiveFrame {
   /// Lines the live run has taken from the connections, and its session's counts.
   std::uint64_t liveLines = 0;
   long liveRows = 0;
+
+  /// After a frame is sent: the batches since the previous frame are emptied, the state kept.
+  void clearBatches() {
+    ownHistory.clear();
+    alertLog.clear();
+    trackHistory.clear();
+    events.clear();
+    radarFixes.clear();
+  }
 };
 
 }  // namespace reckoner::ui

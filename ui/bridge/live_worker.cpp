@@ -169,10 +169,7 @@ void LiveWorker::maybeEmit(bool force) {
   dirty_ = false;
   lastEmitNs_ = now;
   emit frameReady(pending_);
-  pending_.ownHistory.clear();
-  pending_.alertLog.clear();
-  pending_.trackHistory.clear();
-  pending_.events.clear();
+  pending_.clearBatches();
 }
 
 void LiveWorker::frameConsumed() {

@@ -249,12 +249,7 @@ void SimulationWorker::maybeEmit(bool force) {
   dirty_ = false;
   lastEmitNs_ = now;
   emit frameReady(pending_);
-  // Keep the state that persists between frames; clear the batches.
-  pending_.ownHistory.clear();
-  pending_.alertLog.clear();
-  pending_.trackHistory.clear();
-  pending_.events.clear();
-  pending_.radarFixes.clear();
+  pending_.clearBatches();
 }
 
 void SimulationWorker::orderOwnShip(double trueHeadingRad, double speedMps) {

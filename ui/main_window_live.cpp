@@ -120,7 +120,7 @@ bool MainWindow::startLive() {
     return false;
   }
   sim::LiveOptions o;
-  const resources::EmbeddedFile* defaults = resources::findScenario("default");
+  const resources::EmbeddedFile* defaults = resources::findScenario(resources::kDefaultScenario);
   o.replay = sim::recordedDataOptions(files::parseScenario(defaults->text, "builtin:default"));
   o.name = "live";
   o.reorderHorizonS = 1.0;

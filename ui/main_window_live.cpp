@@ -16,10 +16,10 @@
 #include <algorithm>
 
 #include "common/units.h"
+#include "connections/nmea_destination.h"
 #include "files/scenario_json.h"
 #include "io/text_format.h"
 #include "resources/embedded.h"
-#include "connections/nmea_destination.h"
 #include "ui/main_window.h"
 #include "ui/panels/ais_table_model.h"
 #include "ui/panels/connection_indicator.h"
@@ -37,7 +37,8 @@ void MainWindow::buildLive() {
     try {
       hub_->add(c);
     } catch (const std::invalid_argument& e) {
-      errors << QStringLiteral("%1: connections: %2").arg(settings.fileName(), QString::fromStdString(e.what()));
+      errors
+          << QStringLiteral("%1: connections: %2").arg(settings.fileName(), QString::fromStdString(e.what()));
     }
   }
   if (!errors.isEmpty()) reportError(errors.join(QLatin1Char('\n')));
@@ -175,7 +176,7 @@ void MainWindow::stopLive() {
   localFrame_.reset();
   if (scenario.isEmpty() || !openScenario(scenario))
     openScenario(QStringLiteral("builtin:") + QString::fromLatin1(resources::kDefaultScenario.data(),
-                                                                 int(resources::kDefaultScenario.size())));
+                                                                  int(resources::kDefaultScenario.size())));
 }
 
 bool MainWindow::setLiveNmeaOut(const QString& spec) {
@@ -213,9 +214,10 @@ void MainWindow::liveFrameArrived(const LiveFrame& frame) {
     localFrame_.emplace(o.latDeg, o.lonDeg);
     view_->setHistory(&history_, *localFrame_);
     firstFrame_ = true;  // the first view shows own ship and the targets
-    statusBar()->showMessage(tr("Live: own ship from the connections' first position fix, %1")
-                                 .arg(QString::fromStdString(io::formatLatitude(o.latDeg) + " " + io::formatLongitude(o.lonDeg))),
-                             8000);
+    statusBar()->showMessage(
+        tr("Live: own ship from the connections' first position fix, %1")
+            .arg(QString::fromStdString(io::formatLatitude(o.latDeg) + " " + io::formatLongitude(o.lonDeg))),
+        8000);
   }
 }
 

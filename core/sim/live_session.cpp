@@ -58,7 +58,8 @@ void LiveSession::nmea(std::string_view line, std::optional<UtcUs> receivedUtc, 
   if (isAisLine(line)) {
     const std::optional<UtcUs> at = clockAt(receivedUtc);
     auto m = ais_.feed(line, at ? static_cast<double>(*at) * 1e-6 : -1.0);
-    if (m) aisOut_.push_back({at.value_or(0), track::isOwnShipSentence(line), std::string(source), std::move(*m)});
+    if (m)
+      aisOut_.push_back({at.value_or(0), track::isOwnShipSentence(line), std::string(source), std::move(*m)});
     return;
   }
   stream_->push(line, receivedUtc);

@@ -47,7 +47,7 @@ struct LiveAisMessage {
   /// once there is one, else the receive time; 0 when neither is known.
   UtcUs utc = 0;
   bool ownShip = false;  ///< it came in a !xxVDO sentence
-  std::string source;  ///< the connection's name
+  std::string source;    ///< the connection's name
   io::AisMessage message;
 };
 

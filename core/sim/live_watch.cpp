@@ -127,7 +127,8 @@ std::optional<track::AisOwnShip> LiveWatch::vdoOwnShip(UtcUs t) {
   if (!vdo || !vdo->hasPosition() || toSeconds(t - vdo->lastPositionUs) > table_.lostAfterS(*vdo))
     return std::nullopt;
   const geo::GeoPoint p{*vdo->latDeg, *vdo->lonDeg};
-  if (!vdoFrame_ || geo::rangeBearing(vdoFrame_->origin(), p).rangeM > kVdoFrameReachM) vdoFrame_.emplace(p.latDeg, p.lonDeg);
+  if (!vdoFrame_ || geo::rangeBearing(vdoFrame_->origin(), p).rangeM > kVdoFrameReachM)
+    vdoFrame_.emplace(p.latDeg, p.lonDeg);
   track::AisOwnShip own;
   own.position = p;
   if (vdo->sogKn && vdo->cogDeg) {

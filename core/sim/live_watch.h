@@ -9,10 +9,10 @@
 // receive clock); the alert manager on microseconds since the first time the watch saw (a frame or an
 // AIS message), never going back. A time an hour or more behind the latest is another clock (AIS heard
 // before a recording's first own-ship time was stamped by the receive clock): the AIS table starts
-// again (counted) and the manager's clock goes on from where it was. Own ship is the DRKF's estimate of the latest frame while it is at most ownShipFreshS
-// old; else the own ship that the AIS transponder reports in !xxVDO, when it has a position (a boat
-// whose only position source on the bus is its AIS transponder). Plain C++; per-call work never
-// throws.
+// again (counted) and the manager's clock goes on from where it was. Own ship is the DRKF's estimate of the
+// latest frame while it is at most ownShipFreshS old; else the own ship that the AIS transponder reports in
+// !xxVDO, when it has a position (a boat whose only position source on the bus is its AIS transponder). Plain
+// C++; per-call work never throws.
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -27,7 +27,7 @@
 namespace reckoner::sim {
 
 struct LiveWatchSettings {
-  AlertFeedSettings alerts;  ///< own ship and radar tracks (CPA limits, DR limit, discrepancy)
+  AlertFeedSettings alerts;   ///< own ship and radar tracks (CPA limits, DR limit, discrepancy)
   track::AisTableLimits ais;  ///< the AIS table; its CPA/TCPA limits also set the AIS CPA alert's
   /// The DRKF's estimate is own ship while its latest frame is at most this old (s, on the AIS clock).
   double ownShipFreshS = 10.0;

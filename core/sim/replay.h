@@ -14,8 +14,8 @@
 #include "estimation/nis_window.h"
 #include "navigation/drkf.h"
 #include "sim/scenario.h"
-#include "sim/sensor_profile.h"
 #include "sim/scenario_run.h"
+#include "sim/sensor_profile.h"
 #include "sim/stream_time.h"
 #include "tracking/track_manager.h"
 

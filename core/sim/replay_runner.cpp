@@ -275,7 +275,8 @@ void Runner::closeSweepsUntil(TimeUs t) {
     if (sink_) {
       SweepSnapshot snap;
       snap.timeUs = *nextSweepEnd_;
-      for (const auto& tr : bank_->tracks()) snap.tracks.push_back(trackSnapshotOf(*bank_, tr, snap.timeUs, gamma));
+      for (const auto& tr : bank_->tracks())
+        snap.tracks.push_back(trackSnapshotOf(*bank_, tr, snap.timeUs, gamma));
       sweeps_.push_back(std::move(snap));
     }
     *nextSweepEnd_ += sweepUs_;

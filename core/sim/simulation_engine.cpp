@@ -239,7 +239,8 @@ void SimulationEngine::startSweep(TimeUs t, SimFrame& frame) {
     snap.ownTruth = truth_.state();
     for (const auto& m : targets_) snap.targets.push_back(m.state());
     const double convergence = ownShipInput().convergenceRad;
-    for (const auto& tr : manager_->tracks()) snap.tracks.push_back(trackSnapshotOf(*manager_, tr, t, convergence));
+    for (const auto& tr : manager_->tracks())
+      snap.tracks.push_back(trackSnapshotOf(*manager_, tr, t, convergence));
     frame.sweeps.push_back(std::move(snap));
     matchRadar(t, frame);
   }
@@ -329,7 +330,8 @@ SimFrame SimulationEngine::step() {
   }
   if (!manager_->tracks().empty()) {
     const double convergence = ownShipInput().convergenceRad;
-    for (const auto& t : manager_->tracks()) frame.tracks.push_back(trackSnapshotOf(*manager_, t, end, convergence));
+    for (const auto& t : manager_->tracks())
+      frame.tracks.push_back(trackSnapshotOf(*manager_, t, end, convergence));
   }
   frame.trackEvents = manager_->takeEvents();
   frame.capacityWarning = manager_->capacityWarning();

@@ -8,8 +8,8 @@
 // Every wait is on a condition (the status lines live prints on stderr, files, sockets), capped
 // generously so a loaded machine only makes the test slower.
 #include <QDir>
-#include <QFileInfo>
 #include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
@@ -400,10 +400,13 @@ class TestLiveCli : public QObject {
     // AND live with the NMEA on one UDP port and the radar plots on another
     const quint16 nmeaPort = freeUdpPort(), radarPort = freeUdpPort();
     const QString out = dir_.path() + "/radar-live";
-    LiveRun live({"--udp", QString::number(nmeaPort), "--radar-udp", QString::number(radarPort), "--config",
-                  "builtin:imo-2", "--out", out},
-                 QStringLiteral("0.02"));  // a status line each 20 ms: the test waits on one per second of data
-    QVERIFY2(live.waitStatus([](const QString& s) { return s.contains("udp1 connected") && s.contains("radar2 connected"); }),
+    LiveRun live(
+        {"--udp", QString::number(nmeaPort), "--radar-udp", QString::number(radarPort), "--config",
+         "builtin:imo-2", "--out", out},
+        QStringLiteral("0.02"));  // a status line each 20 ms: the test waits on one per second of data
+    QVERIFY2(live.waitStatus([](const QString& s) {
+      return s.contains("udp1 connected") && s.contains("radar2 connected");
+    }),
              qPrintable(live.err()));
     // WHEN both are sent in time order, as a radar and the instruments deliver them: each second's
     // sentences, the plots stamped before them first
@@ -415,15 +418,19 @@ class TestLiveCli : public QObject {
     QVERIFY(rows.size() > 100);
     QUdpSocket tx;
     long nmea = 0, radar = 1;
-    QCOMPARE(tx.writeDatagram(rows.front() + "\n", QHostAddress::LocalHost, radarPort), rows.front().size() + 1);
+    QCOMPARE(tx.writeDatagram(rows.front() + "\n", QHostAddress::LocalHost, radarPort),
+             rows.front().size() + 1);
     qsizetype next = 1;
     const QRegularExpression hms(R"(^\$..(?:ZDA|RMC|GGA),(\d\d)(\d\d)(\d\d\.?\d*))");
     for (const QByteArray& c : chunks) {
       const auto m = hms.match(QString::fromLatin1(c));
       if (m.hasMatch()) {
-        const QString at = QStringLiteral("2026-11-23T%1:%2:%3").arg(m.captured(1), m.captured(2), m.captured(3));
-        for (; next < rows.size() && QString::fromLatin1(rows[next]).section(',', 0, 0).chopped(1) < at; ++next) {
-          QCOMPARE(tx.writeDatagram(rows[next] + "\n", QHostAddress::LocalHost, radarPort), rows[next].size() + 1);
+        const QString at =
+            QStringLiteral("2026-11-23T%1:%2:%3").arg(m.captured(1), m.captured(2), m.captured(3));
+        for (; next < rows.size() && QString::fromLatin1(rows[next]).section(',', 0, 0).chopped(1) < at;
+             ++next) {
+          QCOMPARE(tx.writeDatagram(rows[next] + "\n", QHostAddress::LocalHost, radarPort),
+                   rows[next].size() + 1);
           ++radar;
         }
       }

@@ -29,9 +29,9 @@
 #include "common/units.h"
 #include "connection_hub.h"
 #include "io/nmea.h"
+#include "live_stream.h"
 #include "sim/live_session.h"
 #include "source_config.h"
-#include "live_stream.h"
 
 namespace {
 using namespace reckoner;

@@ -47,9 +47,9 @@ std::vector<std::string> targetReports(int s) {
     const double lat = lat0 + (i / 50) * 0.2 / 60.0 + d * std::cos(degToRad(cog)) / 111200.0;
     const double lon =
         lon0 + (i % 50) * 0.2 / (60.0 * std::cos(degToRad(47.5))) + d * std::sin(degToRad(cog)) / 75100.0;
-    out.push_back(test::ais::sentence(test::ais::classA(1, 367000000 + i, 0, 0, static_cast<int>(sog * 10),
-                                                        std::llround(lon * 600000.0), std::llround(lat * 600000.0),
-                                                        static_cast<int>(cog * 10), static_cast<int>(cog))));
+    out.push_back(test::ais::sentence(
+        test::ais::classA(1, 367000000 + i, 0, 0, static_cast<int>(sog * 10), std::llround(lon * 600000.0),
+                          std::llround(lat * 600000.0), static_cast<int>(cog * 10), static_cast<int>(cog))));
   }
   return out;
 }

@@ -136,7 +136,8 @@ class TstConnections : public QObject {
     // Delivery on loopback, where its interface takes multicast
     const QNetworkInterface lo = QNetworkInterface::interfaceFromName("lo");
     const bool required = qEnvironmentVariableIsSet("RECKONER_REQUIRE_MULTICAST");  // multicast_netns.sh
-    if (required) QVERIFY2(lo.isValid() && (lo.flags() & QNetworkInterface::CanMulticast), "lo takes no multicast");
+    if (required)
+      QVERIFY2(lo.isValid() && (lo.flags() & QNetworkInterface::CanMulticast), "lo takes no multicast");
     if (!lo.isValid() || !(lo.flags() & QNetworkInterface::CanMulticast))
       QSKIP(
           "the loopback interface has no MULTICAST flag here: only the join error path is tested here; "

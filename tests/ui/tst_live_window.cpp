@@ -6,9 +6,9 @@
 // PNG to look at; stopping Live mode brings the simulation back. Waits are on conditions only.
 #include <QDockWidget>
 #include <QFile>
+#include <QNetworkDatagram>
 #include <QSettings>
 #include <QTableView>
-#include <QNetworkDatagram>
 #include <QUdpSocket>
 #include <QtTest>
 #include <cmath>
@@ -20,8 +20,8 @@
 #include "io/nmea.h"
 #include "io/text_file.h"
 #include "main_window_test_helpers.h"
-#include "support/compare_near.h"
 #include "support/ais_corpus.h"
+#include "support/compare_near.h"
 #include "support/text_lines.h"
 #include "ui/panels/ais_table_model.h"
 #include "ui/panels/connections_dialog.h"
@@ -90,8 +90,8 @@ class TstLiveWindow : public QObject {
     QVERIFY(w.isLive());
     QTRY_VERIFY_WITH_TIMEOUT(w.hub()->status().front().state == conn::State::Connected, kTimeoutMs);
     qInfo("connected");
-    const auto lines = reckoner::test::splitLines(
-        io::readTextFile(RECKONER_SHARED_DIR "/data/nmea/gpsd-bundg_zeus_9.log"));
+    const auto lines =
+        reckoner::test::splitLines(io::readTextFile(RECKONER_SHARED_DIR "/data/nmea/gpsd-bundg_zeus_9.log"));
     const std::vector<std::string> targets = aisAround(52.8502, 5.3136, 6);
     QUdpSocket tx;
     QByteArray burst;
@@ -131,7 +131,8 @@ class TstLiveWindow : public QObject {
       const LiveFrame& l = w.history().latest();
       if (!l.aisTargets || l.aisTargets->empty()) return QStringLiteral("no AIS targets");
       const track::AisTarget& t = l.aisTargets->front();
-      return QStringLiteral("first target: range valid %1, lost %2; own ship from %3; AIS UTC %4, frame UTC %5")
+      return QStringLiteral(
+                 "first target: range valid %1, lost %2; own ship from %3; AIS UTC %4, frame UTC %5")
           .arg(t.rangeValid)
           .arg(t.lost)
           .arg(static_cast<int>(l.ownShipSource))
@@ -142,7 +143,8 @@ class TstLiveWindow : public QObject {
                                   w.history().latest().aisTargets->front().rangeValid,
                               qPrintable(aisState()), kTimeoutMs);
     for (const track::AisTarget& t : *w.history().latest().aisTargets)
-      QVERIFY2(t.rangeM > nmToMetres(0.5) && t.rangeM < nmToMetres(3.0), qPrintable(QString::number(t.rangeM)));
+      QVERIFY2(t.rangeM > nmToMetres(0.5) && t.rangeM < nmToMetres(3.0),
+               qPrintable(QString::number(t.rangeM)));
     QCOMPARE(w.history().latest().ownShipSource, sim::LiveOwnShipSource::Drkf);
     // AND the NMEA output carries own ship, every sentence read back by the project's reader
     int rmcOut = 0, ggaOut = 0;
@@ -154,7 +156,8 @@ class TstLiveWindow : public QObject {
               const std::string line = l.trimmed().toStdString();
               if (line.empty()) continue;
               const io::nmea::ParseResult p = io::nmea::parse(line);
-              if (p.error == io::nmea::Error::BadChecksum || p.error == io::nmea::Error::Malformed) return false;
+              if (p.error == io::nmea::Error::BadChecksum || p.error == io::nmea::Error::Malformed)
+                return false;
               rmcOut += line.rfind("$INRMC,", 0) == 0;
               ggaOut += line.rfind("$INGGA,", 0) == 0;
             }
@@ -165,7 +168,8 @@ class TstLiveWindow : public QObject {
     qInfo("NMEA output: %d RMC, %d GGA read back", rmcOut, ggaOut);
     // AND the data monitor shows the raw lines, the clock says LIVE
     QTRY_VERIFY_WITH_TIMEOUT(w.dataMonitor()->model()->rowCount() > 100, kTimeoutMs);
-    QTRY_VERIFY2_WITH_TIMEOUT(w.clock()->text().startsWith("LIVE"), qPrintable(w.clock()->text()), kTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(w.clock()->text().startsWith("LIVE"), qPrintable(w.clock()->text()),
+                              kTimeoutMs);
     qInfo("monitor rows %d, clock %s", w.dataMonitor()->model()->rowCount(), qPrintable(w.clock()->text()));
     // AND the chart shows it all (looked at: screenshots/live_window.png)
     w.chart()->setRangeNm(1.5);
@@ -174,9 +178,9 @@ class TstLiveWindow : public QObject {
     // WHEN Live mode stops THEN the simulation is back, with its truth
     w.stopLive();
     QVERIFY(!w.isLive());
-    QTRY_VERIFY_WITH_TIMEOUT(!w.history().empty() && !w.history().latest().live &&
-                                 w.history().latest().frame.hasTruth,
-                             kTimeoutMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !w.history().empty() && !w.history().latest().live && w.history().latest().frame.hasTruth,
+        kTimeoutMs);
     QCOMPARE(w.aisModel()->rowCount(), 0);
   }
 };

@@ -11,8 +11,8 @@
 
 #include "alerts/alert.h"
 #include "radar/land_mask.h"
-#include "sim/scenario.h"
 #include "sim/live_watch.h"
+#include "sim/scenario.h"
 #include "sim/simulation_engine.h"
 #include "studies/own_ship_filters.h"
 #include "tracking/ais_targets.h"

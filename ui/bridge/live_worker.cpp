@@ -7,7 +7,7 @@ namespace reckoner::ui {
 namespace {
 constexpr int kTickMs = 1000;
 constexpr qint64 kMinEmitIntervalNs = 33'000'000;  // <= 30 frames per second
-constexpr qint64 kAisRefreshNs = 250'000'000;      // the AIS table copied for the GUI at most 4 times a second
+constexpr qint64 kAisRefreshNs = 250'000'000;  // the AIS table copied for the GUI at most 4 times a second
 
 UtcUs systemUtc() {
   return static_cast<UtcUs>(QDateTime::currentMSecsSinceEpoch()) * 1000;

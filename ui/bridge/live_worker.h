@@ -6,9 +6,9 @@
 // values to the GUI the way SimulationWorker does: at most one in flight, at most ~30 per second, the
 // epochs in between folded into the frame's history. The frames carry no truth. A timer brings the
 // AIS table and the alerts up to the clock once a second when no line arrives.
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
-#include <QElapsedTimer>
 #include <memory>
 #include <optional>
 

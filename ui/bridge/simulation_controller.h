@@ -54,7 +54,8 @@ class SimulationController : public QObject {
   /// its own thread, started at the first call) instead of the simulation, which waits paused. The hub
   /// must outlive the run (stopLive() first). Simulation commands are ignored meanwhile; alerts, CPA
   /// and DR limits go to the live run.
-  void startLive(conn::ConnectionHub* hub, const sim::LiveOptions& options, const sim::LiveWatchSettings& watch);
+  void startLive(conn::ConnectionHub* hub, const sim::LiveOptions& options,
+                 const sim::LiveWatchSettings& watch);
   /// Ends Live mode; the window loads a scenario again to go back to the simulation.
   void stopLive();
   [[nodiscard]] bool isLive() const { return live_; }

@@ -168,7 +168,8 @@ QLabel* OwnShipPanel::add(const QString& name) {
   return l;
 }
 
-void OwnShipPanel::showTruthAndCalibration(const LiveFrame& live, const geo::LocalFrame& frame, double gamma) {
+void OwnShipPanel::showTruthAndCalibration(const LiveFrame& live, const geo::LocalFrame& frame,
+                                           double gamma) {
   namespace dk = est::drkf;
   const sim::SimFrame& f = live.frame;
   const auto& x = f.estimate.x;
@@ -179,11 +180,14 @@ void OwnShipPanel::showTruthAndCalibration(const LiveFrame& live, const geo::Loc
     truePos_->setText(none);
     trueCog_->setText(none);
     error_->setText(QStringLiteral("– / %1 m").arg(live.error95M, 0, 'f', 1));
-    heading_->setText(QStringLiteral("%1 / –").arg(formatBearing(bearingOf(x[dk::kVelX], x[dk::kVelY]) + gamma)));
-    current_->setText(QStringLiteral("%1 @ %2").arg(formatSpeed(std::hypot(x[dk::kCurX], x[dk::kCurY]), units_, 2),
-                                                    formatBearing(bearingOf(x[dk::kCurX], x[dk::kCurY]) + gamma, 0)));
+    heading_->setText(
+        QStringLiteral("%1 / –").arg(formatBearing(bearingOf(x[dk::kVelX], x[dk::kVelY]) + gamma)));
+    current_->setText(
+        QStringLiteral("%1 @ %2").arg(formatSpeed(std::hypot(x[dk::kCurX], x[dk::kCurY]), units_, 2),
+                                      formatBearing(bearingOf(x[dk::kCurX], x[dk::kCurY]) + gamma, 0)));
     log_->setText(formatSpeed(x[dk::kLogBias], units_, 3));
-    loran_->setText(QStringLiteral("(%1, %2) m").arg(x[dk::kLoranX], 0, 'f', 1).arg(x[dk::kLoranY], 0, 'f', 1));
+    loran_->setText(
+        QStringLiteral("(%1, %2) m").arg(x[dk::kLoranX], 0, 'f', 1).arg(x[dk::kLoranY], 0, 'f', 1));
   } else {
     truePos_->setText(latLon(frame.toGeodetic(f.truth.position)));
     error_->setText(QStringLiteral("%1 m / %2 m")
@@ -226,8 +230,9 @@ void OwnShipPanel::setFrame(const LiveFrame& live, const geo::LocalFrame& frame)
     const est::Mat<2> P = g.P.topLeftCorner<2, 2>();
     const double lmax = est::largestEigenvalue(P);
     if (!f.hasTruth) {
-      seed002_[i]->setText(QStringLiteral("95% %1 m").arg(
-          std::sqrt(est::chiSquareQuantile(0.95, 2.0) * std::max(lmax, 0.0)), 0, 'f', 1));
+      seed002_[i]->setText(
+          QStringLiteral("95% %1 m")
+              .arg(std::sqrt(est::chiSquareQuantile(0.95, 2.0) * std::max(lmax, 0.0)), 0, 'f', 1));
       continue;
     }
     seed002_[i]->setText(

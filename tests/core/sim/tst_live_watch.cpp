@@ -49,7 +49,8 @@ std::optional<double> timeOfDay(const std::string& l) {
   for (std::size_t i = 0; i < field; ++i) at = l.find(',', at) + 1;
   const std::string hms = l.substr(at, 6);
   if (hms.size() < 6) return std::nullopt;
-  return std::stoi(hms.substr(0, 2)) * 3600.0 + std::stoi(hms.substr(2, 2)) * 60.0 + std::stoi(hms.substr(4, 2));
+  return std::stoi(hms.substr(0, 2)) * 3600.0 + std::stoi(hms.substr(2, 2)) * 60.0 +
+         std::stoi(hms.substr(4, 2));
 }
 
 /// The recording's RMC fixes (time of day, position, SOG, COG).
@@ -77,9 +78,10 @@ struct Target {
   }
   [[nodiscard]] std::string report(double t, bool ownShip = false) const {
     const auto [lat, lon] = at(t);
-    const auto p = ais::classA(1, mmsi, 0, 0, static_cast<int>(std::lround(sogKn * 10)),
-                               std::llround(lon * 600000.0), std::llround(lat * 600000.0),
-                               static_cast<int>(std::lround(cogDeg * 10)), static_cast<int>(std::lround(cogDeg)));
+    const auto p =
+        ais::classA(1, mmsi, 0, 0, static_cast<int>(std::lround(sogKn * 10)), std::llround(lon * 600000.0),
+                    std::llround(lat * 600000.0), static_cast<int>(std::lround(cogDeg * 10)),
+                    static_cast<int>(std::lround(cogDeg)));
     if (!ownShip) return ais::sentence(p);
     const auto [payload, fill] = p.armoured();
     return ais::withSum("AIVDO,1,1,,A," + payload + "," + std::to_string(fill));
@@ -134,8 +136,12 @@ class TestLiveWatch : public QObject {
     // 60 s of the recording
     const Fix& f0 = fixes_.front();
     const double d = nmToMetres(1.5), c = degToRad(f0.cogDeg);
-    const Target target{244123456, f0.tS, f0.latDeg + d * std::cos(c) / kMetresPerDegLat,
-                        f0.lonDeg + d * std::sin(c) / kMetresPerDegLon, 10.0, std::fmod(f0.cogDeg + 180.0, 360.0)};
+    const Target target{244123456,
+                        f0.tS,
+                        f0.latDeg + d * std::cos(c) / kMetresPerDegLat,
+                        f0.lonDeg + d * std::sin(c) / kMetresPerDegLon,
+                        10.0,
+                        std::fmod(f0.cogDeg + 180.0, 360.0)};
     sim::LiveOptions lo;
     lo.frames = true;
     sim::LiveSession session(lo);
@@ -148,8 +154,8 @@ class TestLiveWatch : public QObject {
     // WHEN the lines are fed one by one and the watch absorbs after each
     for (const std::string& l : lines_) {
       session.nmea(l, std::nullopt, "bus");
-      if (const auto t = timeOfDay(l); t && l.rfind("$GPRMC,", 0) == 0 &&
-                                        std::fmod(*t - f0.tS, 10.0) == 0.0 && *t - f0.tS <= 60.0)
+      if (const auto t = timeOfDay(l);
+          t && l.rfind("$GPRMC,", 0) == 0 && std::fmod(*t - f0.tS, 10.0) == 0.0 && *t - f0.tS <= 60.0)
         session.nmea(target.report(*t), std::nullopt, "ais");
       const sim::LiveWatch::Taken taken = watch.absorb(session, std::nullopt);
       for (const sim::SimFrame& f : taken.frames) QVERIFY(!f.hasTruth);
@@ -171,8 +177,8 @@ class TestLiveWatch : public QObject {
         const double dt = tNow - own->tS;  // own ship carried on from its fix
         const double oc = degToRad(own->cogDeg), od = knotsToMps(own->sogKn) * dt;
         expected = cpaOf(own->latDeg + od * std::cos(oc) / kMetresPerDegLat,
-                         own->lonDeg + od * std::sin(oc) / kMetresPerDegLon, own->sogKn, own->cogDeg, lat, lon,
-                         target.sogKn, target.cogDeg);
+                         own->lonDeg + od * std::sin(oc) / kMetresPerDegLon, own->sogKn, own->cogDeg, lat,
+                         lon, target.sogKn, target.cogDeg);
       }
     }
     session.finish();
@@ -236,8 +242,8 @@ class TestLiveWatch : public QObject {
     // GIVEN a bus with AIS only: own ship's transponder (!AIVDO) and a target crossing ahead
     const double t0 = 9 * 3600.0;
     const Target own{211000001, t0, 52.85, 5.30, 8.0, 90.0};
-    const Target other{244000002, t0, 52.85 + 1000.0 / kMetresPerDegLat, 5.30 + 1500.0 / kMetresPerDegLon, 8.0,
-                       180.0};
+    const Target other{244000002, t0,   52.85 + 1000.0 / kMetresPerDegLat, 5.30 + 1500.0 / kMetresPerDegLon,
+                       8.0,       180.0};
     sim::LiveSession session(sim::LiveOptions{});
     sim::LiveWatch watch;
     // WHEN they report every 10 s for two minutes, with receive times

@@ -22,6 +22,8 @@ void addRunCommands(CLI::App& root, Commands& out);       // run, montecarlo (ru
 void addReplayCommands(CLI::App& root, Commands& out);    // replay, export (replay_commands.cpp)
 void addStudyCommands(CLI::App& root, Commands& out);     // compare, own-ship-compare, radar-fix
 void addImoCommand(CLI::App& root, Commands& out);        // imo (imo_command.cpp)
+void addFusionCommand(CLI::App& root, Commands& out);     // fusion (fusion_command.cpp)
+void addTrialCommand(CLI::App& root, Commands& out);      // trial (trial_command.cpp)
 void addSeedCommands(CLI::App& root, Commands& out);      // seed001, seed003 (seed_commands.cpp)
 void addManoeuvreCommand(CLI::App& root, Commands& out);  // manoeuvre-report (manoeuvre_report.cpp)
 void addChartCommands(CLI::App& root, Commands& out);     // chart info|render|pick (chart_commands.cpp)

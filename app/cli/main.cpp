@@ -3,6 +3,8 @@
 //   replay --nmea FILE, export SCENARIO                    replay_commands.cpp
 //   compare, own-ship-compare, radar-fix SCENARIO          study_commands.cpp
 //   imo [SCENARIO...]                                      imo_command.cpp
+//   fusion [SCENARIO...]                                   fusion_command.cpp
+//   trial SCENARIO --at T --course C --speed S --delay D   trial_command.cpp
 //   seed001, seed003                                       seed_commands.cpp
 //   manoeuvre-report                                       manoeuvre_report.cpp
 //   chart info|render|pick PATH...                         chart_commands.cpp
@@ -117,9 +119,9 @@ int run(int argc, char** argv) {
                             ")",
                         "Print the version of reckoner-cli and of the libraries it runs on, and exit");
   Commands commands;
-  for (const auto add :
-       {addRunCommands, addReplayCommands, addStudyCommands, addImoCommand, addSeedCommands,
-        addManoeuvreCommand, addChartCommands, addScenarioCommands, addAisCommands, addLiveCommands})
+  for (const auto add : {addRunCommands, addReplayCommands, addStudyCommands, addImoCommand, addFusionCommand,
+                         addTrialCommand, addSeedCommands, addManoeuvreCommand, addChartCommands,
+                         addScenarioCommands, addAisCommands, addLiveCommands})
     add(root, commands);
   for (const auto& c : commands) c.app->allow_extras();
   root.footer(kFooter);  // after the commands: theirs would inherit it

@@ -80,6 +80,7 @@ enum RngStream : std::uint64_t {
   kStreamGyroBias = 11,      ///< the gyro's calibration error (its own stream: the paper's stay as they were)
   kStreamLogScale = 12,      ///< the speedlog's scale-factor error
   kStreamTargetBase = 1000,  ///< target i uses kStreamTargetBase + i
+  kStreamAisBase = 1'000'000,  ///< target i's AIS transponder uses kStreamAisBase + i
 };
 
 }  // namespace reckoner

@@ -176,5 +176,10 @@ void readTargets(Fields& top, sim::Scenario& s);
 void readRadarMatching(Fields& top, sim::Scenario& s);
 void readTracker(Fields& top, sim::Scenario& s);
 void readFilter(Fields& top, sim::Scenario& s);
+// The AIS parts (scenario_ais.cpp).
+void readTargetAis(Fields& target, sim::TargetSpec& t);
+void readAisAssociation(Fields& tracker, sim::TrackerSpec& tr);
+void writeTargetAis(io::JsonWriter& w, const sensors::AisTransmitterSpec& a);
+void writeAisAssociation(io::JsonWriter& w, const track::AisAssociationConfig& a);
 
 }  // namespace reckoner::files::scenario_detail

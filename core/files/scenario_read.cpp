@@ -266,6 +266,7 @@ void readTargets(Fields& top, sim::Scenario& s) {
     t.name = f.stringOr("name", "target " + std::to_string(t.id));
     if (f.get("appear_s")) t.appearUs = timeField(f, "appear_s", s.durationUs);
     readMotion(f, t.motion, s.durationUs);
+    readTargetAis(f, t);
     f.finish();
     s.targets.push_back(std::move(t));
   }

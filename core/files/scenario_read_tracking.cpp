@@ -247,6 +247,7 @@ void readTracker(Fields& top, sim::Scenario& s) {
   readFilterKind(f, tr, s.durationUs);
   readAlphaBetaGamma(f, tr.abg);
   readImm(f, tr.imm);
+  readAisAssociation(f, tr);
   f.finish();
 }
 

@@ -202,6 +202,7 @@ void writeTargets(JsonWriter& w, const std::vector<sim::TargetSpec>& targets) {
     w.key("name").value(t.name);
     if (t.appearUs > 0) writeTime(w, "appear_s", t.appearUs);
     writeMotion(w, t.motion);
+    if (t.ais) scenario_detail::writeTargetAis(w, *t.ais);
     w.endObject();
   }
   w.endArray();
@@ -362,6 +363,7 @@ std::string writeScenario(const sim::Scenario& s) {
   w.key("tracker").beginObject();
   writeTrackManagement(w, s.tracker);
   writeTrackFilters(w, s.tracker);
+  scenario_detail::writeAisAssociation(w, s.tracker.aisAssociation);
   w.endObject();
   w.endObject();
   return w.str() + "\n";

@@ -187,6 +187,12 @@ void checkTarget(ScenarioCheck& c, const Scenario& s, std::size_t i) {
     if (s.targets[j].id == t.id) c.fail(path + ".id", "id " + std::to_string(t.id) + " used twice");
   c.time(path + ".appear_s", t.appearUs);
   checkMotion(c, path, t.motion);
+  if (t.ais) {
+    if (const std::string e = t.ais->check(); !e.empty()) c.fail(path + ".ais", e);
+    for (std::size_t j = 0; j < i; ++j)
+      if (s.targets[j].ais && s.targets[j].ais->mmsi == t.ais->mmsi)
+        c.fail(path + ".ais.mmsi", "MMSI " + std::to_string(t.ais->mmsi) + " used twice");
+  }
 }
 
 void checkFilter(ScenarioCheck& c, const FilterSpec& f) {
@@ -214,6 +220,7 @@ void checkZones(ScenarioCheck& c, const std::string& path, const std::vector<tra
 
 void checkTracker(ScenarioCheck& c, const Scenario& s) {
   const TrackerSpec& tr = s.tracker;
+  if (const std::string e = tr.aisAssociation.check(); !e.empty()) c.fail("tracker.ais_association", e);
   c.gaussMarkov("tracker.own_acceleration", "sigma_mps2", tr.ownAcceleration, limits::kAccelSdMps2);
   c.gaussMarkov("tracker.target_acceleration", "sigma_mps2", tr.targetAcceleration, limits::kAccelSdMps2);
   if (!(tr.gateProbability >= 0.0 && tr.gateProbability < 1.0))

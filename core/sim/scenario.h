@@ -11,8 +11,10 @@
 #include "estimation/gauss_markov.h"
 #include "estimation/models/drkf_process.h"
 #include "geo/local_frame.h"
+#include "sensors/ais_transmitter.h"
 #include "sensors/own_ship_sensor_specs.h"
 #include "sensors/radar.h"
+#include "tracking/ais_fusion.h"
 #include "tracking/track_manager.h"
 
 namespace reckoner::sim {
@@ -61,6 +63,8 @@ struct TargetSpec {
   /// position (targets added during a run).
   TimeUs appearUs = 0;
   VesselMotionSpec motion;
+  /// An AIS transponder on board (sensors/ais_transmitter.h); none: a target the radar alone sees.
+  std::optional<sensors::AisTransmitterSpec> ais;
 };
 
 /// The target trackers (TTKFs), their bank and its track management (docs/ttkf.md).
@@ -90,6 +94,8 @@ struct TrackerSpec {
   double inputEstimationPfa = 1e-4;
   track::AbgConfig abg{0.1, true};
   track::ImmConfig imm;
+  /// AIS stations associated with radar tracks and fused into them (tracking/ais_fusion.h).
+  track::AisAssociationConfig aisAssociation;
 };
 
 /// The filter for tracks started at t.

@@ -126,6 +126,7 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
     targets_.emplace_back(scenario.targets[i].motion, noCurrent, Rng(seed, kStreamTargetBase + i),
                           scenario.targets[i].appearUs);
   manager_.emplace(trackManagerConfigFor(scenario.tracker, scenario.radar.sweepPeriodS));
+  ais_.emplace(scenario, seed);
   nextSweepUs_ = scenario.radar.fitted ? 0 : kNever;
 }
 
@@ -328,10 +329,19 @@ SimFrame SimulationEngine::step() {
     frame.targets.push_back(targets_[i].state());
     frame.targetPresent.push_back(scenario_.targets[i].appearUs <= end ? 1 : 0);
   }
+  if (!ais_->idle()) {
+    AisCycle c = ais_->step(end, targets_, frame.targetPresent, frame_, *manager_, ownShipInput());
+    frame.aisReceived = std::move(c.received);
+    frame.aisTargets = std::move(c.targets);
+    frame.aisAssociations = std::move(c.associations);
+    frame.aisEvents = std::move(c.events);
+  }
   if (!manager_->tracks().empty()) {
     const double convergence = ownShipInput().convergenceRad;
-    for (const auto& t : manager_->tracks())
+    for (const auto& t : manager_->tracks()) {
       frame.tracks.push_back(trackSnapshotOf(*manager_, t, end, convergence));
+      frame.tracks.back().aisMmsi = ais_->fusion().mmsiOfTrack(t.id);
+    }
   }
   frame.trackEvents = manager_->takeEvents();
   frame.capacityWarning = manager_->capacityWarning();
@@ -554,12 +564,16 @@ std::optional<int> SimulationEngine::addTarget(TargetSpec target) {
   if (!inside(m.initialPosition.xM, limits::kPositionM) ||
       !inside(m.initialPosition.yM, limits::kPositionM) ||
       !inside(std::hypot(m.initialVelocityMps[0], m.initialVelocityMps[1]), limits::kSpeedMps) ||
-      !m.schedule.empty())
+      !m.schedule.empty() || (target.ais && !target.ais->check().empty()))
     return std::nullopt;
+  if (target.ais)
+    for (const auto& t : scenario_.targets)
+      if (t.ais && t.ais->mmsi == target.ais->mmsi) return std::nullopt;
   const std::size_t index = scenario_.targets.size();
   targets_.emplace_back(m, est::GaussMarkov{0.0, 1.0}, Rng(seed_, kStreamTargetBase + index),
                         target.appearUs);
   scenario_.targets.push_back(std::move(target));
+  ais_->addTarget(index, scenario_.targets.back(), timeUs_);
   return scenario_.targets.back().id;
 }
 

@@ -14,6 +14,7 @@
 #include "radar/radar_image.h"
 #include "sensors/own_ship_simulators.h"
 #include "sensors/radar.h"
+#include "sim/ais_traffic.h"
 #include "sim/scenario.h"
 #include "sim/vessel_motion.h"
 #include "tracking/track_manager.h"
@@ -33,7 +34,8 @@ struct TrackSnapshot {
   est::ttkf::Belief estimate;  ///< predicted to the snapshot time (lost: at its last plot)
   track::TrackKinematics kinematics;
   int radarUpdates = 0;
-  double lastNis = 0.0;  ///< NIS of its last radar update attempt
+  double lastNis = 0.0;       ///< NIS of its last radar update attempt
+  std::uint32_t aisMmsi = 0;  ///< the AIS station associated with it (0: none)
 };
 
 /// The picture at the end of a radar sweep: every track and the truth at that instant.
@@ -107,6 +109,12 @@ struct SimFrame {
   std::vector<track::AcquisitionZone> zones;
   /// Dead reckoning at timeUs: no recent position fix (nav::DeadReckoningMonitor's rule).
   nav::DeadReckoningStatus deadReckoning;
+  /// AIS (sim/ais_traffic.h): messages heard this cycle, the target table at timeUs (null: no
+  /// transponder in the scenario), the stations associated with tracks and the changes this cycle.
+  std::vector<sensors::AisReception> aisReceived;
+  std::shared_ptr<const std::vector<track::AisTarget>> aisTargets;
+  std::vector<track::AisAssociation> aisAssociations;
+  std::vector<track::AisAssociationEvent> aisEvents;
 };
 
 /// A track of `bank` as the ARPA shows it at `time` (its belief predicted there; lost: at its last
@@ -131,6 +139,8 @@ class SimulationEngine {
   [[nodiscard]] const geo::LocalFrame& frame() const { return frame_; }
   [[nodiscard]] const nav::Drkf& drkf() const { return *drkf_; }
   [[nodiscard]] const track::TrackManager& trackers() const { return *manager_; }
+  /// The AIS transponders, table and fusion (idle when no target carries a transponder).
+  [[nodiscard]] const AisTraffic& ais() const { return *ais_; }
   /// When own ship has been dead reckoning so far (evaluated at the end of every step).
   [[nodiscard]] const nav::DeadReckoningMonitor& deadReckoning() const { return deadReckoning_; }
 
@@ -226,6 +236,7 @@ class SimulationEngine {
   long sweepIndex_ = 0;
   std::optional<double> lastSweepHeadingRad_;
   nav::DeadReckoningMonitor deadReckoning_;
+  std::optional<AisTraffic> ais_;
 };
 
 /// The DRKF configuration a scenario implies (the filter is tuned with the sensors' specifications).

@@ -12,6 +12,7 @@
 #include "common/units.h"
 #include "sim/scenario_run.h"
 #include "sim/simulation_engine.h"
+#include "studies/imo_errors.h"
 
 // The studies drive the engine and score its runs: the engine's names unqualified here.
 using namespace reckoner::sim;
@@ -19,15 +20,21 @@ using namespace reckoner::sim;
 namespace reckoner::studies {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-using Errors = std::array<double, kImoQuantityCount>;
+using Errors = ImoErrors;
+using Truth = ImoTruth;
 
-struct Truth {
-  double relCourseDeg, relSpeedKn, cpaNm, tcpaMin, courseDeg, speedKn;
+/// No sample: no bound (infinite error).
+double percentile95(std::vector<double> v) {
+  return reckoner::percentile95(std::move(v), kInf);
+}
+
+struct RunSample {
+  std::optional<Errors> at1, at3;
+  Truth truth3{};
 };
+}  // namespace
 
-Truth truthOf(const sim::SweepSnapshot& s, std::size_t target, double convergence) {
-  const auto& o = s.ownTruth;
-  const auto& t = s.targets[target];
+ImoTruth imoTruthOf(const sim::VesselTruth& o, const sim::VesselTruth& t, double convergence) {
   const double rx = t.position.xM - o.position.xM, ry = t.position.yM - o.position.yM;
   const double vx = t.groundVxMps() - o.groundVxMps(), vy = t.groundVyMps() - o.groundVyMps();
   Truth r{};
@@ -42,8 +49,7 @@ Truth truthOf(const sim::SweepSnapshot& s, std::size_t target, double convergenc
   return r;
 }
 
-Errors errorsOf(const sim::TrackSnapshot& tr, const Truth& t) {
-  const auto& k = tr.kinematics;
+ImoErrors imoErrorsOf(const track::TrackKinematics& k, const ImoTruth& t) {
   Errors e{};
   e[0] = std::abs(radToDeg(angleDiff(k.relativeCourseRad, degToRad(t.relCourseDeg))));
   e[1] = std::abs(mpsToKnots(k.relativeSpeedMps) - t.relSpeedKn);
@@ -53,17 +59,6 @@ Errors errorsOf(const sim::TrackSnapshot& tr, const Truth& t) {
   e[5] = std::abs(mpsToKnots(k.speedMps) - t.speedKn);
   return e;
 }
-
-/// No sample: no bound (infinite error).
-double percentile95(std::vector<double> v) {
-  return reckoner::percentile95(std::move(v), kInf);
-}
-
-struct RunSample {
-  std::optional<Errors> at1, at3;
-  Truth truth3{};
-};
-}  // namespace
 
 const char* imoQuantityName(ImoQuantity q) {
   switch (q) {
@@ -124,10 +119,11 @@ ImoResult evaluateImo(const sim::Scenario& scenario, int runs, int threads, std:
           acquiredUs = tr->initiatedUs;
         }
         const double gamma = engine.frame().gridInfo(sw.ownTruth.position).convergenceRad;
-        const Truth truth = truthOf(sw, 0, gamma);
-        if (!out.at1 && sw.timeUs >= acquiredUs + 60 * kMicrosPerSecond) out.at1 = errorsOf(*tr, truth);
+        const Truth truth = imoTruthOf(sw.ownTruth, sw.targets[0], gamma);
+        if (!out.at1 && sw.timeUs >= acquiredUs + 60 * kMicrosPerSecond)
+          out.at1 = imoErrorsOf(tr->kinematics, truth);
         if (!out.at3 && sw.timeUs >= acquiredUs + 180 * kMicrosPerSecond) {
-          out.at3 = errorsOf(*tr, truth);
+          out.at3 = imoErrorsOf(tr->kinematics, truth);
           out.truth3 = truth;
         }
       }

@@ -288,6 +288,12 @@ est::UpdateReport<2> TrackFilter::updateRadar(const GridPlot& plot, Ttkf::RadarD
   return std::visit([&plot](auto& f) { return f.updateRadar(plot); }, f_);
 }
 
+est::UpdateReport<4> TrackFilter::updateTargetState(TimeUs t, const est::Vec<4>& z, const est::Mat<4>& R,
+                                                    double gate, double adaptNis) {
+  if (Ttkf* f = ttkf()) return f->updateTargetState(t, z, R, gate, adaptNis);
+  return {};
+}
+
 tk::Belief TrackFilter::belief() const {
   if (const Ttkf* t = ttkf()) return t->belief();
   return predicted(timeUs());

@@ -94,6 +94,10 @@ class TrackFilter {
   void feedOwnShip(const OwnShipInput& own);
   /// detail: filled by the TTKF only (input estimation).
   est::UpdateReport<2> updateRadar(const GridPlot& plot, Ttkf::RadarDetail* detail = nullptr);
+  /// A direct measurement of the target's position and velocity (Ttkf::updateTargetState); the
+  /// alpha-beta-gamma and IMM filters do not take one (an Empty report).
+  est::UpdateReport<4> updateTargetState(TimeUs t, const est::Vec<4>& z, const est::Mat<4>& R, double gate,
+                                         double adaptNis = 0.0);
   /// The 12-state belief at timeUs().
   [[nodiscard]] tk::Belief belief() const;
   /// The 12-state belief predicted to t (t before timeUs(): the current one).

@@ -68,9 +68,18 @@ bool TrackManager::setZones(const std::vector<AcquisitionZone>& zones) {
   return true;
 }
 
+namespace {
+TtkfConfig fusedConfig(const TrackManagerConfig& c) {
+  TtkfConfig f = c.filter;
+  f.process.targetAcceleration = c.fusedTargetAcceleration;
+  return f;
+}
+}  // namespace
+
 TrackManager::TrackManager(const TrackManagerConfig& config)
     : config_(config),
       ctx_(std::make_shared<const TtkfContext>(config.filter)),
+      fusedCtx_(std::make_shared<const TtkfContext>(fusedConfig(config))),
       hypothesiser_(ctx_->radarGate, fromSeconds(0.5 * config.sweepPeriodS)),
       filters_{ctx_, config.abg, config.imm},
       confirmation_(config.confirmHits, config.confirmSweeps),
@@ -89,6 +98,22 @@ const Track* TrackManager::find(int id) const {
   for (const auto& t : tracks_)
     if (t.id == id) return &t;
   return nullptr;
+}
+
+est::UpdateReport<4> TrackManager::fuseTargetState(int trackId, TimeUs t, const est::Vec<4>& z,
+                                                   const est::Mat<4>& R, double gate, double adaptNis) {
+  for (auto& tr : tracks_)
+    if (tr.id == trackId && tr.active()) return tr.filter.updateTargetState(t, z, R, gate, adaptNis);
+  return {};
+}
+
+void TrackManager::setFused(int trackId, bool fused) {
+  for (auto& tr : tracks_)
+    if (tr.id == trackId)
+      if (Ttkf* f = tr.filter.ttkf()) {
+        f->setContext(fused ? fusedCtx_ : ctx_);
+        if (fused) f->restartTargetAcceleration();
+      }
 }
 
 std::vector<TrackEvent> TrackManager::takeEvents() {

@@ -52,6 +52,10 @@ struct TrackManagerConfig {
   double sweepPeriodS = 2.0;
   double dangerCpaM = 1852.0;  ///< 1 NM
   double dangerTcpaS = 720.0;  ///< 12 min
+  /// The target model of a track fused with AIS: reports every 2 to 30 s measure its velocity, so a
+  /// straight-running ship's small random acceleration suffices (turns are caught by the AIS
+  /// innovation, Ttkf::updateTargetState's adaptNis).
+  est::GaussMarkov fusedTargetAcceleration{0.005, 0.02};
   /// The filter of new tracks (track_filter.h); each kind's parameters below.
   TrackerKind kind = TrackerKind::Ekf;
   /// ekf-ie: seed 001's input estimation around the TTKF (docs/manoeuvres.md), the window in radar
@@ -133,6 +137,14 @@ class TrackManager {
   /// are finite and >= 0, as TrackManagerConfig::check demands).
   void setDangerLimits(double cpaM, double tcpaS);
 
+  /// Fuses a direct measurement of a track's target state (an associated AIS report, ais_fusion.h) at
+  /// t >= the track's filter time; an Empty report for an unknown or lost track or a filter that does
+  /// not take one.
+  est::UpdateReport<4> fuseTargetState(int trackId, TimeUs t, const est::Vec<4>& z, const est::Mat<4>& R,
+                                       double gate, double adaptNis = 0.0);
+  /// A track fused with AIS (true) runs the quieter target model of fusedTargetAcceleration; false
+  /// returns it to the bank's. Ignored for an unknown track or a filter without a TTKF.
+  void setFused(int trackId, bool fused);
   /// The track's belief predicted to t (not changing the track); lost tracks keep their last one.
   [[nodiscard]] est::ttkf::Belief beliefAt(const Track& t, TimeUs time) const;
   [[nodiscard]] const std::vector<Track>& tracks() const { return tracks_; }
@@ -176,6 +188,7 @@ class TrackManager {
 
   TrackManagerConfig config_;
   std::shared_ptr<const TtkfContext> ctx_;
+  std::shared_ptr<const TtkfContext> fusedCtx_;
   Hypothesiser hypothesiser_;
   TrackFilterFactory filters_;
   MofNConfirmation confirmation_;

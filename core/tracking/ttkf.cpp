@@ -180,6 +180,45 @@ est::UpdateReport<2> Ttkf::updateRadar(const GridPlot& plot, RadarDetail* detail
   return est::update(belief_, model, est::Vec<2>(plot.rangeM, plot.bearingRad), R, ctx_->radarGate);
 }
 
+est::UpdateReport<4> Ttkf::updateTargetState(TimeUs t, const est::Vec<4>& z, const est::Mat<4>& R,
+                                             double gate, double adaptNis) {
+  est::UpdateReport<4> rep;
+  if (!predictTo(t)) {
+    rep.status = t < timeUs_ ? est::UpdateStatus::RejectedStale : est::UpdateStatus::RejectedNumerical;
+    return rep;
+  }
+  est::BMatRows<4, kN> H = est::BMatRows<4, kN>::Zero(4, kN);
+  constexpr std::array<int, 4> kRows{tk::kTgtX, tk::kTgtY, tk::kTgtVx, tk::kTgtVy};
+  est::BVec<4> y(4);
+  for (int r = 0; r < 4; ++r) {
+    H(r, kRows[static_cast<std::size_t>(r)]) = 1.0;
+    y[r] = z[r] - belief_.x[kRows[static_cast<std::size_t>(r)]];
+  }
+  const est::BMat<4> Rb = R;
+  if (adaptNis > 0.0) {
+    tk::Belief trial = belief_;
+    const auto probe = est::updateJoseph<kN, 4>(trial, y, H, Rb, 0.0);
+    if (probe.status == est::UpdateStatus::Accepted && probe.nis > adaptNis) {
+      const double scale = std::sqrt(std::min(100.0, probe.nis / 4.0));
+      for (int i : {tk::kTgtVx, tk::kTgtVy, tk::kTgtAx, tk::kTgtAy}) {
+        belief_.P.row(i) *= scale;
+        belief_.P.col(i) *= scale;
+      }
+    }
+  }
+  return est::updateJoseph<kN, 4>(belief_, y, H, Rb, gate);
+}
+
+void Ttkf::restartTargetAcceleration() {
+  const double sigma = ctx_->config.process.targetAcceleration.sigma;
+  for (int i : {tk::kTgtAx, tk::kTgtAy}) {
+    belief_.x[i] = 0.0;
+    belief_.P.row(i).setZero();
+    belief_.P.col(i).setZero();
+    belief_.P(i, i) = std::max(sigma * sigma, 1e-12);
+  }
+}
+
 bool Ttkf::correct(const tk::State& dx, const tk::Covariance& dP) {
   tk::Belief b = belief_;
   b.x += dx;

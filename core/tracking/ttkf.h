@@ -87,6 +87,18 @@ class Ttkf {
   /// Predicts to the plot's time and applies range and azimuth (gated). detail, if given, receives
   /// the prior covariance and the Jacobian.
   est::UpdateReport<2> updateRadar(const GridPlot& plot, RadarDetail* detail = nullptr);
+  /// Predicts to t and applies a direct measurement z of the target's position and ground velocity
+  /// [x, y, vx, vy] (grid) with covariance R (an AIS report, ais_fusion.h), gated at `gate` (0: none).
+  /// adaptNis > 0: when the NIS exceeds it (a manoeuvre the model did not expect), the target's velocity
+  /// and acceleration covariance is first scaled up by NIS / 4 (at most 100), then the update is made.
+  est::UpdateReport<4> updateTargetState(TimeUs t, const est::Vec<4>& z, const est::Mat<4>& R, double gate,
+                                         double adaptNis = 0.0);
+  /// The context (process model) from now on: a track fused with AIS runs a quieter target model.
+  void setContext(std::shared_ptr<const TtkfContext> ctx) { ctx_ = std::move(ctx); }
+  /// Restarts the target's acceleration estimate: 0 with the context's stationary variance, no
+  /// correlation with the rest (on association with AIS: the radar-only estimate of the acceleration
+  /// is the noisiest part of the state, and the quieter model would keep its error for long).
+  void restartTargetAcceleration();
   /// Adds a correction to the belief (input estimation: x += M u, P += M L M'); false and unchanged
   /// when the result is not finite.
   bool correct(const tk::State& dx, const tk::Covariance& dP);

@@ -244,7 +244,8 @@ class TestLiveWatch : public QObject {
     const Target own{211000001, t0, 52.85, 5.30, 8.0, 90.0};
     const Target other{244000002, t0,   52.85 + 1000.0 / kMetresPerDegLat, 5.30 + 1500.0 / kMetresPerDegLon,
                        8.0,       180.0};
-    sim::LiveSession session(sim::LiveOptions{});
+    const sim::LiveOptions options;
+    sim::LiveSession session(options);
     sim::LiveWatch watch;
     // WHEN they report every 10 s for two minutes, with receive times
     for (double t = t0; t <= t0 + 120.0; t += 10.0) {

@@ -1,0 +1,249 @@
+// AIS and radar in one picture (docs/fusion.md): the simulated transponder (reporting intervals of ITU-R
+// M.1371 Table 1, latency and the UTC second, the antenna's place on the hull worked out by hand), the
+// receiver's observation (the hull centre recovered from the antenna, the fix time from the second
+// across a minute), the scenario format's AIS fields, and the evaluation on the AIS harbour: association
+// of at least 99% of the eligible station-cycles with the right track, no swap between vessels more
+// than 500 m apart, and the fused tracks' NEES in their band.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTest>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "common/angles.h"
+#include "common/units.h"
+#include "files/scenario_json.h"
+#include "io/input_error.h"
+#include "resources/embedded.h"
+#include "sensors/ais_transmitter.h"
+#include "studies/ais_fusion_study.h"
+#include "studies/imo_accuracy.h"
+#include "support/compare_near.h"
+#include "tracking/ais_fusion.h"
+
+using namespace reckoner;
+
+namespace {
+sim::Scenario builtin(const char* name) {
+  const auto* f = resources::findScenario(name);
+  if (!f) throw std::runtime_error(std::string("no builtin scenario ") + name);
+  return files::parseScenario(f->text, name);
+}
+
+constexpr double kLat0 = 50.0, kLon0 = -3.0;  // on zone 30's central meridian: no convergence
+
+sensors::AisHullState hull(double tS, double x, double y, double speedMps, double headingDeg,
+                           double turnDps = 0.0) {
+  sensors::AisHullState h;
+  h.timeUs = fromSeconds(tS);
+  const double hd = degToRad(headingDeg);
+  h.position = {x + speedMps * std::sin(hd) * tS, y + speedMps * std::cos(hd) * tS};
+  h.vxMps = speedMps * std::sin(hd);
+  h.vyMps = speedMps * std::cos(hd);
+  h.headingRad = hd;
+  h.turnRateRadPerS = degToRad(turnDps);
+  return h;
+}
+
+sensors::AisTransmitterSpec exact(sensors::AisStationClass cls) {
+  auto s = sensors::AisTransmitterSpec::defaults(cls);
+  s.mmsi = 235000001;
+  s.positionSdM = s.velocitySdMps = s.headingSdDeg = 0.0;
+  s.lossProbability = 0.0;
+  return s;
+}
+
+std::vector<sensors::AisReception> transmit(const sensors::AisTransmitterSpec& spec, double speedMps,
+                                            double headingDeg, double turnDps, double durationS) {
+  const geo::LocalFrame frame(kLat0, kLon0);
+  sensors::AisTransmitter tx(spec, 7, Rng(3, 4), 0);
+  std::vector<sensors::AisReception> out;
+  for (int t = 0; t <= static_cast<int>(durationS); ++t)
+    tx.advance(hull(t, 100.0, 200.0, speedMps, headingDeg, turnDps), frame, out);
+  return out;
+}
+
+std::vector<sensors::AisReception> positions(const std::vector<sensors::AisReception>& all) {
+  std::vector<sensors::AisReception> p;
+  for (const auto& r : all)
+    if (r.message.latDeg) p.push_back(r);
+  return p;
+}
+}  // namespace
+
+class TstAisFusion : public QObject {
+  Q_OBJECT
+ private slots:
+  void reportingIntervalsFollowTable1() {
+    // GIVEN class A at 10 kn straight, turning, at 18 kn, and class B at 6 kn
+    // THEN reports come every 10 s, 3 1/3 s, 6 s and 30 s.
+    const double kn = kMpsPerKnot;
+    const auto a = positions(transmit(exact(sensors::AisStationClass::A), 10 * kn, 30, 0, 600));
+    const auto turning = positions(transmit(exact(sensors::AisStationClass::A), 10 * kn, 30, 1.0, 600));
+    const auto fast = positions(transmit(exact(sensors::AisStationClass::A), 18 * kn, 30, 0, 600));
+    const auto b = positions(transmit(exact(sensors::AisStationClass::B), 6 * kn, 30, 0, 600));
+    RK_COMPARE_NEAR(static_cast<double>(a.size()), 60.0, 1.0);
+    RK_COMPARE_NEAR(static_cast<double>(turning.size()), 180.0, 1.0);
+    RK_COMPARE_NEAR(static_cast<double>(fast.size()), 100.0, 1.0);
+    RK_COMPARE_NEAR(static_cast<double>(b.size()), 20.0, 1.0);
+    QCOMPARE(a.front().message.type, 1);
+    QCOMPARE(b.front().message.type, 18);
+    QVERIFY(!b.front().message.headingDeg);
+  }
+
+  void latencyAndUtcSecond() {
+    // Every report's fix is a whole second, latency within the class's range (plus the second's
+    // rounding), its UTC second is the fix's, and the receiver recovers the fix time from it.
+    for (auto cls : {sensors::AisStationClass::A, sensors::AisStationClass::B}) {
+      const auto spec = exact(cls);
+      for (const auto& r : positions(transmit(spec, 5.0, 10, 0, 900))) {
+        QCOMPARE(r.fixUs % kMicrosPerSecond, TimeUs{0});
+        const double latency = toSeconds(r.rxUs - r.fixUs);
+        QVERIFY(latency >= spec.latencyMinS && latency <= spec.latencyMaxS + 1.0);
+        QCOMPARE(*r.message.second, static_cast<int>((r.fixUs / kMicrosPerSecond) % 60));
+        QCOMPARE(*track::aisFixTime(r.rxUs, r.message.second, 0), r.fixUs);
+      }
+    }
+  }
+
+  void fixTimeAcrossTheMinute() {
+    QCOMPARE(*track::aisFixTime(fromSeconds(61.2), 59, 0), fromSeconds(59.0));
+    QCOMPARE(*track::aisFixTime(fromSeconds(125.9), 5, 0), fromSeconds(125.0));
+    // A clock whose zero is 30 s past a minute.
+    QCOMPARE(*track::aisFixTime(fromSeconds(2.5), 31, fromSeconds(30.0)), fromSeconds(1.0));
+    QVERIFY(!track::aisFixTime(fromSeconds(10), 60, 0));
+    QVERIFY(!track::aisFixTime(fromSeconds(10), std::nullopt, 0));
+  }
+
+  void antennaOffsetWorkedByHand() {
+    // A 120 m by 20 m ship heading north, antenna 100 m from the bow and 4 m from the port side: the
+    // centre is 60 m from the bow and 10 m from the port side, so the antenna is 40 m aft and 6 m to
+    // port of the centre.
+    const auto o = sensors::antennaOffset(100, 20, 4, 16);
+    QVERIFY(o.known);
+    RK_COMPARE_NEAR(o.forwardM, -40.0, 1e-12);
+    RK_COMPARE_NEAR(o.starboardM, -6.0, 1e-12);
+    QVERIFY(!sensors::antennaOffset(0, 0, 0, 0).known);
+  }
+
+  void hullCentreRecoveredFromTheAntenna() {
+    // With exact errors the observation gives back the hull's centre (to the message's resolution) at
+    // any heading, including across north.
+    const geo::LocalFrame frame(kLat0, kLon0);
+    for (double heading : {0.0, 90.0, 225.0, 359.0, 1.0}) {
+      auto spec = exact(sensors::AisStationClass::A);
+      spec.toBowM = 100, spec.toSternM = 20, spec.toPortM = 4, spec.toStarboardM = 16;
+      spec.headingSdDeg = 0.0;
+      const auto all = transmit(spec, 6.0, heading, 0, 60);
+      track::AisStatic info;
+      info.toBowM = 100, info.toSternM = 20, info.toPortM = 4, info.toStarboardM = 16;
+      int checked = 0;
+      for (const auto& r : positions(all)) {
+        const auto o = track::aisObservation(r.message, r.rxUs, info, frame, {}, -1);
+        QVERIFY(o.has_value());
+        QVERIFY(o->offsetCorrected);
+        const auto h = hull(toSeconds(r.fixUs), 100.0, 200.0, 6.0, heading);
+        test::NearContext ctx(QString("heading %1").arg(heading));
+        // The heading is sent to the degree: 1 degree of 40 m is 0.7 m.
+        RK_COMPARE_NEAR(o->z[0], h.position.xM, 1.0);
+        RK_COMPARE_NEAR(o->z[1], h.position.yM, 1.0);
+        RK_COMPARE_NEAR(o->z[2], h.vxMps, 0.06);
+        RK_COMPARE_NEAR(o->z[3], h.vyMps, 0.06);
+        QCOMPARE(o->fixUs, r.fixUs);
+        ++checked;
+      }
+      QVERIFY(checked > 3);
+    }
+  }
+
+  void scenarioFieldsReadAndWritten() {
+    const sim::Scenario s = builtin("ais-harbour");
+    int a = 0, b = 0;
+    for (const auto& t : s.targets)
+      if (t.ais) ++(t.ais->cls == sensors::AisStationClass::A ? a : b);
+    QCOMPARE(a, 20);
+    QCOMPARE(b, 10);
+    sim::Scenario edited = s;
+    edited.tracker.aisAssociation.positionLimitM = 250.0;
+    const sim::Scenario back = files::parseScenario(files::writeScenario(edited), "written");
+    QCOMPARE(back.tracker.aisAssociation.positionLimitM, 250.0);
+    for (std::size_t i = 0; i < s.targets.size(); ++i) {
+      QCOMPARE(back.targets[i].ais.has_value(), s.targets[i].ais.has_value());
+      if (!s.targets[i].ais) continue;
+      QCOMPARE(back.targets[i].ais->mmsi, s.targets[i].ais->mmsi);
+      QCOMPARE(back.targets[i].ais->toBowM, s.targets[i].ais->toBowM);
+      QCOMPARE(back.targets[i].ais->latencyMaxS, s.targets[i].ais->latencyMaxS);
+    }
+  }
+
+  void badFieldsNamed_data() {
+    QTest::addColumn<QString>("ais");
+    QTest::addColumn<QString>("path");
+    QTest::newRow("class") << R"({"class": "C", "mmsi": 1})"
+                           << "targets[0].ais.class";
+    QTest::newRow("mmsi") << R"({"class": "A", "mmsi": 0})"
+                          << "targets[0].ais.mmsi";
+    QTest::newRow("antenna") << R"({"class": "A", "mmsi": 5, "antenna_m": [1, 2, 300, 4]})"
+                             << "targets[0].ais.antenna_m[2]";
+    QTest::newRow("latency") << R"({"class": "B", "mmsi": 5, "latency_s": [3, 1]})"
+                             << "targets[0].ais.latency_s";
+    QTest::newRow("unknown") << R"({"class": "B", "mmsi": 5, "speed": 3})"
+                             << "targets[0].ais.speed";
+  }
+  void badFieldsNamed() {
+    QFETCH(QString, ais);
+    QFETCH(QString, path);
+    // The four-encounter scenario with its first target's transponder replaced.
+    QJsonObject root =
+        QJsonDocument::fromJson(
+            QByteArray(resources::findScenario("trial-encounters")->text.data(),
+                       static_cast<qsizetype>(resources::findScenario("trial-encounters")->text.size())))
+            .object();
+    QJsonArray targets = root["targets"].toArray();
+    QJsonObject first = targets[0].toObject();
+    first["ais"] = QJsonDocument::fromJson(ais.toUtf8()).object();
+    targets[0] = first;
+    root["targets"] = targets;
+    const std::string text = QJsonDocument(root).toJson().toStdString();
+    try {
+      files::parseScenario(text, "bad.json");
+      QFAIL("accepted");
+    } catch (const io::InputError& e) {
+      QVERIFY2(std::string(e.what()).find(path.toStdString()) != std::string::npos, e.what());
+      QVERIFY2(std::string(e.what()).find("bad.json") != std::string::npos, e.what());
+    }
+  }
+
+  void harbourAssociationAndFusion() {
+    // GIVEN the AIS harbour (40 radar targets, 30 with AIS), two runs
+    // THEN at least 99% of the eligible station-cycles are associated with their own vessel's track, no
+    // swap between vessels more than 500 m apart, every association fuses, and the fused tracks' NEES
+    // (target position and velocity) is in its band: errors inside the sd, the sd not far above them.
+    const sim::Scenario s = builtin("ais-harbour");
+    studies::FusionStudyOptions o;
+    o.runs = 2;
+    o.threads = 2;
+    const auto r = studies::evaluateFusion(s, o);
+    QVERIFY2(r.correctFraction() >= 0.99, qPrintable(QString::number(r.correctFraction())));
+    QCOMPARE(r.swapsFar, 0L);
+    QVERIFY(r.eligible > 50000);
+    QVERIFY(r.fusedReports > 5000);
+    QVERIFY(r.associationEvents >= 50);
+    const auto& fused = r.accuracy[static_cast<int>(studies::FusionSource::Fused)];
+    QVERIFY(fused.samplesAt3 >= 50);
+    QVERIFY2(fused.meanNeesAt3 > 1.0 && fused.meanNeesAt3 < 8.0,
+             qPrintable(QString::number(fused.meanNeesAt3)));
+    // Fusion helps the radar track: the fused 3-minute true speed and CPA beat radar-only.
+    const auto& radar = r.accuracy[static_cast<int>(studies::FusionSource::RadarOnly)];
+    const int speed = static_cast<int>(studies::ImoQuantity::TrueSpeed),
+              cpa = static_cast<int>(studies::ImoQuantity::Cpa);
+    QVERIFY(fused.p95At3[speed] < radar.p95At3[speed]);
+    QVERIFY(fused.p95At3[cpa] < radar.p95At3[cpa]);
+  }
+};
+
+QTEST_APPLESS_MAIN(TstAisFusion)
+#include "tst_ais_fusion.moc"

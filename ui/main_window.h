@@ -170,6 +170,9 @@ class MainWindow : public QMainWindow {
   void buildDisplayToolbar();
   void buildRangeBox(QToolBar* bar);
   void buildTrackingMenu();
+  /// Tracking > Trial manoeuvre, its delay, and the symbol of associated AIS targets (main_window_trial.cpp).
+  void buildTrialActions(QMenu* tracking);
+  void setTrialShown(bool on);
   void askCpaLimits();
   void editMarinerSettings();
   void buildCentre();                                          ///< the chart with the message bar above it
@@ -252,8 +255,10 @@ class MainWindow : public QMainWindow {
   QDoubleSpinBox* safetyBox_ = nullptr;  ///< display toolbar: the safety contour (shallow to deep)
   QAction* runAction_ = nullptr;
   std::vector<QAction*> trackerKindActions_;  ///< Tracking > Filter for new tracks
-  QAction* autoAcquireAction_ = nullptr;      ///< Tracking > Automatic acquisition (follows the tracker)
-  QAction* radarMatchAction_ = nullptr;       ///< Radar > Match (follows the scenario's own switch)
+  QAction* trialAction_ = nullptr;            ///< Tracking > Trial manoeuvre
+  double trialDelayS_ = 30.0;
+  QAction* autoAcquireAction_ = nullptr;  ///< Tracking > Automatic acquisition (follows the tracker)
+  QAction* radarMatchAction_ = nullptr;   ///< Radar > Match (follows the scenario's own switch)
   QMenu* recentMenu_ = nullptr;
   QProgressBar* chartProgress_ = nullptr;  ///< shown while charts load
   QTimer repaintTimer_;

@@ -355,6 +355,7 @@ void MainWindow::buildTrackingMenu() {
       tr("New echoes in the acquisition zones start tracks by themselves; off, "
          "only the operator acquires (right button: Acquire plot here)"));
   connect(autoAcquireAction_, &QAction::triggered, controller_, &SimulationController::setAutoAcquire);
+  buildTrialActions(tracking);
 }
 
 void MainWindow::askCpaLimits() {

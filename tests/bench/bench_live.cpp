@@ -32,7 +32,8 @@ void BM_LiveSessionRecording(benchmark::State& state) {
   }
   std::size_t rows = 0;
   for (auto _ : state) {
-    sim::LiveSession session(sim::LiveOptions{});
+    const sim::LiveOptions options;
+    sim::LiveSession session(options);
     for (const std::string& l : lines) session.nmea(l);
     session.finish();
     rows = session.takeOwnRows().size();

@@ -55,7 +55,8 @@ void BM_LiveFeed10kPerSecond(benchmark::State& state) {
       done = true;
     });
 
-    sim::LiveSession session(sim::LiveOptions{});
+    const sim::LiveOptions options;
+    sim::LiveSession session(options);
     std::vector<double> batchMs;
     long delivered = 0, rows = 0, aisDecoded = 0;
     double rss10 = 0.0, rssPeak = 0.0;

@@ -21,6 +21,7 @@
 #include "common/angles.h"
 #include "common/rng.h"
 #include "files/scenario_json.h"
+#include "gui_timing.h"
 #include "navigation/drkf.h"
 #include "radar/chart_matching.h"
 #include "resources/embedded.h"
@@ -422,27 +423,7 @@ void BM_EcdisWindow100x40Targets(benchmark::State& state) {
     const double t1 = toSeconds(w.history().latest().frame.timeUs);
     w.setRate(0.0);
     state.SetIterationTime(elapsed);
-    using Kind = ui::MainWindow::GuiTiming::Kind;
-    std::vector<double> ms;
-    std::array<double, 3> maxOf{};
-    for (const auto& g : w.guiTimings()) {
-      ms.push_back(g.ms);
-      auto& m = maxOf[static_cast<std::size_t>(g.kind)];
-      m = std::max(m, g.ms);
-    }
-    std::sort(ms.begin(), ms.end());
-    const auto pct = [&ms](double p) {
-      return ms.empty()
-                 ? 0.0
-                 : ms[std::min(ms.size() - 1, static_cast<std::size_t>(p * static_cast<double>(ms.size())))];
-    };
-    state.counters["gui_p50_ms"] = pct(0.50);
-    state.counters["gui_p99_ms"] = pct(0.99);
-    state.counters["gui_max_ms"] = ms.empty() ? 0.0 : ms.back();
-    state.counters["gui_events"] = static_cast<double>(ms.size());
-    state.counters["max_frame_ms"] = maxOf[static_cast<std::size_t>(Kind::Frame)];
-    state.counters["max_repaint_ms"] = maxOf[static_cast<std::size_t>(Kind::Repaint)];
-    state.counters["max_plots_ms"] = maxOf[static_cast<std::size_t>(Kind::Plots)];
+    bench::guiTimingCounters(w, state);
     state.counters["sim_rate"] = (t1 - t0) / elapsed;
     state.counters["tracks"] = static_cast<double>(w.history().latest().frame.tracks.size());
   }

@@ -14,6 +14,7 @@
 #include "sim/live_watch.h"
 #include "sim/scenario.h"
 #include "sim/simulation_engine.h"
+#include "sim/trial_manoeuvre.h"
 #include "studies/own_ship_filters.h"
 #include "tracking/ais_targets.h"
 #include "ui/bridge/radar_raster.h"
@@ -152,6 +153,8 @@ struct LiveFrame {
   track::AisTableCounts aisCounts;
   UtcUs aisUtc = 0;
   sim::LiveOwnShipSource ownShipSource = sim::LiveOwnShipSource::None;
+  /// The trial manoeuvre shown (sim/trial_manoeuvre.h; null when off), computed on this frame.
+  std::shared_ptr<const sim::TrialResult> trial;
   /// Lines the live run has taken from the connections, and its session's counts.
   std::uint64_t liveLines = 0;
   long liveRows = 0;

@@ -50,6 +50,10 @@ void SimulationController::orderOwnShip(double trueHeadingRad, double speedMps) 
   sim_.post(&SimulationWorker::orderOwnShip, trueHeadingRad, speedMps);
   emit scenarioEdited();
 }
+void SimulationController::setTrial(bool on, double trueHeadingRad, double speedMps, double delayS) {
+  if (live_) return;  // the trial runs on the simulation's frames
+  sim_.post(&SimulationWorker::setTrial, on, trueHeadingRad, speedMps, delayS);
+}
 void SimulationController::orderTarget(int targetId, double trueHeadingRad, double speedMps,
                                        double turnRateRadPerS, double accelerationMps2) {
   if (live_) return;  // the simulation is not running in Live mode

@@ -25,6 +25,8 @@ class SimulationController : public QObject {
   /// Runs at `rate` (< 0: as fast as possible) until the simulated time tS, then pauses there.
   void runTo(double tS, double rate);
   void orderOwnShip(double trueHeadingRad, double speedMps);
+  /// The trial manoeuvre on (true heading, speed through the water, delay) or off (SimulationWorker).
+  void setTrial(bool on, double trueHeadingRad, double speedMps, double delayS);
   void orderTarget(int targetId, double trueHeadingRad, double speedMps, double turnRateRadPerS,
                    double accelerationMps2);
   void setSensorPower(sensors::SensorId id, bool on);

@@ -158,6 +158,30 @@ void SimulationWorker::tick() {
   maybeEmit(false);
 }
 
+void SimulationWorker::setTrial(bool on, double trueHeadingRad, double speedMps, double delayS) {
+  if (on)
+    trial_ = sim::TrialOrder{wrapTwoPi(trueHeadingRad), std::max(0.0, speedMps), std::max(0.0, delayS)};
+  else
+    trial_.reset();
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::updateTrial() {
+  if (!trial_ || !engine_) {
+    pending_.trial.reset();
+    return;
+  }
+  const sim::SimFrame& f = pending_.frame;
+  const auto& scenario = engine_->scenario();
+  sim::TrialSettings settings;
+  settings.cpaLimitM = engine_->trackers().config().dangerCpaM;
+  settings.tcpaLimitS = engine_->trackers().config().dangerTcpaS;
+  pending_.trial = std::make_shared<const sim::TrialResult>(sim::trialManoeuvre(
+      f.timeUs, sim::trialOwnShipOf(f, scenario.ownShip, engine_->frame()),
+      sim::trialTargetsOf(f, scenario.tracker.aisAssociation.errors, engine_->frame()), *trial_, settings));
+}
+
 void SimulationWorker::stepEngine() {
   absorb(engine_->step());
   dirty_ = true;
@@ -194,6 +218,11 @@ void SimulationWorker::absorb(sim::SimFrame&& f) {
     match_ = std::move(shown);
   }
   if (f.radarPicture) picture_ = std::move(f.radarPicture);
+  if (f.aisTargets) {  // simulated transponders: the same AIS picture as Live mode's
+    pending_.aisTargets = f.aisTargets;
+    pending_.aisCounts = engine_->ais().table().counts();
+    pending_.aisUtc = f.timeUs;
+  }
   f.radarFixes.clear();
   f.sweeps.clear();
   pending_.frame = std::move(f);
@@ -213,6 +242,7 @@ void SimulationWorker::maybeEmit(bool force) {
   const qint64 now = wall_.nsecsElapsed();
   if (!force && now - lastEmitNs_ < kMinEmitIntervalNs) return;
   updateDeadReckoning();
+  updateTrial();
   pending_.sequence = ++sequence_;
   pending_.loadGeneration = generation_;
   pending_.recentPlots.assign(folder_.plots().begin(), folder_.plots().end());

@@ -39,6 +39,9 @@ class SimulationWorker : public QObject {
   void frameConsumed();
   /// Helm order: true heading (radians) and speed through the water (m/s).
   void orderOwnShip(double trueHeadingRad, double speedMps);
+  /// The trial manoeuvre (docs/trial.md) computed on every frame from now: a true heading and speed
+  /// through the water ordered after delayS; off: none. The run itself is untouched.
+  void setTrial(bool on, double trueHeadingRad, double speedMps, double delayS);
   /// Helm order for a simulated target: true course, speed, turn rate and acceleration limits.
   void orderTarget(int targetId, double trueHeadingRad, double speedMps, double turnRateRadPerS,
                    double accelerationMps2);
@@ -79,6 +82,7 @@ class SimulationWorker : public QObject {
   void failed(const QString& message);
 
  private:
+  void updateTrial();
   void tick();
   void stepEngine();
   void absorb(sim::SimFrame&& f);
@@ -107,6 +111,7 @@ class SimulationWorker : public QObject {
   std::shared_ptr<const radar::LandMask> landMask_;
   std::optional<geo::GeoPoint> chartsOrigin_;  // the origin coast_ and land_ were made for
   bool picturesWanted_ = false;
+  std::optional<sim::TrialOrder> trial_;
   std::optional<sim::RadarPicture> picture_;  // latest, not yet rasterised
   qint64 rasterisedNs_ = 0;
   std::shared_ptr<const RadarMatchShown> match_;

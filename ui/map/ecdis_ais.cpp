@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <unordered_map>
 #include <vector>
 
 #include "common/angles.h"
@@ -221,7 +222,27 @@ void EcdisView::paintAis(QPainter& p) {
   style.dangerous = colour("danger");
   style.vectorMinutes = overlay_.vectorMinutes;
   style.flashOn = (QDateTime::currentMSecsSinceEpoch() / 500) % 2 == 0;
-  paintAisTargets(p, aisSymbols_, g, style);
+  // A station associated with a radar track is one target: drawn activated (with its vector) in place
+  // of the radar symbol, or left out when the radar symbol stands for it (unless its track is selected).
+  std::unordered_map<std::uint32_t, int> trackOf;
+  for (const auto& t : live.frame.tracks)
+    if (t.aisMmsi != 0) trackOf[t.aisMmsi] = t.trackId;
+  if (trackOf.empty()) {
+    paintAisTargets(p, aisSymbols_, g, style);
+    return;
+  }
+  std::vector<AisSymbol> shown;
+  shown.reserve(aisSymbols_.size());
+  for (const AisSymbol& s : aisSymbols_) {
+    const auto it = trackOf.find(s.mmsi);
+    if (it == trackOf.end()) {
+      shown.push_back(s);
+    } else if (!overlay_.associatedAsRadar || selected_ == it->second) {
+      shown.push_back(s);
+      shown.back().activated = true;
+    }
+  }
+  paintAisTargets(p, shown, g, style);
 }
 
 }  // namespace reckoner::ui

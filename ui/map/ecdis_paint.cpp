@@ -120,6 +120,7 @@ void EcdisView::paintOverlay(QPainter& p, const charts::Viewport& view) {
     if (overlay_.showPlots) paintPlots(p);
     paintTargets(p);
     if (overlay_.showAis) paintAis(p);
+    paintTrial(p);
     paintOwnShip(p);
   }
   // The boxes first (labels keep out of them), the labels last.
@@ -409,6 +410,8 @@ void EcdisView::paintTargets(QPainter& p) {
 
 void EcdisView::paintTarget(QPainter& p, const sim::TrackSnapshot& t, const TargetPaint& k) {
   namespace tk = est::ttkf;
+  // Associated with an AIS station shown by its AIS symbol: the radar symbol only when selected.
+  if (t.aisMmsi != 0 && !overlay_.associatedAsRadar && selected_ != t.trackId && overlay_.showAis) return;
   const auto& x = t.estimate.x;
   const Local at = localAt(x[tk::kTgtX], x[tk::kTgtY]);
   // Dangerous while the tracker says so or its CPA/TCPA alarm stands (the alarm's hysteresis keeps it a

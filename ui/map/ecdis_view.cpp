@@ -286,6 +286,11 @@ QString EcdisView::cursorText(QPointF at) const {
   return s;
 }
 
+void EcdisView::setTrialMode(bool on) {
+  trialMode_ = on;
+  update();
+}
+
 void EcdisView::mousePressEvent(QMouseEvent* e) {
   setFocus();
   if (e->button() == Qt::LeftButton && addTargetFrom_) {
@@ -339,6 +344,10 @@ void EcdisView::mouseMoveEvent(QMouseEvent* e) {
   if (addTargetFrom_) addTargetTo_ = e->position();
   if (draggingHandle_) {
     handleDrag_ = e->position();
+    if (trialMode_ && haveOwnShip()) {  // the trial follows the drag
+      const auto [course, speed] = orderAt(e->position(), dragMinutes_);
+      emit trialRequested(course, speed);
+    }
     update();
     return;
   }
@@ -365,7 +374,10 @@ void EcdisView::mouseReleaseEvent(QMouseEvent* e) {
     handleDrag_.reset();
     if (haveOwnShip()) {
       const auto [course, speed] = orderAt(e->position(), dragMinutes_);
-      requestOrder(course, speed);
+      if (trialMode_)
+        emit trialRequested(course, speed);
+      else
+        requestOrder(course, speed);
     }
     update();
     return;

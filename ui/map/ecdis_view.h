@@ -78,6 +78,9 @@ struct OverlaySettings {
   bool showRadarEchoes = false;
   /// AIS targets (Live mode) as IEC 62288 draws them (ecdis_ais.h).
   bool showAis = true;
+  /// An AIS station associated with a radar track shows one symbol: the AIS one, or with this the
+  /// radar track's; the other appears when the track is selected.
+  bool associatedAsRadar = false;
 };
 
 /// The radar picture's colours: name and day colour (dimmed at dusk and night).
@@ -109,6 +112,10 @@ class EcdisView : public ChartView {
   void setOverlay(const OverlaySettings& s);
   [[nodiscard]] const OverlaySettings& overlay() const { return overlay_; }
   void setSelectedTrack(std::optional<int> trackId);
+  /// Trial manoeuvre mode (docs/trial.md): a drag of the ordered-vector handle proposes a trial course
+  /// and speed (trialRequested) instead of ordering them; the frame's trial is drawn with a "T".
+  void setTrialMode(bool on);
+  [[nodiscard]] bool trialMode() const { return trialMode_; }
   [[nodiscard]] std::optional<int> selectedTrack() const { return selected_; }
   /// After a new frame: turns the chart (course-up, head-up), follows own ship (true motion with reset,
   /// relative motion) and repaints.
@@ -181,6 +188,8 @@ class EcdisView : public ChartView {
  signals:
   /// Helm order from the mouse or keyboard: true heading, speed through the water.
   void orderRequested(double trueHeadingRad, double speedMps);
+  /// A trial course and speed dragged in trial mode (true heading, speed through the water).
+  void trialRequested(double trueHeadingRad, double speedMps);
   void addTargetRequested(double xM, double yM, double vxMps, double vyMps);
   /// Steer a simulated target (its truth id): true course and speed over ground.
   void steerTargetRequested(int targetId, double trueCourseRad, double speedMps);
@@ -278,6 +287,9 @@ class EcdisView : public ChartView {
   // ecdis_ais.cpp
   /// The AIS targets of the latest frame; their symbols are made again when the table changed.
   void paintAis(QPainter& p);
+  // ecdis_trial.cpp
+  void paintTrial(QPainter& p);
+  void paintDangerSectors(QPainter& p, const sim::TrialResult& r, const Local& own);
   // ecdis_radar.cpp
   void paintRadarPicture(QPainter& p);
   void paintRadarEchoes(QPainter& p);
@@ -331,6 +343,7 @@ class EcdisView : public ChartView {
   std::shared_ptr<const radar::LandMask> waterOf_;  // held, likewise
   // The AIS symbols of the latest table (made again when the frame brings another table).
   std::vector<AisSymbol> aisSymbols_;
+  bool trialMode_ = false;
   std::shared_ptr<const std::vector<track::AisTarget>> aisSymbolsOf_;  // held: never mistaken by address
 };
 

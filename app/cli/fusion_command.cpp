@@ -73,6 +73,8 @@ int fusionCommand(const FusionArgs& a) {
   if (specs.empty()) specs = {"builtin:ais-harbour"};
   if (!a.addAis.empty() && a.addAis != "A" && a.addAis != "B")
     throw UsageError("option '--add-ais' must be A or B");
+  if (!(a.minCorrect >= 0.0 && a.minCorrect <= 1.0))
+    throw UsageError("option '--min-correct' must lie in [0, 1]");
   bool all = true;
   for (const auto& spec : specs) {
     sim::Scenario s = loadScenario(spec);
@@ -104,8 +106,7 @@ void addFusionCommand(CLI::App& root, Commands& out) {
       ->type_name("A|B");
   app->add_option("--min-correct", a->minCorrect,
                   "required fraction of correct station-cycles (0 to 1, default 0.99)")
-      ->type_name("F")
-      ->check(CLI::Range(0.0, 1.0));
+      ->type_name("F");
   addIgnoredQuiet(*app);
   out.push_back({app, [a] { return fusionCommand(*a); }, ""});
 }

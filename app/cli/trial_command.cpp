@@ -22,7 +22,8 @@ namespace {
 
 struct TrialArgs {
   std::string scenario;
-  double atS = 0.0, courseDeg = 0.0, speedKn = 0.0, delayS = 0.0;
+  // Required: NaN until given.
+  double atS = std::nan(""), courseDeg = std::nan(""), speedKn = std::nan(""), delayS = 0.0;
   std::optional<double> cpaLimitNm, tcpaLimitMin;
   std::optional<std::uint64_t> seed;
   bool verify = false;
@@ -84,7 +85,27 @@ void printTrial(const studies::TrialCheck& c, const sim::TrialSettings& s, bool 
   std::printf("collision-danger courses %s\n", dangerousCourses(r.sectors, r.order.speedMps).c_str());
 }
 
+/// The ranges the help gives, as one usage line each.
+void checkRanges(const TrialArgs& a) {
+  for (const auto& [v, option] :
+       {std::pair{a.atS, "--at"}, {a.courseDeg, "--course"}, {a.speedKn, "--speed"}})
+    if (std::isnan(v)) throw UsageError(std::string("option '") + option + "' is required");
+  auto within = [](double v, double lo, double hi, const char* option) {
+    if (!(v >= lo && v <= hi))
+      throw UsageError(std::string("option '") + option + "' must lie in [" + std::to_string(lo) + ", " +
+                       std::to_string(hi) + "]");
+  };
+  within(a.atS, 0.0, 1e7, "--at");
+  within(a.courseDeg, 0.0, 360.0, "--course");
+  within(a.speedKn, 0.0, 60.0, "--speed");
+  within(a.delayS, 0.0, 3600.0, "--delay");
+  if (a.cpaLimitNm) within(*a.cpaLimitNm, 0.0, 20.0, "--cpa-limit");
+  if (a.tcpaLimitMin) within(*a.tcpaLimitMin, 0.0, 600.0, "--tcpa-limit");
+  within(a.runs, 1.0, 10000.0, "--runs");
+}
+
 int trialCommand(const TrialArgs& a) {
+  checkRanges(a);
   const sim::Scenario s = loadScenario(a.scenario);
   sim::TrialOrder order{wrapTwoPi(degToRad(a.courseDeg)), knotsToMps(a.speedKn), a.delayS};
   sim::TrialSettings settings;
@@ -136,33 +157,23 @@ void addTrialCommand(CLI::App& root, Commands& out) {
       "trial",
       "trial manoeuvre: predicted CPA, TCPA and P(CPA < limit) per target for a proposed course and speed");
   addScenarioArgument(*app, a->scenario);
-  app->add_option("--at", a->atS, "when to try it, seconds into the run (0 to the duration)")
-      ->required()
-      ->type_name("S")
-      ->check(CLI::Range(0.0, 1e7));
-  app->add_option("--course", a->courseDeg, "ordered heading, degrees true (0 to 360)")
-      ->required()
-      ->type_name("DEG")
-      ->check(CLI::Range(0.0, 360.0));
-  app->add_option("--speed", a->speedKn, "ordered speed through the water, knots (0 to 60)")
-      ->required()
-      ->type_name("KN")
-      ->check(CLI::Range(0.0, 60.0));
+  app->add_option("--at", a->atS, "when to try it, seconds into the run (0 to the duration; required)")
+      ->type_name("S");
+  app->add_option("--course", a->courseDeg, "ordered heading, degrees true (0 to 360; required)")
+      ->type_name("DEG");
+  app->add_option("--speed", a->speedKn, "ordered speed through the water, knots (0 to 60; required)")
+      ->type_name("KN");
   app->add_option("--delay", a->delayS, "seconds before the order is given (0 to 3600, default 0)")
-      ->type_name("S")
-      ->check(CLI::Range(0.0, 3600.0));
+      ->type_name("S");
   app->add_option("--cpa-limit", a->cpaLimitNm, "CPA limit, NM (default the scenario's danger CPA)")
-      ->type_name("NM")
-      ->check(CLI::Range(0.0, 20.0));
+      ->type_name("NM");
   app->add_option("--tcpa-limit", a->tcpaLimitMin, "TCPA limit, minutes (default the scenario's)")
-      ->type_name("MIN")
-      ->check(CLI::Range(0.0, 600.0));
+      ->type_name("MIN");
   addSeed(*app, a->seed, "the scenario's");
   app->add_flag("--verify", a->verify, "carry the manoeuvre out in the simulation and print the CPA reached");
   app->add_option("--runs", a->runs,
                   "with --verify: over this many seeds (1 to 10000), the consistency summary")
-      ->type_name("N")
-      ->check(CLI::Range(1, 10000));
+      ->type_name("N");
   addIgnoredQuiet(*app);
   out.push_back({app, [a] { return trialCommand(*a); }, ""});
 }

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <vector>
 
+#include "common/angles.h"
+#include "common/units.h"
 #include "ui/main_window.h"
 
 namespace reckoner::ui::test {
@@ -47,6 +49,25 @@ inline void runUntil(MainWindow& w, double tS) {
   w.controller()->runTo(tS, -1.0);
   QTRY_VERIFY_WITH_TIMEOUT(simTime(w) >= tS - 1e-9 && !w.history().latest().running && !w.refreshPending(),
                            kTimeoutMs);
+}
+
+/// Drags own ship's ordered-vector handle, as a user would, to a true course and a speed (the length
+/// the handle's time base gives it); returns the grid info at own ship (convergence, scale).
+inline geo::GridInfo dragHandleTo(MainWindow& w, double courseDeg, double speedKn) {
+  EcdisView* v = w.chart();
+  const auto handle = v->handlePosition();
+  if (!handle) return {};
+  const auto& f = w.history().latest().frame;
+  const double ox = f.estimate.x[est::drkf::kPosX], oy = f.estimate.x[est::drkf::kPosY];
+  const geo::GridInfo gi = v->frame()->gridInfo({ox, oy});
+  const double len = knotsToMps(speedKn) * v->handleMinutes() * 60.0 * gi.scale;
+  const double g = degToRad(courseDeg) - gi.convergenceRad;
+  const QPointF target = v->gridToWidget(ox + len * std::sin(g), oy + len * std::cos(g));
+  QTest::mousePress(v, Qt::LeftButton, {}, handle->toPoint());
+  QTest::mouseMove(v, ((*handle + target) / 2).toPoint());
+  QTest::mouseMove(v, target.toPoint());
+  QTest::mouseRelease(v, Qt::LeftButton, {}, target.toPoint());
+  return gi;
 }
 
 inline MainWindowOptions freshOptions() {

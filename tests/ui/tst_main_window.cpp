@@ -58,21 +58,10 @@ class TestMainWindow : public QObject {
     MainWindow w(freshOptions());
     showAndWait(w);
     runUntil(w, 20.0);
-    EcdisView* v = w.chart();
-    const auto handle = v->handlePosition();
-    QVERIFY(handle.has_value());
-    const auto& f = w.history().latest().frame;
-    const double ox = f.estimate.x[est::drkf::kPosX], oy = f.estimate.x[est::drkf::kPosY];
-    const geo::GridInfo gi = v->frame()->gridInfo({ox, oy});
+    QVERIFY(w.chart()->handlePosition().has_value());
     const double wantCourse = degToRad(45.0), wantSpeed = knotsToMps(8.0);
-    const double len = wantSpeed * v->handleMinutes() * 60.0 * gi.scale;  // the handle's time base
-    const double g = wantCourse - gi.convergenceRad;
-    const QPointF target = v->gridToWidget(ox + len * std::sin(g), oy + len * std::cos(g));
-    const double headingBefore = f.truth.headingRad;
-    QTest::mousePress(v, Qt::LeftButton, {}, handle->toPoint());
-    QTest::mouseMove(v, ((*handle + target) / 2).toPoint());
-    QTest::mouseMove(v, target.toPoint());
-    QTest::mouseRelease(v, Qt::LeftButton, {}, target.toPoint());
+    const double headingBefore = w.history().latest().frame.truth.headingRad;
+    const geo::GridInfo gi = dragHandleTo(w, 45.0, 8.0);
     w.controller()->stepOnce();
     QTRY_VERIFY_WITH_TIMEOUT(w.history().latest().frame.order.has_value(), kTimeoutMs);
     const sim::HelmOrder order = *w.history().latest().frame.order;

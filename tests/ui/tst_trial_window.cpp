@@ -47,19 +47,8 @@ class TestTrialWindow : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(w.history().latest().trial != nullptr, kTimeoutMs);
     QCOMPARE(w.history().latest().trial->targets.size(), std::size_t{4});
     // WHEN the handle is dragged to 040, 10 kn
-    EcdisView* v = w.chart();
-    const auto handle = v->handlePosition();
-    QVERIFY(handle.has_value());
-    const auto& f = w.history().latest().frame;
-    const double ox = f.estimate.x[est::drkf::kPosX], oy = f.estimate.x[est::drkf::kPosY];
-    const geo::GridInfo gi = v->frame()->gridInfo({ox, oy});
-    const double len = knotsToMps(10.0) * v->handleMinutes() * 60.0 * gi.scale;
-    const double g = degToRad(40.0) - gi.convergenceRad;
-    const QPointF target = v->gridToWidget(ox + len * std::sin(g), oy + len * std::cos(g));
-    QTest::mousePress(v, Qt::LeftButton, {}, handle->toPoint());
-    QTest::mouseMove(v, ((*handle + target) / 2).toPoint());
-    QTest::mouseMove(v, target.toPoint());
-    QTest::mouseRelease(v, Qt::LeftButton, {}, target.toPoint());
+    QVERIFY(w.chart()->handlePosition().has_value());
+    dragHandleTo(w, 40.0, 10.0);
     // THEN the trial follows the drag, and own ship was not ordered anything
     QTRY_VERIFY_WITH_TIMEOUT(
         std::abs(radToDeg(angleDiff(w.history().latest().trial->order.courseRad, degToRad(40.0)))) < 1.5,

@@ -13,21 +13,14 @@
 #include "common/angles.h"
 #include "common/rng.h"
 #include "common/units.h"
-#include "files/scenario_json.h"
-#include "resources/embedded.h"
 #include "sim/trial_manoeuvre.h"
 #include "studies/trial_study.h"
 #include "support/compare_near.h"
+#include "support/drkf_fixtures.h"
 
 using namespace reckoner;
 
 namespace {
-sim::Scenario builtin(const char* name) {
-  const auto* f = resources::findScenario(name);
-  if (!f) throw std::runtime_error(std::string("no builtin scenario ") + name);
-  return files::parseScenario(f->text, name);
-}
-
 /// Own ship at 10 kn north, turning at 1 deg/s, accelerating at 0.05 m/s^2.
 sim::TrialOwnShip ownShip() {
   sim::TrialOwnShip o;
@@ -126,7 +119,7 @@ class TstTrialManoeuvre : public QObject {
     // WHEN it is carried out in the simulation (50 seeds)
     // THEN each vessel's realised CPA is within the predicted sd as a Gaussian says, and the sd is
     // honest both ways.
-    const sim::Scenario s = builtin("trial-encounters");
+    const sim::Scenario s = test::builtinScenario("trial-encounters");
     sim::TrialSettings settings;
     settings.cpaLimitM = s.tracker.dangerCpaM;
     const sim::TrialOrder order{degToRad(40.0), knotsToMps(10.0), 30.0};

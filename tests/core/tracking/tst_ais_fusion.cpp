@@ -22,17 +22,12 @@
 #include "studies/ais_fusion_study.h"
 #include "studies/imo_accuracy.h"
 #include "support/compare_near.h"
+#include "support/drkf_fixtures.h"
 #include "tracking/ais_fusion.h"
 
 using namespace reckoner;
 
 namespace {
-sim::Scenario builtin(const char* name) {
-  const auto* f = resources::findScenario(name);
-  if (!f) throw std::runtime_error(std::string("no builtin scenario ") + name);
-  return files::parseScenario(f->text, name);
-}
-
 constexpr double kLat0 = 50.0, kLon0 = -3.0;  // on zone 30's central meridian: no convergence
 
 sensors::AisHullState hull(double tS, double x, double y, double speedMps, double headingDeg,
@@ -160,7 +155,7 @@ class TstAisFusion : public QObject {
   }
 
   void scenarioFieldsReadAndWritten() {
-    const sim::Scenario s = builtin("ais-harbour");
+    const sim::Scenario s = test::builtinScenario("ais-harbour");
     int a = 0, b = 0;
     for (const auto& t : s.targets)
       if (t.ais) ++(t.ais->cls == sensors::AisStationClass::A ? a : b);
@@ -222,7 +217,7 @@ class TstAisFusion : public QObject {
     // THEN at least 99% of the eligible station-cycles are associated with their own vessel's track, no
     // swap between vessels more than 500 m apart, every association fuses, and the fused tracks' NEES
     // (target position and velocity) is in its band: errors inside the sd, the sd not far above them.
-    const sim::Scenario s = builtin("ais-harbour");
+    const sim::Scenario s = test::builtinScenario("ais-harbour");
     studies::FusionStudyOptions o;
     o.runs = 2;
     o.threads = 2;

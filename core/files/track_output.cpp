@@ -26,7 +26,7 @@ void appendNumber(std::string& s, double v, const char* fmt) {
 std::string targetsCsvHeader() {
   return "t_s,track_id,target_id,status,true_x_m,true_y_m,true_vx_mps,true_vy_mps,est_x_m,est_y_m,"
          "est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,est_lat_deg,est_lon_deg,course_deg,"
-         "speed_kn,cpa_nm,tcpa_min,nees,nis";
+         "speed_kn,cpa_nm,tcpa_min,nees,nis,ais_mmsi";
 }
 
 std::string targetsCsvLine(const sim::TrackRow& r) {
@@ -57,6 +57,8 @@ std::string targetsCsvLine(const sim::TrackRow& r) {
   appendNumber(s, r.tcpaMin, "%.4f");
   appendNumber(s, r.nees, "%.4f");
   appendNumber(s, r.nis, "%.4f");
+  s += ',';
+  if (r.aisMmsi != 0) s.append(std::to_string(r.aisMmsi));
   return s;
 }
 

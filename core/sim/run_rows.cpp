@@ -180,6 +180,7 @@ TrackRow trackRow(const SweepSnapshot& sw, const TrackSnapshot& t, const std::ve
                                 t.kinematics, t.lastNis, geo);
   r.manoeuvring = t.manoeuvring;
   r.manual = t.manual;
+  r.aisMmsi = t.aisMmsi;
   std::size_t i = 0;
   while (i < targets.size() && targets[i].id != t.targetId) ++i;
   if (t.targetId < 0 || i >= targets.size() || i >= sw.targets.size()) return r;

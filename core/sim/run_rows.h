@@ -100,6 +100,7 @@ struct TrackRow {
   bool manoeuvring = false;            ///< the track's manoeuvre flag (ekf-ie, imm)
   bool manual = false;                 ///< acquired by the operator
   double rangeNm = 0, bearingDeg = 0;  ///< from own ship's estimate, true (track::TrackKinematics)
+  std::uint32_t aisMmsi = 0;           ///< the AIS station associated with (and fused into) the track
 
   [[nodiscard]] double positionErrorM() const;
   [[nodiscard]] double velocityErrorMps() const;

@@ -240,8 +240,10 @@ void SimulationEngine::startSweep(TimeUs t, SimFrame& frame) {
     snap.ownTruth = truth_.state();
     for (const auto& m : targets_) snap.targets.push_back(m.state());
     const double convergence = ownShipInput().convergenceRad;
-    for (const auto& tr : manager_->tracks())
+    for (const auto& tr : manager_->tracks()) {
       snap.tracks.push_back(trackSnapshotOf(*manager_, tr, t, convergence));
+      snap.tracks.back().aisMmsi = ais_->fusion().mmsiOfTrack(tr.id);
+    }
     frame.sweeps.push_back(std::move(snap));
     matchRadar(t, frame);
   }

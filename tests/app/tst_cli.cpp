@@ -65,10 +65,11 @@ class TestCli : public QObject {
              QByteArray(
                  "t_s,track_id,target_id,status,true_x_m,true_y_m,true_vx_mps,true_vy_mps,est_x_m,est_y_m,"
                  "est_vx_mps,est_vy_mps,sd_x_m,sd_y_m,sd_vx_mps,sd_vy_mps,est_lat_deg,est_lon_deg,course_deg,"
-                 "speed_kn,cpa_nm,tcpa_min,nees,nis"));
+                 "speed_kn,cpa_nm,tcpa_min,nees,nis,ais_mmsi"));
     QVERIFY(lines.size() >= 119);  // 119 sweeps end within 240 s
     const QList<QByteArray> last = lines[lines.size() - 2].split(',');
-    QCOMPARE(last.size(), 24);
+    QCOMPARE(last.size(), 25);
+    QCOMPARE(last[24], QByteArray(""));  // no AIS on imo-1
     QCOMPARE(last[2], QByteArray("1"));
     QCOMPARE(last[3], QByteArray("confirmed"));
     RK_COMPARE_NEAR(last[19].toDouble(), 14.14, 0.5);  // true speed 14.1 kn

@@ -44,19 +44,10 @@ std::string dangerousCourses(const sim::DangerSectors& d, double speedMps) {
     if (std::abs(d.speedsMps[i] - speedMps) < std::abs(d.speedsMps[ring] - speedMps)) ring = i;
   std::string out;
   const double cell = 360.0 / d.courses;
-  for (int j = 0; j < d.courses;) {
-    if (!d.danger[ring * static_cast<std::size_t>(d.courses) + static_cast<std::size_t>(j)]) {
-      ++j;
-      continue;
-    }
-    int k = j;
-    while (k + 1 < d.courses &&
-           d.danger[ring * static_cast<std::size_t>(d.courses) + static_cast<std::size_t>(k + 1)])
-      ++k;
+  for (const auto& [j, k] : d.dangerousRuns(ring)) {
     char buf[48];
     std::snprintf(buf, sizeof buf, "%s%03.0f-%03.0f", out.empty() ? "" : ", ", j * cell, k * cell);
     out += buf;
-    j = k + 1;
   }
   char head[48];
   std::snprintf(head, sizeof head, "at %.1f kn: ", mpsToKnots(d.speedsMps[ring]));

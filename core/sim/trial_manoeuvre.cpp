@@ -185,6 +185,25 @@ DangerSectors dangerSectors(const TrialOwnShip& own, const std::vector<TrialTarg
 }
 }  // namespace
 
+std::vector<std::pair<int, int>> DangerSectors::dangerousRuns(std::size_t ring) const {
+  std::vector<std::pair<int, int>> runs;
+  if (ring >= speedsMps.size()) return runs;
+  const auto at = [&](int j) {
+    return danger[ring * static_cast<std::size_t>(courses) + static_cast<std::size_t>(j)];
+  };
+  for (int j = 0; j < courses;) {
+    if (!at(j)) {
+      ++j;
+      continue;
+    }
+    int k = j;
+    while (k + 1 < courses && at(k + 1)) ++k;
+    runs.emplace_back(j, k);
+    j = k + 1;
+  }
+  return runs;
+}
+
 TrialResult trialManoeuvre(TimeUs timeUs, const TrialOwnShip& own,
                            const std::vector<TrialTargetInput>& targets, const TrialOrder& order,
                            const TrialSettings& settings) {

@@ -17,6 +17,7 @@
 // P = Phi((L - s) / sd) - Phi((-L - s) / sd). The sd covers the estimates' errors, not future
 // manoeuvres of the target.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "common/time.h"
@@ -82,6 +83,8 @@ struct DangerSectors {
   std::vector<double> speedsMps;     ///< ring speeds, increasing
   int courses = 0;                   ///< course cells, cell j centred on j * 360 / courses degrees true
   std::vector<std::uint8_t> danger;  ///< speeds x courses, row per speed: 1 when some target is dangerous
+  /// The runs of consecutive dangerous cells of a ring, [first, last] cell indices, in course order.
+  [[nodiscard]] std::vector<std::pair<int, int>> dangerousRuns(std::size_t ring) const;
 };
 
 struct TrialResult {

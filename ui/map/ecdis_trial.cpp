@@ -24,15 +24,7 @@ void EcdisView::paintDangerSectors(QPainter& p, const sim::TrialResult& r, const
   QPainterPath path;
   for (std::size_t i = 0; i < d.speedsMps.size(); ++i) {
     const double inner = i == 0 ? 0.0 : d.speedsMps[i - 1] * vectorS, outer = d.speedsMps[i] * vectorS;
-    for (int j = 0; j < d.courses;) {
-      if (!d.danger[i * static_cast<std::size_t>(d.courses) + static_cast<std::size_t>(j)]) {
-        ++j;
-        continue;
-      }
-      int k = j;
-      while (k + 1 < d.courses &&
-             d.danger[i * static_cast<std::size_t>(d.courses) + static_cast<std::size_t>(k + 1)])
-        ++k;
+    for (const auto& [j, k] : d.dangerousRuns(i)) {
       // Cells j..k: from half a cell before j to half a cell after k, true courses.
       const double a0 = (j - 0.5) * cell - gamma, a1 = (k + 0.5) * cell - gamma;
       QPolygonF poly;
@@ -47,7 +39,6 @@ void EcdisView::paintDangerSectors(QPainter& p, const sim::TrialResult& r, const
       }
       path.addPolygon(poly);
       path.closeSubpath();
-      j = k + 1;
     }
   }
   QColor fill = colour("danger");

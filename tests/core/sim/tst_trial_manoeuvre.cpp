@@ -106,6 +106,15 @@ class TstTrialManoeuvre : public QObject {
         ring = i;
     QCOMPARE(d.danger[ring * 180 + 0], std::uint8_t{1});
     QCOMPARE(d.danger[ring * 180 + 90], std::uint8_t{0});
+    // The runs cover exactly the dangerous cells.
+    int inRuns = 0, cells = 0;
+    for (const auto& [j, k] : d.dangerousRuns(ring)) {
+      QVERIFY(j <= k);
+      inRuns += k - j + 1;
+    }
+    for (int j = 0; j < 180; ++j) cells += d.danger[ring * 180 + static_cast<std::size_t>(j)];
+    QCOMPARE(inRuns, cells);
+    QVERIFY(d.dangerousRuns(d.speedsMps.size()).empty());
   }
 
   void badOrderGivesNothing() {

@@ -140,12 +140,12 @@ void scoreTrack(const sim::SimFrame& f, const sim::SimulationEngine& e, const Ve
                 Sample& s, Sample* aisSample) {
   const sim::TrackSnapshot* tr = followed(f, v, sc);
   if (!tr) return;
+  const bool due1 = !s.at1 && f.timeUs >= sc.acquiredUs + 60 * kMicrosPerSecond;
+  const bool due3 = !s.at3 && f.timeUs >= sc.acquiredUs + 180 * kMicrosPerSecond;
+  if (!due1 && !due3) return;  // the truth and its projection only when a sample falls due
   const double gamma = e.frame().gridInfo(f.truth.position).convergenceRad;
   const ImoTruth truth = imoTruthOf(f.truth, f.targets[v.index], gamma);
   const est::Vec<4> x = trueTarget(f.targets[v.index]);
-  const bool due1 = !s.at1 && f.timeUs >= sc.acquiredUs + 60 * kMicrosPerSecond;
-  const bool due3 = !s.at3 && f.timeUs >= sc.acquiredUs + 180 * kMicrosPerSecond;
-  if (!due1 && !due3) return;
   const auto& b = tr->estimate;
   scoreAt(s, f.timeUs, sc.acquiredUs, imoErrorsOf(tr->kinematics, truth),
           neesOf(x - b.x.segment<4>(tk::kTgtX), b.P.block<4, 4>(tk::kTgtX, tk::kTgtX)));

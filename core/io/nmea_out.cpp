@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "common/angles.h"
 #include "common/units.h"
@@ -12,16 +13,18 @@
 namespace reckoner::io::nmea {
 namespace {
 
-std::string angleField(double deg, int degDigits, char pos, char neg) {
+std::string angleField(double deg, int degDigits, int minuteDecimals, char pos, char neg) {
+  const int decimals = std::clamp(minuteDecimals, 0, 9);
   const double a = std::abs(deg);
   int d = static_cast<int>(std::floor(a));
   double m = (a - d) * 60.0;
-  if (m >= 59.9999995) {  // would print as 60.000000
+  if (m >= 60.0 - 0.5 * std::pow(10.0, -decimals)) {  // would print as 60.000000
     m = 0.0;
     ++d;
   }
   char buf[48];
-  std::snprintf(buf, sizeof buf, "%0*d%09.6f,%c", degDigits, d, m, deg < 0 ? neg : pos);
+  std::snprintf(buf, sizeof buf, "%0*d%0*.*f,%c", degDigits, d, decimals > 0 ? decimals + 3 : 2, decimals, m,
+                deg < 0 ? neg : pos);
   return buf;
 }
 
@@ -71,13 +74,37 @@ std::string clampInt(int v, int lo, int hi, int width) {
   return buf;
 }
 
+/// A magnitude in [0, maxValue] with `decimals` decimals (the sign dropped); empty when not finite.
+std::string magnitude(double v, double maxValue, int decimals) {
+  if (!std::isfinite(v)) return {};
+  return num(std::min(std::abs(v), maxValue), decimals);
+}
+
+/// Route following's status (both status fields) and mode (docs/outputs.md, "Route following: XTE, RMB,
+/// APB").
+bool navStatusValid(bool valid, char mode) {
+  return valid && (mode == 'A' || mode == 'D' || mode == 'E');
+}
+std::string navMode(bool valid, char mode) {
+  return ch(valid ? mode : 'N');
+}
+std::string av(bool a) {
+  return a ? "A" : "V";
+}
+
+/// Cross-track magnitude and direction to steer as two fields; both empty when not valid or absent.
+std::pair<std::string, std::string> crossTrack(bool valid, double nm, double maxNm, bool steerRight) {
+  if (!valid || !std::isfinite(nm)) return {};
+  return {magnitude(nm, maxNm, 2), steerRight ? "R" : "L"};
+}
+
 }  // namespace
 
-std::string nmeaLatitude(double latDeg) {
-  return angleField(latDeg, 2, 'N', 'S');
+std::string nmeaLatitude(double latDeg, int minuteDecimals) {
+  return angleField(latDeg, 2, minuteDecimals, 'N', 'S');
 }
-std::string nmeaLongitude(double lonDeg) {
-  return angleField(lonDeg, 3, 'E', 'W');
+std::string nmeaLongitude(double lonDeg, int minuteDecimals) {
+  return angleField(lonDeg, 3, minuteDecimals, 'E', 'W');
 }
 
 std::string nmeaTime(UtcUs t) {
@@ -179,6 +206,52 @@ std::string osd(std::string_view talker, const OsdOut& v) {
                   {v.headingTrueDeg ? degrees(*v.headingTrueDeg, 1) : "", v.headingTrueDeg ? "A" : "V",
                    degrees(v.courseTrueDeg, 1), ch(v.courseRef), num(v.speedKn, 2), ch(v.speedRef),
                    v.setTrueDeg ? degrees(*v.setTrueDeg, 1) : "", num(v.driftKn, 2), "N"});
+}
+
+std::string xte(std::string_view talker, const XteOut& v) {
+  const std::string status = av(navStatusValid(v.valid, v.mode));
+  const auto [xteNm, steer] = crossTrack(v.valid, v.crossTrackNm, 999.99, v.steerRight);
+  return sentence(talker, "XTE", {status, status, xteNm, steer, "N", navMode(v.valid, v.mode)});
+}
+
+std::string rmb(std::string_view talker, const RmbOut& v) {
+  const auto [xteNm, steer] = crossTrack(v.valid, v.crossTrackNm, 9.99, v.steerRight);
+  // 4 decimals of minutes (0.2 m): with 6 the ids would have no room in 80 characters.
+  const std::string lat = nmeaLatitude(v.destLatDeg, 4), lon = nmeaLongitude(v.destLonDeg, 4);
+  std::vector<std::string> f{av(navStatusValid(v.valid, v.mode)),
+                             xteNm,
+                             steer,
+                             escapeText(v.originId, kWaypointIdChars),
+                             escapeText(v.destinationId, kWaypointIdChars),
+                             lat.substr(0, lat.find(',')),
+                             lat.substr(lat.find(',') + 1),
+                             lon.substr(0, lon.find(',')),
+                             lon.substr(lon.find(',') + 1),
+                             v.valid ? magnitude(v.rangeToDestNm, 999.9, 2) : "",
+                             v.valid ? degrees(v.bearingToDestTrueDeg, 1) : "",
+                             v.valid ? num(std::clamp(v.closingVelocityKn, -999.9, 999.9), 1) : "",
+                             av(v.valid && v.arrived),
+                             navMode(v.valid, v.mode)};
+  // Too long (only with the longest ids and numbers): cut the origin's id, then the destination's.
+  for (const std::size_t i : {std::size_t(3), std::size_t(4)}) {
+    const std::size_t length = sentence(talker, "RMB", f).size();
+    if (length <= kMaxSentenceChars) break;
+    const std::size_t over = length - kMaxSentenceChars;
+    f[i] = escapeText(i == 3 ? v.originId : v.destinationId, f[i].size() > over ? f[i].size() - over : 0);
+  }
+  return sentence(talker, "RMB", f);
+}
+
+std::string apb(std::string_view talker, const ApbOut& v) {
+  const std::string status = av(navStatusValid(v.valid, v.mode));
+  const auto [xteNm, steer] = crossTrack(v.valid, v.crossTrackNm, 999.99, v.steerRight);
+  const std::string ref = v.bearingMagnetic ? "M" : "T";
+  return sentence(
+      talker, "APB",
+      {status, status, xteNm, steer, "N", av(v.valid && v.arrivalCircleEntered),
+       av(v.valid && v.perpendicularPassed), degrees(v.bearingOriginToDestDeg, 1), ref,
+       escapeText(v.destinationId, kWaypointIdChars), v.valid ? degrees(v.bearingPresentToDestDeg, 1) : "",
+       ref, v.valid ? degrees(v.headingToSteerDeg, 1) : "", ref, navMode(v.valid, v.mode)});
 }
 
 std::string alr(std::string_view talker, const AlrOut& v) {

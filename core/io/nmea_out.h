@@ -1,10 +1,11 @@
 #pragma once
 // NMEA 0183 sentences Reckoner sends (docs/outputs.md, "NMEA 0183 output", field by field with the
-// standard's field numbers): own ship (RMC, GGA, VTG, HDT, GST), radar targets (TTM, TLL, OSD) and
-// alerts (ALR; ALF and ALC as IEC 61924-2 bridge alert management uses them). Codec only: each encoder
-// takes plain values in the units the sentence carries and returns one sentence with its checksum,
-// without CR LF. Absent values (nullopt, NaN) become empty fields; text fields are escaped (^hh) so that
-// no reserved character reaches the wire, and cut so that no sentence exceeds 82 characters with CR LF.
+// standard's field numbers): own ship (RMC, GGA, VTG, HDT, GST), radar targets (TTM, TLL, OSD), route
+// following for an autopilot or a plotter (XTE, RMB, APB) and alerts (ALR; ALF and ALC as IEC 61924-2 bridge
+// alert management uses them). Codec only: each encoder takes plain values in the units the sentence carries
+// and returns one sentence with its checksum, without CR LF. Absent values (nullopt, NaN) become empty
+// fields; text fields are escaped (^hh) so that no reserved character reaches the wire, and cut so that no
+// sentence exceeds 82 characters with CR LF.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,9 +16,10 @@
 namespace reckoner::io::nmea {
 
 /// Latitude as the two fields "ddmm.mmmmmm,N" (south: S); longitude "dddmm.mmmmmm,E" (west: W).
-/// Degrees in [-90, 90] and [-180, 180]; the minutes never print as 60.
-std::string nmeaLatitude(double latDeg);
-std::string nmeaLongitude(double lonDeg);
+/// Degrees in [-90, 90] and [-180, 180]; minuteDecimals (0-9) decimals of minutes, 6 (2 mm) unless
+/// a sentence needs the room; the minutes never print as 60.
+std::string nmeaLatitude(double latDeg, int minuteDecimals = 6);
+std::string nmeaLongitude(double lonDeg, int minuteDecimals = 6);
 /// UTC time of day "hhmmss.ss" (truncated to the hundredth) and date "ddmmyy".
 std::string nmeaTime(UtcUs t);
 std::string nmeaDate(UtcUs t);
@@ -108,6 +110,59 @@ struct OsdOut {
   std::optional<double> setTrueDeg, driftKn;  ///< the current
 };
 std::string osd(std::string_view talker, const OsdOut& v);
+
+/// Route following (XTE, RMB, APB). Status and mode alike in all three: both status fields (the Loran-C
+/// blink / general warning flag and the cycle lock flag of the standard) A when `valid` and the mode is
+/// A autonomous, D differential or E estimated (dead reckoning: A with E, as RMC), else V; the mode
+/// field `mode`, or N (not valid) when not `valid`. Not valid: the fields that depend on own ship's
+/// position (cross-track error and direction, range, bearings and heading to steer from own ship,
+/// closing velocity) are empty and arrival is V, so that a reader which ignores the status has nothing
+/// to steer on; the leg's own data (waypoint ids, destination position, bearing origin to destination)
+/// stay. NaN values are empty fields.
+
+/// Waypoint ids in RMB and APB: escaped and cut to 6 characters, the length older plotters and
+/// autopilots accept (OpenCPN's default for its autopilot output).
+inline constexpr std::size_t kWaypointIdChars = 6;
+
+struct XteOut {
+  double crossTrackNm = 0;  ///< magnitude, NM (its sign is ignored; the side is steerRight)
+  bool steerRight = false;  ///< direction to steer: R if own ship is left (port) of the track, L if right
+  bool valid = false;
+  char mode = 'A';  ///< A autonomous, D differential, E estimated (dead reckoning), N not valid
+};
+/// $--XTE,A,A,x.x,L/R,N,mode: cross-track error, 2 decimals, at most 999.99 NM.
+std::string xte(std::string_view talker, const XteOut& v);
+
+struct RmbOut {
+  bool valid = false;
+  double crossTrackNm = 0;  ///< magnitude, NM; written at most 9.99 (RMB's limit)
+  bool steerRight = false;
+  std::string originId, destinationId;  ///< escaped, cut to kWaypointIdChars (origin first to fit)
+  double destLatDeg = 0, destLonDeg = 0;
+  double rangeToDestNm = 0;         ///< written at most 999.9 (RMB's limit)
+  double bearingToDestTrueDeg = 0;  ///< from own ship
+  double closingVelocityKn = 0;     ///< speed toward the destination; negative: moving away
+  bool arrived = false;             ///< arrival circle entered or perpendicular passed
+  char mode = 'A';
+};
+/// $--RMB,A,x.x,L/R,origin,destination,llll.llll,N/S,yyyyy.yyyy,E/W,range,bearing,velocity,A/V,mode.
+std::string rmb(std::string_view talker, const RmbOut& v);
+
+struct ApbOut {
+  bool valid = false;
+  double crossTrackNm = 0;  ///< magnitude, NM
+  bool steerRight = false;
+  bool arrivalCircleEntered = false;
+  bool perpendicularPassed = false;  ///< crossed the line through the destination perpendicular to the leg
+  double bearingOriginToDestDeg = 0;
+  bool bearingMagnetic = false;  ///< the reference of all three directions: M, or T when false
+  std::string destinationId;     ///< escaped, cut to kWaypointIdChars
+  double bearingPresentToDestDeg = 0;
+  double headingToSteerDeg = 0;
+  char mode = 'A';
+};
+/// $--APB,A,A,x.x,L/R,N,A/V,A/V,x.x,T/M,id,x.x,T/M,x.x,T/M,mode.
+std::string apb(std::string_view talker, const ApbOut& v);
 
 struct AlrOut {
   UtcUs utc = 0;       ///< of the condition's last change

@@ -1,10 +1,13 @@
 // The NMEA 0183 encoders of io/nmea_out.h against docs/outputs.md ("NMEA 0183 output"): every sentence
 // passes its checksum, stays within 82 characters, and is read back field by field, by Reckoner's own
 // reader (io/nmea.h parse) for RMC, GGA, VTG, HDT and GST and by field number for TTM, TLL, OSD, ALR,
-// ALF and ALC; reserved characters in text are escaped; the error ellipse of a covariance is right.
+// ALF and ALC; XTE, RMB and APB by field number too, split by a reader written here (its own checksum
+// and field split) and accepted by Reckoner's reader as well-framed sentences of a type it does not
+// read; reserved characters in text are escaped; the error ellipse of a covariance is right.
 #include <QTest>
 
 #include <cmath>
+#include <sstream>
 
 #include "io/nmea.h"
 #include "io/nmea_out.h"
@@ -23,6 +26,28 @@ std::vector<std::string> fieldsOf(const std::string& line) {
   if (!f) qFatal("checksum or framing wrong: %s", line.c_str());
   if (line.size() > kMaxSentenceChars) qFatal("longer than 80 characters: %s", line.c_str());
   return *f;
+}
+
+/// The fields of a route-following sentence as a reader that shares no code with io/ sees them: '$',
+/// the XOR checksum of everything between '$' and '*' equal to the two hex digits after '*', at most 80
+/// characters, then a plain split at every comma. Also checks that Reckoner's reader takes the line as
+/// a well-framed sentence (checksum and address right) of a type it does not read.
+std::vector<std::string> independentFields(const std::string& line) {
+  if (line.empty() || line[0] != '$') qFatal("no '$': %s", line.c_str());
+  const std::size_t star = line.find('*');
+  if (star == std::string::npos || star + 3 != line.size()) qFatal("no checksum: %s", line.c_str());
+  unsigned sum = 0;
+  for (std::size_t i = 1; i < star; ++i) sum ^= static_cast<unsigned char>(line[i]);
+  if (sum != std::stoul(line.substr(star + 1), nullptr, 16)) qFatal("checksum wrong: %s", line.c_str());
+  if (line.size() > 80) qFatal("longer than 80 characters: %s", line.c_str());
+  if (parse(line).error != Error::Unknown) qFatal("Reckoner's reader refuses: %s", line.c_str());
+  std::vector<std::string> out;
+  std::istringstream body(line.substr(1, star - 1));
+  std::string field;
+  while (std::getline(body, field, ',')) out.push_back(field);
+  if (line[star - 1] == ',') out.emplace_back();  // getline drops a last empty field
+  if (out != fieldsOf(line)) qFatal("the two readers disagree: %s", line.c_str());
+  return out;
 }
 
 template <class T>
@@ -295,6 +320,229 @@ class TestNmeaOut : public QObject {
     QCOMPARE(none.size(), std::size_t(1));
     QCOMPARE(fieldsOf(none[0]).size(), std::size_t(5));
     QCOMPARE(fieldsOf(none[0])[4], std::string("00"));
+  }
+
+  void latLonMinuteDecimals() {
+    QCOMPARE(nmeaLatitude(49.0 + 17.24 / 60.0, 4), std::string("4917.2400,N"));
+    QCOMPARE(nmeaLongitude(-(123.0 + 9.57 / 60.0), 4), std::string("12309.5700,W"));
+    QCOMPARE(nmeaLatitude(10.9999995, 4), std::string("1100.0000,N"));  // never 60 minutes at 4 decimals
+    QCOMPARE(nmeaLatitude(10.999999, 4), std::string("1059.9999,N"));
+    QCOMPARE(nmeaLatitude(-0.5, 0), std::string("0030,S"));
+  }
+
+  void xteFieldByField() {
+    // GIVEN own ship 0.256 NM left of the track WHEN encoded THEN steer R, 2 decimals, checksum known.
+    const std::string line = xte("IN", {0.256, true, true, 'A'});
+    QCOMPARE(line, std::string("$INXTE,A,A,0.26,R,N,A*09"));
+    auto f = independentFields(line);
+    QCOMPARE(f.size(), std::size_t(7));
+    QCOMPARE(f[0], std::string("INXTE"));
+    QCOMPARE(f[1], std::string("A"));  // Loran-C blink / general warning flag
+    QCOMPARE(f[2], std::string("A"));  // Loran-C cycle lock
+    QCOMPARE(f[3], std::string("0.26"));
+    QCOMPARE(f[4], std::string("R"));
+    QCOMPARE(f[5], std::string("N"));
+    QCOMPARE(f[6], std::string("A"));
+    // Right of the track (the sign of the magnitude is ignored), dead reckoning: status A, mode E.
+    f = independentFields(xte("IN", {-1.5, false, true, 'E'}));
+    QCOMPARE(f[1], std::string("A"));
+    QCOMPARE(f[3], std::string("1.50"));
+    QCOMPARE(f[4], std::string("L"));
+    QCOMPARE(f[6], std::string("E"));
+    // Simulator mode: valid data, but not a position to steer on: status V, the mode kept.
+    f = independentFields(xte("IN", {0.1, false, true, 'S'}));
+    QCOMPARE(f[1], std::string("V"));
+    QCOMPARE(f[2], std::string("V"));
+    QCOMPARE(f[3], std::string("0.10"));
+    QCOMPARE(f[6], std::string("S"));
+    // Not valid: both statuses V, nothing to steer on, mode N.
+    f = independentFields(xte("IN", {0.3, true, false, 'A'}));
+    QCOMPARE(f.size(), std::size_t(7));
+    QCOMPARE(f[1], std::string("V"));
+    QCOMPARE(f[2], std::string("V"));
+    QCOMPARE(f[3], std::string(""));
+    QCOMPARE(f[4], std::string(""));
+    QCOMPARE(f[5], std::string("N"));
+    QCOMPARE(f[6], std::string("N"));
+    // Absent (NaN) and huge values: empty, and bounded.
+    f = independentFields(xte("IN", {std::nan(""), true, true, 'A'}));
+    QCOMPARE(f[3], std::string(""));
+    QCOMPARE(f[4], std::string(""));
+    QCOMPARE(independentFields(xte("IN", {1e300, true, true, 'A'}))[3], std::string("999.99"));
+  }
+
+  void rmbFieldByField() {
+    RmbOut r;
+    r.valid = true;
+    r.crossTrackNm = 0.66;
+    r.steerRight = false;
+    r.originId = "003";
+    r.destinationId = "004";
+    r.destLatDeg = 49.0 + 17.24 / 60.0;
+    r.destLonDeg = -(123.0 + 9.57 / 60.0);
+    r.rangeToDestNm = 1.3;
+    r.bearingToDestTrueDeg = 52.5;
+    r.closingVelocityKn = 0.5;
+    const std::string line = rmb("IN", r);
+    QCOMPARE(line, std::string("$INRMB,A,0.66,L,003,004,4917.2400,N,12309.5700,W,1.30,52.5,0.5,V,A*5D"));
+    auto f = independentFields(line);
+    QCOMPARE(f.size(), std::size_t(15));
+    QCOMPARE(f[0], std::string("INRMB"));
+    QCOMPARE(f[1], std::string("A"));
+    QCOMPARE(f[2], std::string("0.66"));
+    QCOMPARE(f[3], std::string("L"));
+    QCOMPARE(f[4], std::string("003"));  // origin
+    QCOMPARE(f[5], std::string("004"));  // destination
+    QCOMPARE(f[6], std::string("4917.2400"));
+    QCOMPARE(f[7], std::string("N"));
+    QCOMPARE(f[8], std::string("12309.5700"));
+    QCOMPARE(f[9], std::string("W"));
+    QCOMPARE(f[10], std::string("1.30"));
+    QCOMPARE(f[11], std::string("52.5"));
+    QCOMPARE(f[12], std::string("0.5"));
+    QCOMPARE(f[13], std::string("V"));
+    QCOMPARE(f[14], std::string("A"));
+
+    // The standard's limits (9.99 NM cross-track, 999.9 NM range), bearing wrapped, moving away, arrived.
+    r.crossTrackNm = 12.3;
+    r.steerRight = true;
+    r.rangeToDestNm = 1234.5;
+    r.bearingToDestTrueDeg = 359.96;
+    r.closingVelocityKn = -3.26;
+    r.arrived = true;
+    r.mode = 'E';
+    f = independentFields(rmb("IN", r));
+    QCOMPARE(f[1], std::string("A"));
+    QCOMPARE(f[2], std::string("9.99"));
+    QCOMPARE(f[3], std::string("R"));
+    QCOMPARE(f[10], std::string("999.90"));
+    QCOMPARE(f[11], std::string("0.0"));
+    QCOMPARE(f[12], std::string("-3.3"));
+    QCOMPARE(f[13], std::string("A"));
+    QCOMPARE(f[14], std::string("E"));
+
+    // Not valid: V, the leg's data kept, everything measured from own ship empty, not arrived, mode N.
+    r.valid = false;
+    f = independentFields(rmb("IN", r));
+    QCOMPARE(f.size(), std::size_t(15));
+    QCOMPARE(f[1], std::string("V"));
+    QCOMPARE(f[2], std::string(""));
+    QCOMPARE(f[3], std::string(""));
+    QCOMPARE(f[4], std::string("003"));
+    QCOMPARE(f[5], std::string("004"));
+    QCOMPARE(f[6], std::string("4917.2400"));
+    QCOMPARE(f[10], std::string(""));
+    QCOMPARE(f[11], std::string(""));
+    QCOMPARE(f[12], std::string(""));
+    QCOMPARE(f[13], std::string("V"));
+    QCOMPARE(f[14], std::string("N"));
+  }
+
+  void rmbIdsEscapedCutAndFitted() {
+    RmbOut r;
+    r.valid = true;
+    r.originId = "WP,1";        // escaped: exactly 6 characters
+    r.destinationId = "A*B*C";  // never half an escape: "A^2AB"
+    auto f = independentFields(rmb("IN", r));
+    QCOMPARE(f[4], std::string("WP^2C1"));
+    QCOMPARE(f[5], std::string("A^2AB"));
+    r.destinationId = "HARBOUR ENTRANCE";
+    QCOMPARE(independentFields(rmb("IN", r))[5], std::string("HARBOU"));
+    // The longest numbers and two 6-character ids would make 81 characters: the origin's id loses one.
+    r.crossTrackNm = 9.99;
+    r.steerRight = false;
+    r.originId = "ORIGIN";
+    r.destinationId = "DEST01";
+    r.destLatDeg = -89.99;
+    r.destLonDeg = -179.99;
+    r.rangeToDestNm = 999.9;
+    r.bearingToDestTrueDeg = 359.9;
+    r.closingVelocityKn = -5000.0;
+    r.arrived = true;
+    const std::string line = rmb("IN", r);
+    QCOMPARE(line.size(), kMaxSentenceChars);
+    f = independentFields(line);
+    QCOMPARE(f[4], std::string("ORIGI"));
+    QCOMPARE(f[5], std::string("DEST01"));
+    QCOMPARE(f[12], std::string("-999.9"));
+  }
+
+  void apbFieldByField() {
+    ApbOut a;
+    a.valid = true;
+    a.crossTrackNm = 0.1;
+    a.steerRight = true;
+    a.bearingOriginToDestDeg = 11.0;
+    a.bearingMagnetic = true;
+    a.destinationId = "DEST";
+    a.bearingPresentToDestDeg = 11.0;
+    a.headingToSteerDeg = 11.0;
+    const std::string line = apb("IN", a);
+    QCOMPARE(line, std::string("$INAPB,A,A,0.10,R,N,V,V,11.0,M,DEST,11.0,M,11.0,M,A*6F"));
+    auto f = independentFields(line);
+    QCOMPARE(f.size(), std::size_t(16));
+    QCOMPARE(f[0], std::string("INAPB"));
+    QCOMPARE(f[1], std::string("A"));
+    QCOMPARE(f[2], std::string("A"));
+    QCOMPARE(f[3], std::string("0.10"));
+    QCOMPARE(f[4], std::string("R"));
+    QCOMPARE(f[5], std::string("N"));
+    QCOMPARE(f[6], std::string("V"));  // arrival circle
+    QCOMPARE(f[7], std::string("V"));  // perpendicular
+    QCOMPARE(f[8], std::string("11.0"));
+    QCOMPARE(f[9], std::string("M"));
+    QCOMPARE(f[10], std::string("DEST"));
+    QCOMPARE(f[11], std::string("11.0"));
+    QCOMPARE(f[12], std::string("M"));
+    QCOMPARE(f[13], std::string("11.0"));
+    QCOMPARE(f[14], std::string("M"));
+    QCOMPARE(f[15], std::string("A"));
+
+    // True directions wrapped into [0, 360), arrival and perpendicular, an id escaped and cut.
+    a.bearingMagnetic = false;
+    a.bearingOriginToDestDeg = 359.96;
+    a.bearingPresentToDestDeg = -90.0;
+    a.headingToSteerDeg = 721.3;
+    a.arrivalCircleEntered = true;
+    a.perpendicularPassed = true;
+    a.steerRight = false;
+    a.destinationId = "N,1 BUOY";
+    f = independentFields(apb("IN", a));
+    QCOMPARE(f[4], std::string("L"));
+    QCOMPARE(f[6], std::string("A"));
+    QCOMPARE(f[7], std::string("A"));
+    QCOMPARE(f[8], std::string("0.0"));
+    QCOMPARE(f[9], std::string("T"));
+    QCOMPARE(f[10], std::string("N^2C1 "));
+    QCOMPARE(f[11], std::string("270.0"));
+    QCOMPARE(f[12], std::string("T"));
+    QCOMPARE(f[13], std::string("1.3"));
+    QCOMPARE(f[14], std::string("T"));
+
+    // Not valid: V, V; nothing to steer on; no arrival; the leg's bearing and id kept; mode N.
+    a.valid = false;
+    f = independentFields(apb("IN", a));
+    QCOMPARE(f.size(), std::size_t(16));
+    QCOMPARE(f[1], std::string("V"));
+    QCOMPARE(f[2], std::string("V"));
+    QCOMPARE(f[3], std::string(""));
+    QCOMPARE(f[4], std::string(""));
+    QCOMPARE(f[6], std::string("V"));
+    QCOMPARE(f[7], std::string("V"));
+    QCOMPARE(f[8], std::string("0.0"));
+    QCOMPARE(f[10], std::string("N^2C1 "));
+    QCOMPARE(f[11], std::string(""));
+    QCOMPARE(f[13], std::string(""));
+    QCOMPARE(f[15], std::string("N"));
+
+    // The longest numbers and id stay within 80 characters.
+    a.valid = true;
+    a.crossTrackNm = 1e9;
+    a.destinationId = std::string(40, 'W');
+    const std::string longest = apb("IN", a);
+    QVERIFY(longest.size() <= kMaxSentenceChars);
+    QCOMPARE(independentFields(longest)[3], std::string("999.99"));
+    QCOMPARE(independentFields(longest)[10], std::string("WWWWWW"));
   }
 
   void escapingAndBadChecksums() {

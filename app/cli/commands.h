@@ -30,5 +30,6 @@ void addChartCommands(CLI::App& root, Commands& out);     // chart info|render|p
 void addScenarioCommands(CLI::App& root, Commands& out);  // validate, scenarios (scenario_commands.cpp)
 void addAisCommands(CLI::App& root, Commands& out);       // ais decode (ais_commands.cpp)
 void addLiveCommands(CLI::App& root, Commands& out);      // live (live_commands.cpp)
+void addRouteCommands(CLI::App& root, Commands& out);     // route check (route_commands.cpp)
 
 }  // namespace reckoner::cli

@@ -10,6 +10,7 @@
 //   chart info|render|pick PATH...                         chart_commands.cpp
 //   validate SCENARIO..., scenarios                        scenario_commands.cpp
 //   ais decode FILE... [--json]                            ais_commands.cpp
+//   route check ROUTE --enc PATH                           route_commands.cpp
 // `reckoner-cli --help` lists them, `reckoner-cli COMMAND --help` a command's options with their units.
 // Outputs: a table on stdout, files under --out DIR, --json for summary.json's text on stdout (run,
 // montecarlo, replay); the chart commands print JSON. SCENARIO is a JSON file or builtin:NAME.
@@ -121,7 +122,7 @@ int run(int argc, char** argv) {
   Commands commands;
   for (const auto add : {addRunCommands, addReplayCommands, addStudyCommands, addImoCommand, addFusionCommand,
                          addTrialCommand, addSeedCommands, addManoeuvreCommand, addChartCommands,
-                         addScenarioCommands, addAisCommands, addLiveCommands})
+                         addScenarioCommands, addAisCommands, addLiveCommands, addRouteCommands})
     add(root, commands);
   for (const auto& c : commands) c.app->allow_extras();
   root.footer(kFooter);  // after the commands: theirs would inherit it

@@ -151,6 +151,20 @@ std::string S57Catalogue::valueText(const std::string& acronym, const AttributeV
       value);
 }
 
+PickedFeature describeFeature(const ChartCell& cell, const ChartFeature& f, const S57Catalogue& catalogue) {
+  PickedFeature p;
+  p.cell = cell.info().name;
+  p.objectClass = f.objectClass;
+  p.className = catalogue.className(f.objectClass);
+  const Primitive prim = f.geometry.primitive;
+  p.primitive = prim == Primitive::Point ? "point" : prim == Primitive::Line ? "line" : "area";
+  p.lnam = f.lnam;
+  for (const auto& a : f.attributes)
+    p.attributes.push_back(
+        {a.acronym, catalogue.attributeName(a.acronym), catalogue.valueText(a.acronym, a.value)});
+  return p;
+}
+
 std::vector<PickedFeature> pickFeatures(const std::vector<CellPtr>& cells, const Viewport& view,
                                         ScreenPoint at, double tolerancePx, const S57Catalogue& catalogue) {
   std::vector<std::pair<std::pair<int, double>, PickedFeature>> found;  // (primitive rank, distance)
@@ -191,18 +205,8 @@ std::vector<PickedFeature> pickFeatures(const std::vector<CellPtr>& cells, const
         if (g.contains(here)) dist = 0;
       }
       if (dist > tolerancePx) continue;
-      PickedFeature p;
-      p.cell = cell.info().name;
-      p.objectClass = f.objectClass;
-      p.className = catalogue.className(f.objectClass);
-      p.primitive = g.primitive == Primitive::Point  ? "point"
-                    : g.primitive == Primitive::Line ? "line"
-                                                     : "area";
-      p.lnam = f.lnam;
+      PickedFeature p = describeFeature(cell, f, catalogue);
       p.distancePx = dist;
-      for (const auto& a : f.attributes)
-        p.attributes.push_back(
-            {a.acronym, catalogue.attributeName(a.acronym), catalogue.valueText(a.acronym, a.value)});
       p.attributes.insert(p.attributes.end(), extra.begin(), extra.end());
       const int rank = static_cast<int>(ci) * 3 + (g.primitive == Primitive::Point  ? 0
                                                    : g.primitive == Primitive::Line ? 1

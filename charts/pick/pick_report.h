@@ -49,6 +49,10 @@ struct PickedFeature {
   double distancePx = 0;  ///< from the picked point (0 inside an area)
 };
 
+/// One feature of a cell in words (distancePx 0): what a pick report lists for it.
+PickedFeature describeFeature(const ChartCell& cell, const ChartFeature& feature,
+                              const S57Catalogue& catalogue = S57Catalogue::installed());
+
 /// Features of `cells` at screen point `at` of `view`: points and lines within `tolerancePx` of it, and
 /// areas containing it; for soundings the nearest sounding with its depth. Points first, then lines,
 /// then areas, nearest first; finer cells before coarser ones.

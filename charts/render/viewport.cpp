@@ -21,6 +21,10 @@ MercatorPoint toMercator(const LatLon& p) {
   return {degToRad(p.lonDeg), mercatorY(p.latDeg)};
 }
 
+LatLon fromMercator(const MercatorPoint& m) {
+  return {radToDeg(2.0 * std::atan(std::exp(m.y)) - kPi / 2.0), radToDeg(m.x)};
+}
+
 Viewport::Viewport(LatLon centre, double scaleDenominator, int widthPx, int heightPx, double pixelSizeMm,
                    double rotationRad)
     : centre_(centre),

@@ -28,6 +28,8 @@ struct MercatorToScreen {
 
 /// Latitude clamped to +-85 degrees, as the view does.
 MercatorPoint toMercator(const LatLon& p);
+/// The inverse of toMercator().
+LatLon fromMercator(const MercatorPoint& m);
 
 class Viewport {
  public:

@@ -343,6 +343,7 @@ std::string jsonQuote(std::string_view text) {
 }
 
 void JsonWriter::newline() {
+  if (compact_) return;
   out_ += '\n';
   out_.append(2 * hasItems_.size(), ' ');
 }
@@ -371,7 +372,7 @@ JsonWriter& JsonWriter::endObject() {
   hasItems_.pop_back();
   if (items) newline();
   out_ += '}';
-  if (hasItems_.empty()) out_ += '\n';
+  if (hasItems_.empty() && !compact_) out_ += '\n';
   return *this;
 }
 
@@ -393,7 +394,7 @@ JsonWriter& JsonWriter::endArray() {
 JsonWriter& JsonWriter::key(std::string_view k) {
   beforeValue();
   out_ += jsonQuote(k);
-  out_ += ": ";
+  out_ += compact_ ? ":" : ": ";
   afterKey_ = true;
   return *this;
 }

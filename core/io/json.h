@@ -61,10 +61,13 @@ class JsonParseError : public std::runtime_error {
 /// Parses one JSON document (surrounding whitespace allowed). Throws JsonParseError.
 JsonValue parseJson(std::string_view text);
 
-/// Streaming writer with two-space indentation. Numbers are written with up to 10 significant digits
-/// unless a precision is given; non-finite numbers are written as null.
+/// Streaming writer with two-space indentation, or all on one line (JSON Lines) when compact. Numbers
+/// are written with up to 10 significant digits unless a precision is given; non-finite numbers are
+/// written as null.
 class JsonWriter {
  public:
+  JsonWriter() = default;
+  explicit JsonWriter(bool compact) : compact_(compact) {}
   JsonWriter& beginObject();
   JsonWriter& endObject();
   JsonWriter& beginArray();
@@ -88,6 +91,7 @@ class JsonWriter {
   std::string out_;
   std::vector<bool> hasItems_;  // per open container
   bool afterKey_ = false;
+  bool compact_ = false;
 };
 
 /// JSON string literal (quoted, escaped).

@@ -55,6 +55,8 @@ class TestCliHelp : public QObject {
           "--category base|standard|all", "--safety-contour M", "--out FILE.png", "--repeat K"}},
         {"chart pick", {"PATH", "--at LAT,LON", "--scale N", "--tolerance PX"}},
         {"ais decode", {"FILE", "--json"}},
+        {"route check",
+         {"ROUTE", "--enc PATH", "--safety-contour M", "--safety-depth M", "--no-special-areas", "--json"}},
         {"live",
          {"--udp PORT",
           "--tcp HOST:PORT",

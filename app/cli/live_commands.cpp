@@ -2,13 +2,15 @@
 // real time) through the replay's engine as they arrive (sim/live_session.h), the alerts and the AIS
 // target table kept beside it (sim/live_watch.h), written to the replay's ownship.csv, targets.csv and
 // summary.json plus ais.csv and alerts.csv (docs/outputs.md, "Live input"), until SIGINT, SIGTERM,
-// --duration or, with files alone, their end.
+// --duration or, with files alone, their end; with --record, the voyage record of it all
+// (files/voyage_recorder.h, docs/recorder.md).
 #include <QCoreApplication>
 #include <QSocketNotifier>
 #include <QTimer>
 
 #include <unistd.h>
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <memory>
@@ -21,7 +23,8 @@
 #include "cli/nmea_out.h"
 #include "cli/replay_settings.h"
 #include "connection_hub.h"
-#include "files/live_output.h"
+#include "files/live_run.h"
+#include "files/voyage_recorder.h"
 #include "io/input_error.h"
 #include "sim/live_session.h"
 #include "sim/live_watch.h"
@@ -34,7 +37,8 @@ namespace {
 struct LiveArgs {
   std::vector<std::string> udp, tcp, serial, gpsd, file, source, radarUdp, radarTcp;
   std::optional<double> durationS;
-  std::optional<std::string> nmeaOut;
+  std::optional<std::string> nmeaOut, record;
+  std::optional<double> recordMaxHours;
   bool nmeaOutAis = false;
   bool noNmeaOutAlerts = false;
   double reorderHorizonS = 1.0;
@@ -46,6 +50,8 @@ struct LiveArgs {
 
 // SIGINT / SIGTERM end the run through a pipe the event loop watches (the handler only writes a byte).
 int stopPipe[2] = {-1, -1};
+/// The period of the record's wall-clock commit check, ms.
+constexpr int kRecordTickMs = 100;
 extern "C" void onStopSignal(int) {
   const char c = 's';
   [[maybe_unused]] const auto n = ::write(stopPipe[1], &c, 1);
@@ -77,43 +83,64 @@ std::vector<conn::SourceConfig> sourcesOf(const LiveArgs& a) {
   return out;
 }
 
-/// The session, its files and its NMEA output, fed from the hub on the thread that owns them.
+/// The system clock, UTC microseconds (the hub's receive clock; the recorder's wall clock).
+UtcUs wallNow() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+/// The recorder of --record: the run's settings and its connections in the record's meta and sources.
+std::unique_ptr<files::VoyageRecorder> recorderOf(const LiveArgs& a, const sim::LiveOptions& options,
+                                                  const std::vector<conn::SourceConfig>& sources) {
+  if (!a.record) return nullptr;
+  files::RecorderSettings s;
+  s.programVersion = RECKONER_VERSION;
+  s.options = options;
+  s.maxHours = a.recordMaxHours;
+  for (const conn::SourceConfig& c : sources)
+    s.sources.push_back({0, c.name, c.role == conn::Role::Radar ? "radar" : "nmea", conn::toSpec(c)});
+  return std::make_unique<files::VoyageRecorder>(*a.record, s, wallNow());
+}
+
+/// The live pipeline (files/live_run.h: session, watch, files, record) and its NMEA output, fed from
+/// the hub on the thread that owns them.
 class LiveEngine {
  public:
-  LiveEngine(const LiveArgs& a, const sim::LiveOptions& options, const std::string& out)
+  LiveEngine(const LiveArgs& a, const sim::LiveOptions& options, const std::string& out,
+             const std::vector<conn::SourceConfig>& sources)
       : a_(a),
-        session_(options),
-        watch_(watchSettings(options)),
-        writer_(out, options.radar),
+        recorder_(recorderOf(a, options, sources)),
+        run_(options, out, recorder_.get()),
         nmea_(nmeaOptions(a)) {
     // after the application: a TCP server lives in its event loop
     if (a.nmeaOut) sink_ = std::make_unique<NmeaSink>(*a.nmeaOut);
   }
 
-  /// Every line the hub holds into the session; the rows written and sent.
+  /// Every line the hub holds into the pipeline as one batch; the rows written, recorded and sent.
   void consume(conn::ConnectionHub& hub) {
-    std::optional<UtcUs> received;
-    for (const conn::ReceivedLine& l : hub.take()) {
-      if (l.receivedUtc) received = l.receivedUtc;
-      if (l.role == conn::Role::Radar) {
-        session_.radar(l.line, l.receivedUtc);
-        ++radarLines_;
-      } else {
-        session_.nmea(l.line, l.receivedUtc, l.source);
-        ++lines_;
-        if (sink_ && a_.nmeaOutAis) sink_->write(nmea_.ais(l.line));
-      }
+    std::vector<files::InputLine> lines;
+    for (conn::ReceivedLine& l : hub.take()) {
+      const bool radar = l.role == conn::Role::Radar;
+      if (!radar && sink_ && a_.nmeaOutAis) sink_->write(nmea_.ais(l.line));
+      lines.push_back({std::move(l.source), std::move(l.line), l.receivedUtc, radar});
     }
-    const sim::LiveWatch::Taken taken = watch_.absorb(session_, received);
-    send(writer_.append(session_, taken.ais, watch_));
+    send(run_.batch(lines, wallNow()));
   }
+  /// The recorder's commits on the wall clock while the input is silent.
+  void tick() { run_.tick(wallNow()); }
 
   void printStatus(const conn::ConnectionHub& hub) const {
+    const files::LiveOutputWriter& w = run_.writer();
     std::fprintf(stderr,
                  "live: %ld lines, %ld radar lines, %ld own-ship rows, %ld track rows, %ld AIS messages, "
                  "%zu AIS targets, %zu alerts",
-                 lines_, radarLines_, writer_.ownRows(), writer_.trackRows(), writer_.aisRows(),
-                 watch_.aisTable().size(), watch_.alerts().alerts().size());
+                 run_.lines(), run_.radarLines(), w.ownRows(), w.trackRows(), w.aisRows(),
+                 run_.watch().aisTable().size(), run_.watch().alerts().alerts().size());
+    if (recorder_)
+      std::fprintf(stderr, ", recorded %lld lines (%lld committed)",
+                   static_cast<long long>(recorder_->lines()),
+                   static_cast<long long>(recorder_->committedLines()));
     for (const conn::SourceStatus& s : hub.status())
       std::fprintf(stderr, "; %s %s %llu lines", s.name.c_str(), conn::stateName(s.state),
                    static_cast<unsigned long long>(s.lines));
@@ -123,17 +150,22 @@ class LiveEngine {
   /// After the hub stopped: its last lines, the session's last rows, summary.json, the account.
   void finish(conn::ConnectionHub& hub, const std::string& out) {
     consume(hub);
-    session_.finish();
-    const sim::LiveWatch::Taken taken = watch_.absorb(session_, std::nullopt);
-    send(writer_.finish(session_, taken.ais, watch_, "live"));
-    for (const auto& w : session_.result().warnings)
+    send(run_.finish("live", wallNow()));
+    for (const auto& w : run_.session().result().warnings)
       std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
+    const files::LiveOutputWriter& w = run_.writer();
     if (wantsTable(a_.output))
       std::printf(
           "Reckoner live: %ld lines, %ld radar lines; wrote %ld own-ship rows, %ld track rows, %ld AIS "
           "messages, %ld alert changes to %s\n",
-          lines_, radarLines_, writer_.ownRows(), writer_.trackRows(), writer_.aisRows(), writer_.alertRows(),
+          run_.lines(), run_.radarLines(), w.ownRows(), w.trackRows(), w.aisRows(), w.alertRows(),
           out.c_str());
+    if (recorder_ && wantsTable(a_.output))
+      std::printf(
+          "  recorded %lld lines in %lld batches to %s (%lld commits, %lld syncs, %lld rows pruned)\n",
+          static_cast<long long>(recorder_->lines()), static_cast<long long>(recorder_->batches()),
+          recorder_->path().c_str(), static_cast<long long>(recorder_->commits()),
+          static_cast<long long>(recorder_->syncs()), static_cast<long long>(recorder_->prunedRows()));
     if (sink_) {
       const std::string account = sink_->finish();
       if (wantsTable(a_.output)) std::printf("  sent %s\n", account.c_str());
@@ -141,14 +173,6 @@ class LiveEngine {
   }
 
  private:
-  /// The alert limits of the settings (their tracker's CPA/TCPA for radar tracks and AIS targets alike).
-  static sim::LiveWatchSettings watchSettings(const sim::LiveOptions& o) {
-    sim::LiveWatchSettings w;
-    w.alerts = sim::alertFeedSettingsFor(o.replay.settings);
-    w.ais.cpaLimitM = w.alerts.cpa.cpaM;
-    w.ais.tcpaLimitS = w.alerts.cpa.tcpaS;
-    return w;
-  }
   static sim::NmeaOutputOptions nmeaOptions(const LiveArgs& a) {
     sim::NmeaOutputOptions o;
     o.ais = a.nmeaOutAis;
@@ -156,22 +180,22 @@ class LiveEngine {
   }
   void send(const files::LiveBatch& batch) {
     if (!sink_) return;
-    if (session_.started()) {
-      const geo::GeoPoint o = session_.result().origin;
+    const sim::LiveSession& session = run_.session();
+    if (session.started()) {
+      const geo::GeoPoint o = session.result().origin;
       sink_->write(
           sim::rowsNmea(nmea_, batch.own, batch.tracks, batch.trackUtc, geo::LocalFrame(o.latDeg, o.lonDeg)));
     }
-    if (!a_.noNmeaOutAlerts && watch_.zeroUtc() != 0)
-      sink_->write(nmea_.alerts(watch_.nowUs(), watch_.nowUtc(), watch_.alerts().alerts()));
+    const sim::LiveWatch& watch = run_.watch();
+    if (!a_.noNmeaOutAlerts && watch.zeroUtc() != 0)
+      sink_->write(nmea_.alerts(watch.nowUs(), watch.nowUtc(), watch.alerts().alerts()));
   }
 
   const LiveArgs& a_;
-  sim::LiveSession session_;
-  sim::LiveWatch watch_;
-  files::LiveOutputWriter writer_;
+  std::unique_ptr<files::VoyageRecorder> recorder_;
+  files::LiveRun run_;
   sim::NmeaOutput nmea_;
   std::unique_ptr<NmeaSink> sink_;
-  long lines_ = 0, radarLines_ = 0;
 };
 
 int liveCommand(const LiveArgs& a) {
@@ -183,13 +207,14 @@ int liveCommand(const LiveArgs& a) {
   lo.radar =
       std::any_of(sources.begin(), sources.end(), [](const auto& c) { return c.role == conn::Role::Radar; });
   lo.frames = true;  // the watch's alerts read them
+  if (a.recordMaxHours && !a.record) throw UsageError("--record-max-hours needs --record FILE.sqlite");
   const std::string out = prepareOutDir(a.output);
 
   int argc = 1;
   char arg0[] = "reckoner-cli";
   char* argv[] = {arg0, nullptr};
   QCoreApplication app(argc, argv);
-  LiveEngine engine(a, lo, out);
+  LiveEngine engine(a, lo, out, sources);
   if (::pipe(stopPipe) != 0) throw std::runtime_error("cannot make the signal pipe");
   std::signal(SIGINT, onStopSignal);
   std::signal(SIGTERM, onStopSignal);
@@ -209,6 +234,18 @@ int liveCommand(const LiveArgs& a) {
   });
   QTimer status;
   QObject::connect(&status, &QTimer::timeout, &app, [&] { engine.printStatus(hub); });
+  // The record's commits on the wall clock (docs/recorder.md): a pending insert waits at most 0.5 s
+  // and this tick, so a silent input still has its last lines committed.
+  QTimer recordTick;
+  QObject::connect(&recordTick, &QTimer::timeout, &app, [&] {
+    try {
+      engine.tick();
+    } catch (const std::exception& e) {
+      lastError = e.what();
+      app.quit();
+    }
+  });
+  if (a.record) recordTick.start(kRecordTickMs);
   // A run of files alone ends when every file has been played to its end.
   const bool filesOnly =
       std::all_of(sources.begin(), sources.end(), [](const auto& c) { return c.kind == conn::Kind::File; });
@@ -256,6 +293,12 @@ void addLiveCommands(CLI::App& root, Commands& out) {
   addReal(*app, "status-interval", a->statusIntervalS, 0.0, 3600.0, "S",
           "a status line on stderr this often, seconds (0: none)");
   addNmeaOut(*app, a->nmeaOut);
+  addText(*app, "record", a->record, "FILE.sqlite",
+          "record every input line, the estimates and the alerts in this voyage record (a new file; "
+          "docs/recorder.md)");
+  addReal(*app, "record-max-hours", a->recordMaxHours, 0.01, 1e6, "H",
+          "keep full-rate estimates and track rows this many hours back, older ones one a minute; "
+          "without it all are kept");
   app->add_flag("--nmea-out-ais", a->nmeaOutAis, "pass the AIS sentences received through to --nmea-out");
   app->add_flag("--no-nmea-out-alerts", a->noNmeaOutAlerts,
                 "send no alert sentences (ALR, ALF, ALC) to --nmea-out, only own ship and tracks");

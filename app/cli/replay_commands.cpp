@@ -1,9 +1,11 @@
 // replay --nmea FILE and export SCENARIO: recorded NMEA (and radar plots) through the DRKF and the
-// trackers, and a simulated run written as such a recording.
+// trackers, and a simulated run written as such a recording; replay --recording FILE.sqlite: a voyage
+// record of `live --record` through the live run's own pipeline again (docs/recorder.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "cli/cli_options.h"
@@ -12,7 +14,10 @@
 #include "cli/replay_settings.h"
 #include "common/angles.h"
 #include "common/time.h"
+#include "files/live_run.h"
 #include "files/track_output.h"
+#include "files/voyage_compare.h"
+#include "files/voyage_record.h"
 #include "io/error_line.h"
 #include "io/iso8601.h"
 #include "io/text_file.h"
@@ -26,7 +31,7 @@ namespace {
 
 // ---- replay --------------------------------------------------------------------------------------
 struct ReplayArgs {
-  std::optional<std::string> nmea, radar, nmeaOut;
+  std::optional<std::string> nmea, radar, nmeaOut, recording;
   ReplaySettings settings;
   OutputArgs output;
 };
@@ -86,8 +91,64 @@ void printReplay(const sim::ReplayResult& r, const ReplayArgs& a, const std::str
               radar ? (", " + out + "/targets.csv").c_str() : "", out.c_str());
 }
 
+void printPlayback(const files::VoyageRecord& rec, const files::LiveRun& run, long batches,
+                   const files::RecordComparison& c, const std::string& out) {
+  const std::optional<UtcUs> end = rec.endUtc();
+  std::printf("Reckoner replay of the voyage record %s (%s %s, recorded from %s %s%s)\n", rec.path().c_str(),
+              rec.meta().count("program") ? rec.meta().at("program").c_str() : "?",
+              rec.programVersion().c_str(), io::formatIso8601(rec.startUtc()).c_str(), end ? "to " : "",
+              end ? io::formatIso8601(*end).c_str() : "to a stop without an end (killed)");
+  const files::LiveOutputWriter& w = run.writer();
+  std::printf(
+      "  %ld lines, %ld radar lines in %ld batches; wrote %ld own-ship rows, %ld track rows, %ld AIS "
+      "messages, "
+      "%ld alert changes to %s\n",
+      run.lines(), run.radarLines(), batches, w.ownRows(), w.trackRows(), w.aisRows(), w.alertRows(),
+      out.c_str());
+  std::printf(
+      "  playback against the record: own-ship rows %ld equal, %ld different, %ld not recorded, %ld not "
+      "replayed; track rows %ld equal, %ld different, %ld not recorded, %ld not replayed; alert entries %ld "
+      "equal, %ld different, %ld not recorded, %ld not replayed\n",
+      c.ownEqual, c.ownDifferent, c.ownNotRecorded, c.ownNotReplayed, c.tracksEqual, c.tracksDifferent,
+      c.tracksNotRecorded, c.tracksNotReplayed, c.alertsEqual, c.alertsDifferent, c.alertsNotRecorded,
+      c.alertsNotReplayed);
+}
+
+/// replay --recording: the recorded batches through files::LiveRun with the recorded settings, the
+/// live run's files written again and compared with the recorded estimates.
+int replayRecording(const ReplayArgs& a) {
+  if (a.nmea || a.radar) throw UsageError("--recording cannot be given with --nmea or --radar");
+  if (a.nmeaOut) throw UsageError("--nmea-out is not available with --recording");
+  if (anyGiven(a.settings))
+    throw UsageError(
+        "--recording replays with the settings it recorded: --config, --profile, --date, "
+        "--variation, --max-gap, --adaptive-gnss and --assume-association cannot be given with it");
+  const files::VoyageRecord rec(*a.recording);
+  const sim::LiveOptions options = rec.liveOptions();
+  const std::string out = prepareOutDir(a.output);
+  files::LiveRun run(options, out);
+  files::RecordComparer compare(rec);
+  long batches = 0;
+  rec.forEachBatch([&](std::int64_t, std::span<const files::InputLine> lines) {
+    compare.add(run.batch(lines, 0), run.session().result().targetLabels);
+    ++batches;
+  });
+  compare.add(run.finish(rec.inputName(), 0), run.session().result().targetLabels);
+  const files::RecordComparison c = compare.finish();
+  for (const auto& w : run.session().result().warnings)
+    std::fprintf(stderr, "reckoner-cli: warning: %s\n", w.c_str());
+  if (!c.equal())
+    std::fprintf(
+        stderr, "reckoner-cli: warning: %s\n",
+        io::oneLine(rec.path() + ": the replay differs from the record: " + c.firstDifference).c_str());
+  printSummary(a.output, io::readTextFile(out + "/summary.json"));
+  if (wantsTable(a.output)) printPlayback(rec, run, batches, c, out);
+  return 0;
+}
+
 int replayCommand(const ReplayArgs& a) {
-  if (!a.nmea) throw UsageError("--nmea FILE is required");
+  if (a.recording) return replayRecording(a);
+  if (!a.nmea) throw UsageError("--nmea FILE or --recording FILE.sqlite is required");
   const sim::ReplayOptions o = replayOptions(a.settings);
   std::unique_ptr<NmeaSink> sink;
   if (a.nmeaOut) sink = std::make_unique<NmeaSink>(*a.nmeaOut);
@@ -117,9 +178,14 @@ void addReplay(CLI::App& root, Commands& out) {
       root.add_subcommand("replay", "recorded NMEA 0183 (and radar plots) through the DRKF and the trackers");
   addText(*app, "nmea", a->nmea, "FILE", "the NMEA 0183 log, required");
   addText(*app, "radar", a->radar, "FILE.csv", "radar plots (docs/outputs.md, radar.csv)");
+  addText(*app, "recording", a->recording, "FILE.sqlite",
+          "a voyage record of live --record instead of --nmea: its lines through the live run again, with "
+          "its settings; the live run's files, and its estimates compared (docs/recorder.md)");
   addReplaySettings(*app, a->settings);
   addNmeaOut(*app, a->nmeaOut);
-  addOutputOptions(*app, a->output, Summary::Json, "ownship.csv, summary.json, targets.csv with --radar");
+  addOutputOptions(
+      *app, a->output, Summary::Json,
+      "ownship.csv, summary.json, targets.csv with --radar; with --recording also ais.csv, alerts.csv");
   out.push_back(
       {app, [a] { return replayCommand(*a); }, "replay takes no positional arguments (use --nmea FILE)"});
 }

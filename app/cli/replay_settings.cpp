@@ -34,6 +34,11 @@ void addReplaySettings(CLI::App& app, ReplaySettings& s) {
             "scale the receiver's position noise by a variational-Bayes estimate (default: the settings')");
 }
 
+bool anyGiven(const ReplaySettings& s) {
+  return s.config || s.assumeAssociation || s.maxGapS != sim::ReplayOptions{}.maxGapS || s.variationDeg ||
+         s.date || !s.profile.empty() || !s.adaptiveGnss.empty();
+}
+
 sim::ReplayOptions replayOptions(const ReplaySettings& a) {
   sim::ReplayOptions o;
   const auto profile = profileOf(a.profile);

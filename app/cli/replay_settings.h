@@ -22,6 +22,8 @@ struct ReplaySettings {
 };
 
 void addReplaySettings(CLI::App& app, ReplaySettings& s);
+/// True when any of the settings was given on the command line (--max-gap only when not its default).
+bool anyGiven(const ReplaySettings& s);
 /// The engine's options; throws UsageError for a bad --date, InputError for a bad --config file.
 sim::ReplayOptions replayOptions(const ReplaySettings& s);
 

@@ -70,7 +70,9 @@ LiveBatch LiveOutputWriter::append(sim::LiveSession& session, const std::vector<
     aisRows_ += static_cast<long>(ais.size());
     flush(ais_);
   }
-  const std::vector<alerts::AlertLogEntry> log = watch.alerts().takeLog();
+  batch.alerts = watch.alerts().takeLog();
+  batch.alertZeroUtc = watch.zeroUtc();
+  const std::vector<alerts::AlertLogEntry>& log = batch.alerts;
   for (const alerts::AlertLogEntry& e : log) put(alerts_, alertCsvLine(e, watch.zeroUtc()));
   if (!log.empty()) {
     alertRows_ += static_cast<long>(log.size());

@@ -16,7 +16,9 @@ namespace reckoner::files {
 struct LiveBatch {
   std::vector<sim::ReplayOwnRow> own;
   std::vector<sim::TrackRow> tracks;
-  std::vector<UtcUs> trackUtc;  ///< per track row
+  std::vector<UtcUs> trackUtc;                ///< per track row
+  std::vector<alerts::AlertLogEntry> alerts;  ///< the watch's alert log entries written (alerts.csv)
+  UtcUs alertZeroUtc = 0;                     ///< the watch's zero then: an entry's UTC is this + timeUs
 };
 
 class LiveOutputWriter {
@@ -30,7 +32,7 @@ class LiveOutputWriter {
 
   /// Appends what the session produced since the last call (rows taken from it), the AIS messages
   /// decoded since (taken from the session by whoever else reads them) and the watch's alert log since,
-  /// and flushes; returns the own-ship and track rows written.
+  /// and flushes; returns the own-ship and track rows and the alert log entries written.
   LiveBatch append(sim::LiveSession& session, const std::vector<sim::LiveAisMessage>& ais,
                    sim::LiveWatch& watch);
   /// After session.finish() and the watch's last absorb: the last rows (returned), then summary.json

@@ -1,0 +1,377 @@
+// GIVEN / WHEN / THEN: the voyage record (files/voyage_recorder.h, files/voyage_record.h,
+// docs/recorder.md). A live run's batches recorded and replayed through the same pipeline
+// (files/live_run.h) give the same files byte for byte and the recorded estimates bit for bit; the
+// commit policy leaves at most a second uncommitted; retention keeps one row a minute; every damaged or
+// foreign file is one error naming the file.
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "files/live_run.h"
+#include "files/scenario_json.h"
+#include "files/voyage_compare.h"
+#include "files/voyage_record.h"
+#include "files/voyage_recorder.h"
+#include "io/input_error.h"
+#include "io/iso8601.h"
+#include "io/text_file.h"
+#include "sim/nmea_export.h"
+#include "support/drkf_fixtures.h"
+#include "support/text_lines.h"
+
+using namespace reckoner;
+
+namespace {
+
+const UtcUs kDay = *io::parseIso8601("2026-11-23T00:00:00Z");
+
+/// A simulated run's NMEA and radar plots with real AIS sentences, as the batches a live run takes:
+/// each second's sentences (from its RMC on) in one batch, the plots stamped before that second and one
+/// AIS sentence ahead of them; receive times 0.3 s into each second.
+std::vector<std::vector<files::InputLine>> simulatedBatches(int seconds) {
+  sim::Scenario s = test::builtinScenario("ttkf-matched");
+  s.durationUs = seconds * kMicrosPerSecond;
+  const sim::ExportedRun e = sim::exportRun(s, 3, *io::parseIso8601("2026-11-23T10:00:00Z"));
+  const auto radar = test::splitLines(e.radarCsv, test::EmptyLines::Drop);
+  std::vector<std::string> ais;
+  for (auto& l : test::splitLines(io::readTextFile(RECKONER_SHARED_DIR "/data/ais/gpsd-sample.aivdm")))
+    if (l.starts_with('!')) ais.push_back(l);
+  std::vector<std::vector<files::InputLine>> batches;
+  std::size_t r = 0, a = 0;
+  UtcUs rx = 0;
+  for (const std::string& l : test::splitLines(e.nmea, test::EmptyLines::Drop)) {
+    if (l.starts_with("$GPRMC,")) {
+      const int hh = std::stoi(l.substr(7, 2)), mm = std::stoi(l.substr(9, 2)),
+                ss = std::stoi(l.substr(11, 2));
+      const UtcUs t = kDay + ((hh * 60 + mm) * 60 + ss) * kMicrosPerSecond;
+      rx = t + 300'000;
+      batches.emplace_back();
+      if (a < ais.size()) batches.back().push_back({"nmea1", ais[a++], rx, false});
+      for (; r < radar.size(); ++r) {
+        const auto u = io::parseIso8601(radar[r].substr(0, radar[r].find(',')));
+        if (u && *u >= t) break;
+        batches.back().push_back({"radar1", radar[r], rx, true});
+      }
+    }
+    if (batches.empty()) batches.emplace_back();
+    batches.back().push_back({"nmea1", l, rx, false});
+  }
+  return batches;
+}
+
+sim::LiveOptions radarOptions() {
+  sim::LiveOptions lo;
+  lo.replay.settings = test::builtinScenario("ttkf-matched");
+  lo.replay.settingsName = "builtin:ttkf-matched";
+  lo.replay.originFromSettings = true;
+  lo.reorderHorizonS = 1.0;
+  lo.radar = true;
+  lo.frames = true;
+  return lo;
+}
+
+files::RecorderSettings recorderSettings(const sim::LiveOptions& lo) {
+  files::RecorderSettings s;
+  s.program = "tst_voyage_record";
+  s.programVersion = "0";
+  s.options = lo;
+  s.sources = {{0, "nmea1", "nmea", "udp://:10110?name=nmea1"},
+               {0, "radar1", "radar", "udp://:2000?role=radar"}};
+  return s;
+}
+
+/// Runs SQL on a file with SQLite itself (to damage a record as another program would).
+void sql(const std::string& path, const std::string& statement) {
+  sqlite3* db = nullptr;
+  QCOMPARE(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  char* error = nullptr;
+  const int rc = sqlite3_exec(db, statement.c_str(), nullptr, nullptr, &error);
+  const std::string why = error ? error : "";
+  sqlite3_free(error);
+  sqlite3_close(db);
+  QVERIFY2(rc == SQLITE_OK, why.c_str());
+}
+
+/// The error opening (and reading all of) path gives; empty when there is none.
+std::string errorOf(const std::string& path) {
+  try {
+    const files::VoyageRecord rec(path);
+    (void)rec.liveOptions();
+    rec.forEachBatch([](std::int64_t, std::span<const files::InputLine>) {});
+    (void)rec.estimates(INT64_MIN, INT64_MAX);
+    (void)rec.tracks(INT64_MIN, INT64_MAX);
+    (void)rec.alerts();
+    return {};
+  } catch (const io::InputError& e) {
+    return e.what();
+  }
+}
+
+void copyFile(const std::string& from, const std::string& to) {
+  std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing);
+}
+
+/// A synthetic own-ship row at utc (1 s steps), for the retention test.
+sim::ReplayOwnRow ownRowAt(UtcUs utc) {
+  sim::ReplayOwnRow r;
+  r.utcUs = utc;
+  r.timeUs = utc - kDay;
+  r.estimate.xM = toSeconds(r.timeUs);
+  r.sensors = "gps";
+  return r;
+}
+
+}  // namespace
+
+class TestVoyageRecord : public QObject {
+  Q_OBJECT
+
+  QTemporaryDir dir_;
+  std::string good_;  ///< a finished record, made by the first test, damaged by the last
+
+ private slots:
+  void initTestCase() {
+    if (!QFile::exists(RECKONER_SHARED_DIR "/data/ais/gpsd-sample.aivdm"))
+      QSKIP("../shared/data/ais is absent");
+    QVERIFY(dir_.isValid());
+  }
+
+  void aRecordedRunReplaysToTheSameFilesAndEstimates() {
+    // GIVEN a simulated run with radar plots and real AIS sentences, taken in 300 batches by a live
+    // run that records them
+    const std::string d = dir_.path().toStdString();
+    good_ = d + "/run.sqlite";
+    const sim::LiveOptions lo = radarOptions();
+    const auto batches = simulatedBatches(300);
+    std::filesystem::create_directories(d + "/live");
+    std::filesystem::create_directories(d + "/replay");
+    std::vector<sim::ReplayOwnRow> own;
+    std::size_t lines = 0, tracks = 0, alerts = 0;
+    {
+      files::VoyageRecorder recorder(good_, recorderSettings(lo), kDay);
+      files::LiveRun run(lo, d + "/live", &recorder);
+      for (const auto& b : batches) {
+        const files::LiveBatch out = run.batch(b, b.front().receivedUtc);
+        own.insert(own.end(), out.own.begin(), out.own.end());
+        tracks += out.tracks.size();
+        alerts += out.alerts.size();
+        lines += b.size();
+      }
+      recorder.operatorAction({0, kDay + 5, kDay + 6, "acknowledge", "alert:LOST AIS TARGET:1", ""});
+      recorder.chart(
+          {kDay + 7, std::nullopt, "loaded", "US5WA22M", "12", "3", "20250101", "/charts/US5WA22M.000"});
+      const files::LiveBatch last = run.finish("live", batches.back().front().receivedUtc + 1);
+      own.insert(own.end(), last.own.begin(), last.own.end());
+      tracks += last.tracks.size();
+      alerts += last.alerts.size();
+      QCOMPARE(recorder.batches(), static_cast<std::int64_t>(batches.size()));
+      qInfo("%zu lines in %zu batches, %zu own-ship rows, %zu track rows, %zu alert entries; %lld commits",
+            lines, batches.size(), own.size(), tracks, alerts, static_cast<long long>(recorder.commits()));
+    }
+    QVERIFY(own.size() > 250 && tracks > 100 && alerts > 0);
+    // WHEN the record is read
+    const files::VoyageRecord rec(good_);
+    // THEN it holds the inputs in order, the settings, the estimates bit for bit, the alerts
+    QCOMPARE(rec.meta().at("schema_version"), std::string("1"));
+    QVERIFY(rec.endUtc().has_value());
+    QCOMPARE(rec.inputCount(), static_cast<std::int64_t>(lines));
+    QCOMPARE(rec.sources().size(), std::size_t{2});
+    QCOMPARE(rec.sources()[1].spec, std::string("udp://:2000?role=radar"));
+    const sim::LiveOptions back = rec.liveOptions();
+    QCOMPARE(files::writeScenario(back.replay.settings), files::writeScenario(lo.replay.settings));
+    QCOMPARE(back.radar, true);
+    QCOMPARE(back.reorderHorizonS, 1.0);
+    const std::vector<sim::ReplayOwnRow> recorded = rec.estimates(INT64_MIN, INT64_MAX);
+    QCOMPARE(recorded.size(), own.size());
+    for (std::size_t k = 0; k < own.size(); ++k) {
+      QCOMPARE(recorded[k].utcUs, own[k].utcUs);
+      QCOMPARE(recorded[k].estimate.xM, own[k].estimate.xM);
+      QCOMPARE(recorded[k].estimate.sdVyMps, own[k].estimate.sdVyMps);
+      QCOMPARE(recorded[k].calibration.sdLogOffsetMps, own[k].calibration.sdLogOffsetMps);
+      QCOMPARE(recorded[k].sensors, own[k].sensors);
+    }
+    QCOMPARE(rec.tracks(INT64_MIN, INT64_MAX).size(), tracks);
+    QCOMPARE(rec.alerts().size(), alerts);
+    QCOMPARE(rec.operatorActions().size(), std::size_t{1});
+    QCOMPARE(rec.operatorActions()[0].afterBatch, static_cast<std::int64_t>(batches.size()));
+    QCOMPARE(rec.charts().at(0).name, std::string("US5WA22M"));
+    // AND a playback timeline can seek: the estimate nearest a time, the input at a time, pages of inputs
+    const sim::ReplayOwnRow mid = own[own.size() / 2];
+    QCOMPARE(rec.estimateNear(mid.utcUs + 400'000)->utcUs, mid.utcUs);
+    const std::int64_t seq = rec.inputSeqAt(batches[100].front().receivedUtc);
+    const std::vector<files::RecordedInput> page = rec.inputs(seq - 1, 3);
+    QCOMPARE(page.size(), std::size_t{3});
+    QCOMPARE(page[0].line, batches[100].front().line);
+    QCOMPARE(page[0].batch, std::int64_t{101});
+    QCOMPARE(rec.inputSeqAt(kDay + 86400 * kMicrosPerSecond), std::int64_t{0});
+
+    // WHEN it is replayed through the same pipeline with the recorded settings, batch by batch
+    files::LiveRun replay(rec.liveOptions(), d + "/replay");
+    files::RecordComparer compare(rec);
+    std::size_t replayedBatches = 0;
+    rec.forEachBatch([&](std::int64_t, std::span<const files::InputLine> b) {
+      compare.add(replay.batch(b, 0), replay.session().result().targetLabels);
+      ++replayedBatches;
+    });
+    compare.add(replay.finish(rec.inputName(), 0), replay.session().result().targetLabels);
+    const files::RecordComparison c = compare.finish();
+    // THEN every recorded estimate, track row and alert entry is computed again, exactly
+    QVERIFY2(c.equal(), c.firstDifference.c_str());
+    QCOMPARE(replayedBatches, batches.size());
+    QCOMPARE(c.ownEqual, static_cast<long>(own.size()));
+    QCOMPARE(c.tracksEqual, static_cast<long>(tracks));
+    QCOMPARE(c.alertsEqual, static_cast<long>(alerts));
+    QCOMPARE(c.ownNotRecorded + c.tracksNotRecorded + c.alertsNotRecorded, 0L);
+    // AND the files are the live run's, byte for byte
+    for (const char* f : {"ownship.csv", "targets.csv", "ais.csv", "alerts.csv", "summary.json"})
+      QVERIFY2(io::readTextFile(d + "/live/" + f) == io::readTextFile(d + "/replay/" + f), f);
+  }
+
+  void commitsKeepAtMostTheLastSecondPending() {
+    // GIVEN a recorder on a made-up wall clock and a reader of the same file beside it
+    const std::string path = dir_.path().toStdString() + "/commits.sqlite";
+    files::VoyageRecorder rec(path, recorderSettings(sim::LiveOptions{}), kDay);
+    const auto committed = [&path] { return files::VoyageRecord(path).inputCount(); };
+    const auto line = [](UtcUs rx) { return std::vector<files::InputLine>{{"nmea1", "$GPZDA", rx, false}}; };
+    const UtcUs ms = 1000;
+    // WHEN lines come at real time, one each 200 ms of wall and stream time
+    rec.batch(line(kDay), {}, {}, kDay, kDay);
+    rec.batch(line(kDay + 200 * ms), {}, {}, kDay + 200 * ms, kDay + 200 * ms);
+    // THEN nothing is committed before the first pending line is 0.5 s old on the wall clock ...
+    QCOMPARE(committed(), std::int64_t{0});
+    rec.tick(kDay + 400 * ms);
+    QCOMPARE(committed(), std::int64_t{0});
+    // ... and then the timer's tick commits both, with no new line needed
+    rec.tick(kDay + 500 * ms);
+    QCOMPARE(committed(), std::int64_t{2});
+    // WHEN a recording is played 100 times faster than real time (10 s of stream per 0.1 s of wall)
+    for (int k = 1; k <= 100; ++k) {
+      const UtcUs stream = kDay + 500 * ms + k * 100 * ms, wall = kDay + 500 * ms + k * ms;
+      rec.batch(line(wall), {}, {}, stream, wall);
+      // THEN at most a second of stream time is ever pending
+      QVERIFY(rec.lines() - committed() <= 10);
+    }
+    // AND the log was made durable at most once per wall second (here: the creation's, one more)
+    QVERIFY(rec.syncs() <= 1);
+    rec.tick(kDay + 2000 * ms);
+    QCOMPARE(committed(), rec.lines());
+    QCOMPARE(rec.syncs(), std::int64_t{1});
+  }
+
+  void retentionKeepsOneRowAMinuteBeyondMaxHours() {
+    // GIVEN a recorder keeping full-rate estimates for 0.1 h (6 min)
+    const std::string path = dir_.path().toStdString() + "/retention.sqlite";
+    files::RecorderSettings s = recorderSettings(sim::LiveOptions{});
+    s.maxHours = 0.1;
+    files::VoyageRecorder rec(path, s, kDay);
+    // WHEN 30 minutes of own-ship rows at 1 s arrive, a batch a second
+    UtcUs t = kDay;
+    // (played fast: 1 ms of wall time a batch, so the log is synced only every thousand commits)
+    for (int k = 0; k < 1800; ++k, t += kMicrosPerSecond) {
+      files::LiveBatch b;
+      b.own.push_back(ownRowAt(t));
+      rec.batch(std::vector<files::InputLine>{{"nmea1", "$GPRMC", t, false}}, b, {}, t, kDay + k * 1000);
+    }
+    rec.finish({}, {}, kDay + 1800 * 1000);
+    // THEN the last 6 minutes are at full rate (pruning runs once a stream minute, so up to a minute more)
+    const files::VoyageRecord r(path);
+    const UtcUs newest = t - kMicrosPerSecond, cut = newest - 360 * kMicrosPerSecond;
+    const auto recent = r.estimates(cut, newest);
+    QCOMPARE(recent.size(), std::size_t{361});
+    // AND before that one row a minute: the first of each minute (on the minute here)
+    const auto old = r.estimates(INT64_MIN, cut - 60 * kMicrosPerSecond);
+    QVERIFY(old.size() >= 20 && old.size() <= 25);
+    for (const auto& o : old) QCOMPARE((o.utcUs - kDay) % (60 * kMicrosPerSecond), std::int64_t{0});
+    QVERIFY(rec.prunedRows() > 1300);
+    // AND the inputs are all kept
+    QCOMPARE(r.inputCount(), std::int64_t{1800});
+    qInfo("%lld rows pruned; %zu minute rows before the last 7 minutes",
+          static_cast<long long>(rec.prunedRows()), old.size());
+  }
+
+  void badFilesAreOneErrorNamingTheFile_data() {
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("missing") << "missing"
+                             << "cannot open: no such file";
+    QTest::newRow("folder") << "folder"
+                            << "a folder, not a file";
+    QTest::newRow("text") << "text"
+                          << "not a SQLite database";
+    QTest::newRow("empty") << "empty"
+                           << "not a Reckoner voyage record: no table 'meta'";
+    QTest::newRow("other database") << "other"
+                                    << "not a Reckoner voyage record: no table 'meta'";
+    QTest::newRow("newer schema") << "version"
+                                  << "meta.schema_version: schema version '2', this program reads version 1";
+    QTest::newRow("no version") << "no-version"
+                                << "meta: no 'schema_version'";
+    QTest::newRow("missing table") << "table"
+                                   << "missing table 'tracks'";
+    QTest::newRow("missing column") << "column"
+                                    << "ownship: missing column 'sd_x_m'";
+    QTest::newRow("bad setting") << "setting"
+                                 << "meta.settings.max_gap_s: not a number: 'soon'";
+    QTest::newRow("bad scenario") << "scenario"
+                                  << "meta.settings.scenario: scenario:";
+    QTest::newRow("truncated") << "truncated"
+                               << "";
+    QTest::newRow("overwritten") << "overwritten"
+                                 << "";
+  }
+  void badFilesAreOneErrorNamingTheFile() {
+    QFETCH(QString, kind);
+    QFETCH(QString, expected);
+    if (good_.empty()) QSKIP("needs the record of the first test");
+    const std::string d = dir_.path().toStdString(), path = d + "/bad-" + kind.toStdString() + ".sqlite";
+    const std::string k = kind.toStdString();
+    if (k == "folder") std::filesystem::create_directory(path);
+    if (k == "text") io::writeTextFile(path, "$GPRMC,not,a,database\n");
+    if (k == "empty") io::writeTextFile(path, "");
+    if (k == "other") sql(path, "CREATE TABLE t(x); INSERT INTO t VALUES(1)");
+    const bool copy = k == "version" || k == "no-version" || k == "table" || k == "column" ||
+                      k == "setting" || k == "scenario" || k == "truncated" || k == "overwritten";
+    if (copy) copyFile(good_, path);
+    if (k == "version") sql(path, "UPDATE meta SET value = '2' WHERE key = 'schema_version'");
+    if (k == "no-version") sql(path, "DELETE FROM meta WHERE key = 'schema_version'");
+    if (k == "table") sql(path, "DROP TABLE tracks");
+    if (k == "column") sql(path, "ALTER TABLE ownship DROP COLUMN sd_x_m");
+    if (k == "setting") sql(path, "UPDATE meta SET value = 'soon' WHERE key = 'settings.max_gap_s'");
+    if (k == "scenario")
+      sql(path, "UPDATE meta SET value = '{\"format\": 1}' WHERE key = 'settings.scenario'");
+    if (k == "truncated") std::filesystem::resize_file(path, std::filesystem::file_size(path) / 3);
+    if (k == "overwritten") {
+      std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+      f.seekp(static_cast<std::streamoff>(std::filesystem::file_size(path) / 2));
+      const std::string junk(20000, '\x5a');
+      f.write(junk.data(), static_cast<std::streamsize>(junk.size()));
+    }
+    // WHEN it is opened and read through THEN one error naming the file, never a crash
+    const std::string error = errorOf(path);
+    qInfo("%s: %s", qPrintable(kind), error.c_str());
+    QVERIFY2(!error.empty(), "no error");
+    QVERIFY2(error.starts_with(path + ": "), error.c_str());
+    QVERIFY2(error.find(expected.toStdString()) != std::string::npos, error.c_str());
+    QVERIFY(error.find('\n') == std::string::npos);
+  }
+
+  void aRecordIsNeverWrittenOver() {
+    if (good_.empty()) QSKIP("needs the record of the first test");
+    try {
+      files::VoyageRecorder again(good_, recorderSettings(sim::LiveOptions{}), kDay);
+      QFAIL("an existing record was opened for writing");
+    } catch (const io::InputError& e) {
+      QVERIFY2(std::string(e.what()).find("exists already") != std::string::npos, e.what());
+    }
+  }
+};
+
+QTEST_GUILESS_MAIN(TestVoyageRecord)
+#include "tst_voyage_record.moc"

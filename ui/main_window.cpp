@@ -51,7 +51,7 @@ constexpr int kRepaintMs = 33;  // <= 30 Hz
 constexpr int kPlotMs = 500;
 constexpr int kMaxRecent = 8;
 const QString kBuiltinPrefix = QStringLiteral("builtin:");
-constexpr int kDockStateVersion = 4;  // 4: the AIS and data monitor docks
+constexpr int kDockStateVersion = 5;  // 4: the AIS and data monitor docks; 5: the route dock
 
 QString clockText(double s) {
   const int total = static_cast<int>(std::floor(s));
@@ -553,6 +553,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
       return;
     }
   }
+  if (!confirmUnsavedRoutes()) return event->ignore();  // routes edited and not saved: asks
   writeSettings();
   QMainWindow::closeEvent(event);
 }

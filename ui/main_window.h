@@ -18,6 +18,7 @@
 #include "ui/bridge/simulation_controller.h"
 #include "ui/bridge/worker_thread.h"
 #include "ui/map/ecdis_view.h"
+#include "ui/route_check_cache.h"
 
 QT_BEGIN_NAMESPACE
 class QActionGroup;
@@ -45,6 +46,9 @@ class MessageBar;
 class ChartListPanel;
 class ErrorPlots;
 class OwnShipPanel;
+class RouteLibrary;
+class RoutePanel;
+struct RouteFindingRow;
 class SensorPanel;
 class TargetTableModel;
 
@@ -106,6 +110,26 @@ class MainWindow : public QMainWindow {
   /// Live > NMEA output: where the live run's own ship, tracks and alerts go as NMEA 0183 (a
   /// --nmea-out destination; empty: nowhere), remembered; false with a message naming what is wrong.
   bool setLiveNmeaOut(const QString& spec);
+
+  /// Routes (docs/gui.md "Routes"; main_window_routes.cpp). The library holds the routes, the one shown
+  /// and the active one: connect to routeLibrary()->activeRouteChanged(const geo::Route&) to follow
+  /// the active route (an empty route: none), or read routeLibrary()->activeRoute().
+  [[nodiscard]] RouteLibrary* routeLibrary() const { return routes_; }
+  [[nodiscard]] RoutePanel* routePanel() const { return routePanel_; }
+  /// Route > Edit route (with a new route when none is shown); Esc on the chart ends it.
+  void setRouteEditing(bool on);
+  /// Route > Import: adds an RTZ or GPX file to the library; false with a message naming the file
+  /// and the reason.
+  bool importRoute(const QString& path);
+  /// Route > Save route: the route shown into the library's directory; false with a message.
+  bool saveRoute();
+  /// Route > Check route: the route shown against the open charts with the mariner's safety contour
+  /// and depth, now (it also runs 300 ms after each edit and when the charts or settings change).
+  void checkRoute();
+  [[nodiscard]] const std::vector<charts::RouteFinding>& routeFindings() const { return routeFindings_; }
+  [[nodiscard]] const RouteCheckCache& routeCheckCache() const { return routeCheck_; }
+  /// Whether a route check is waiting for its delay after an edit.
+  [[nodiscard]] bool routeCheckPending() const { return routeCheckTimer_.isActive(); }
 
   // For tests and the benchmark.
   /// The window's connections (Live > Connections), loaded from the settings at start.
@@ -200,6 +224,23 @@ class MainWindow : public QMainWindow {
   void showArrivedCharts(const std::vector<charts::CellPtr>& cells, const QString& failures);
   /// The status bar's chart figures after a render: cells, scale, overscale, render time.
   void showChartStatus(double renderMs);
+  // main_window_routes.cpp: routes.
+  void buildRouteDock();
+  void buildRouteMenu();
+  void connectRoutes();
+  /// The library's current route in the dock and on the chart (with the active one when another).
+  void showCurrentRoute();
+  void applyRouteEdit(const geo::Route& after, const QString& what);
+  void askExportRoute();
+  void askDeleteRoute();
+  [[nodiscard]] std::vector<RouteFindingRow> routeFindingRows(const geo::Route& route) const;
+  /// A finding chosen in the list: the chart centred on it, its feature's pick report.
+  void showRouteFinding(int index);
+  /// A waypoint chosen in the table: selected on the chart, brought on screen when it is off it.
+  void showRouteWaypoint(int index);
+  void stopFollowingOwnShip();
+  /// On closing: routes edited and not saved are saved, left, or the window stays open (asked).
+  [[nodiscard]] bool confirmUnsavedRoutes();
   // main_window_live.cpp: Live mode.
   void buildLive();
   void buildLiveMenu();
@@ -278,6 +319,14 @@ class MainWindow : public QMainWindow {
   WorkerThread<ChartLoadWorker> chartLoad_{QStringLiteral("chart-load")};
   bool chartsLoading_ = false;
   ChartArrival chartArrival_ = ChartArrival::Stay;  ///< of the latest load
+  // Routes.
+  RouteLibrary* routes_ = nullptr;
+  RoutePanel* routePanel_ = nullptr;
+  QAction* routeEditAction_ = nullptr;
+  QAction* routeActivateAction_ = nullptr;
+  QTimer routeCheckTimer_;  ///< the check after an edit (single shot)
+  RouteCheckCache routeCheck_;
+  std::vector<charts::RouteFinding> routeFindings_;
   // Live mode.
   conn::ConnectionHub* hub_ = nullptr;
   ConnectionIndicator* indicator_ = nullptr;

@@ -128,6 +128,7 @@ void MainWindow::buildDocks() {
   pick_->setObjectName(QStringLiteral("pickReport"));
   dock(tr("Pick report"), QStringLiteral("pickDock"), pick_, Qt::BottomDockWidgetArea);
   buildChartDock();
+  buildRouteDock();
   buildLive();
   arrangeDocks();
 }
@@ -138,12 +139,13 @@ void MainWindow::arrangeDocks() {
   // float the docks; the arrangement is remembered (writeSettings).
   const auto d = [this](const char* name) { return findChild<QDockWidget*>(QString::fromLatin1(name)); };
   QDockWidget *own = d("ownShipDock"), *alerts = d("alarmDock");
-  for (const char* name : {"ownShipDock", "sensorDock", "plotDock", "alarmDock", "targetDock", "aisDock",
-                           "pickDock", "chartDock", "monitorDock"})
+  for (const char* name : {"ownShipDock", "sensorDock", "plotDock", "routeDock", "alarmDock", "targetDock",
+                           "aisDock", "pickDock", "chartDock", "monitorDock"})
     addDockWidget(Qt::RightDockWidgetArea, d(name));
   splitDockWidget(own, alerts, Qt::Vertical);
   tabifyDockWidget(own, d("sensorDock"));
   tabifyDockWidget(own, d("plotDock"));
+  tabifyDockWidget(own, d("routeDock"));
   tabifyDockWidget(alerts, d("targetDock"));
   tabifyDockWidget(alerts, d("pickDock"));
   tabifyDockWidget(alerts, d("chartDock"));
@@ -162,6 +164,7 @@ void MainWindow::buildActions() {
   buildHelpMenu();
   buildRadarMenu();
   buildLiveMenu();
+  buildRouteMenu();
 }
 
 void MainWindow::buildFileMenu() {
@@ -409,7 +412,10 @@ QString MainWindow::shortcutsText() {
       "<tr><td>O</td><td>next orientation: north up, course up, head up</td></tr>"
       "<tr><td>M</td><td>true / relative motion</td></tr>"
       "<tr><td>C or R</td><td>centre own ship and follow it (true-motion reset)</td></tr>"
-      "<tr><td>Esc</td><td>cancel adding or steering a target</td></tr>"
+      "<tr><td>Esc</td><td>cancel adding or steering a target; leave route edit</td></tr>"
+      "<tr><td>Ctrl+E</td><td>route edit: click adds, drag moves, right button inserts or deletes</td></tr>"
+      "<tr><td>Ctrl+Z / Ctrl+Shift+Z</td><td>undo / redo the last route edit</td></tr>"
+      "<tr><td>Delete</td><td>in route edit: delete the selected waypoint</td></tr>"
       "<tr><td>Ctrl+O / Ctrl+S / Ctrl+Shift+S</td><td>open / save / save as</td></tr>"
       "<tr><td>Ctrl+M</td><td>mariner settings (contours, safety depth, category)</td></tr>"
       "<tr><td>Ctrl+Q</td><td>quit (asks to save unsaved changes)</td></tr>"

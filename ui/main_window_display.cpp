@@ -18,6 +18,7 @@
 #include "ui/main_window.h"
 #include "ui/map/range_scale.h"
 #include "ui/panels/own_ship_panel.h"
+#include "ui/panels/route_panel.h"
 #include "ui/panels/target_table_model.h"
 
 namespace reckoner::ui {
@@ -257,6 +258,7 @@ void MainWindow::setDisplayUnits(const DisplayUnits& units) {
   view_->setUnits(units);
   model_->setUnits(units);
   ownPanel_->setUnits(units);
+  routePanel_->setUnits(units);
   if (localFrame_ && !history_.empty()) ownPanel_->setFrame(history_.latest(), *localFrame_);
   const std::pair<const char*, bool> checks[] = {{"units_nm", units.distance == DistanceUnit::NauticalMiles},
                                                  {"units_km", units.distance == DistanceUnit::Kilometres},

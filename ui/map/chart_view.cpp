@@ -79,11 +79,13 @@ void ChartView::setCells(std::vector<charts::CellPtr> cells) {
   }
   setUnderCursor(cursorAt_ ? cellsAt(*cursorAt_) : std::vector<charts::CellPtr>{});
   requestRender();
+  emit cellsChanged();
 }
 
 void ChartView::setSettings(const charts::MarinerSettings& settings) {
   settings_ = settings;
   requestRender();
+  emit settingsChanged(settings_);
 }
 
 void ChartView::setView(charts::LatLon centre, double scaleDenominator, double rotationRad) {
@@ -298,7 +300,7 @@ void ChartView::mouseMoveEvent(QMouseEvent* e) {
 
 void ChartView::mouseReleaseEvent(QMouseEvent* e) {
   if (e->button() != Qt::LeftButton || !pressAt_) return;
-  if (!dragged_) {
+  if (!dragged_ && !chartClicked(e->position())) {
     const charts::Viewport v = viewport();
     const charts::ScreenPoint at{e->position().x(), e->position().y()};
     try {

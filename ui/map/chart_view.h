@@ -74,6 +74,9 @@ class ChartView : public QWidget {
   void cellsUnderCursorChanged(const std::vector<reckoner::charts::CellPtr>& cells);
   void picked(const std::vector<reckoner::charts::PickedFeature>& features, reckoner::charts::LatLon where);
   void renderFinished(double milliseconds);
+  /// The open cells were replaced (setCells), or the mariner's settings changed (setSettings).
+  void cellsChanged();
+  void settingsChanged(const reckoner::charts::MarinerSettings& settings);
 
  protected:
   void paintEvent(QPaintEvent* event) override;
@@ -85,6 +88,9 @@ class ChartView : public QWidget {
   void leaveEvent(QEvent* event) override;
   /// Hook for overlays, painted over the chart at every repaint.
   virtual void paintOverlay(QPainter& painter, const charts::Viewport& view);
+  /// Hook for a left click without a drag at widget point `at`: true when a subclass took it (then no
+  /// pick report follows).
+  virtual bool chartClicked(QPointF /*at*/) { return false; }
 
  private:
   /// A cell's coverage rings projected once to Mercator, for the outlines.

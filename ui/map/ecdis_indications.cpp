@@ -140,6 +140,10 @@ QStringList EcdisView::readoutLines() const {
   else if (addTargetFrom_)
     lines << QStringLiteral("New target: move to set its vector (%1 min), click to place, Esc to cancel")
                  .arg(overlay_.vectorMinutes);
+  if (routeOverlay_->editing())
+    lines << QStringLiteral(
+        "ROUTE EDIT: click adds a waypoint, drag moves one, right button inserts, deletes, renames; Esc "
+        "ends");
   return lines;
 }
 

@@ -100,6 +100,10 @@ QColor EcdisView::colour(const char* role) const {
       {"gps", {qRgb(0, 120, 120), qRgb(60, 220, 220), qRgb(40, 120, 120)}},
       {"loran", {qRgb(150, 0, 150), qRgb(230, 110, 230), qRgb(120, 60, 120)}},
       {"seed002", {qRgb(200, 0, 90), qRgb(255, 110, 170), qRgb(150, 50, 90)}},
+      // Routes: S-52's planned route (PLRTE, red-orange) for the active one, the alternate planned
+      // route's orange (APLRT) for one being planned or edited.
+      {"routeActive", {qRgb(225, 60, 20), qRgb(255, 110, 70), qRgb(170, 60, 30)}},
+      {"route", {qRgb(240, 130, 0), qRgb(255, 170, 60), qRgb(160, 100, 30)}},
   };
   for (const Entry& e : kTable)
     if (std::strcmp(e.role, role) == 0) return QColor::fromRgb(e.c[i]);
@@ -110,10 +114,11 @@ void EcdisView::paintOverlay(QPainter& p, const charts::Viewport& view) {
   p.setRenderHint(QPainter::Antialiasing, true);
   labelObstacles_.clear();
   pendingLabels_.clear();
+  if (haveOwnShip() && overlay_.showRadarPicture) paintRadarPicture(p);
+  paintRoute(p);  // over the radar picture, under own ship and the targets
   if (haveOwnShip()) {
     const geo::GridPoint c = ccrpGrid();
     const Local ccrp = localAt(c.xM, c.yM);
-    if (overlay_.showRadarPicture) paintRadarPicture(p);
     paintZones(p);
     paintRings(p, ccrp);
     if (overlay_.showRadarEchoes) paintRadarEchoes(p);

@@ -22,9 +22,10 @@ QString latLonText(double latDeg, double lonDeg) {
 }
 }  // namespace
 
-EcdisView::EcdisView(QWidget* parent) : ChartView(parent) {
+EcdisView::EcdisView(QWidget* parent) : ChartView(parent), routeOverlay_(new RouteOverlay(this)) {
   setFocusPolicy(Qt::StrongFocus);
   setMouseTracking(true);
+  connect(routeOverlay_, &RouteOverlay::changed, this, qOverload<>(&QWidget::update));
 }
 
 void EcdisView::setHistory(const SimHistory* history, const geo::LocalFrame& frame) {
@@ -309,6 +310,11 @@ void EcdisView::mousePressEvent(QMouseEvent* e) {
     update();
     return;
   }
+  if (e->button() == Qt::LeftButton && routeOverlay_->press(e->position(), viewport())) return;
+  if (e->button() == Qt::LeftButton && routeOverlay_->editing()) {  // a click adds a waypoint, a drag pans
+    ChartView::mousePressEvent(e);
+    return;
+  }
   if (e->button() == Qt::LeftButton) {
     if (const auto h = handlePosition(); h && QLineF(*h, e->position()).length() <= kHandleRadiusPx + 3.0) {
       draggingHandle_ = true;
@@ -342,6 +348,7 @@ void EcdisView::mouseMoveEvent(QMouseEvent* e) {
   cursor_ = e->position();
   emit cursorReadout(cursorText(e->position()));
   if (addTargetFrom_) addTargetTo_ = e->position();
+  if (routeOverlay_->move(e->position(), viewport())) return;
   if (draggingHandle_) {
     handleDrag_ = e->position();
     if (trialMode_ && haveOwnShip()) {  // the trial follows the drag
@@ -369,6 +376,7 @@ void EcdisView::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void EcdisView::mouseReleaseEvent(QMouseEvent* e) {
+  if (e->button() == Qt::LeftButton && routeOverlay_->release(e->position(), viewport())) return;
   if (draggingHandle_ && e->button() == Qt::LeftButton) {
     draggingHandle_ = false;
     handleDrag_.reset();
@@ -391,6 +399,10 @@ void EcdisView::mouseReleaseEvent(QMouseEvent* e) {
   ChartView::mouseReleaseEvent(e);
 }
 
+bool EcdisView::chartClicked(QPointF at) {
+  return routeOverlay_->click(at, viewport());
+}
+
 void EcdisView::wheelEvent(QWheelEvent* e) {
   // In relative motion the zoom keeps own ship where it is (it is put back there at every frame).
   const double steps = e->angleDelta().y() / 120.0;
@@ -405,6 +417,7 @@ void EcdisView::wheelEvent(QWheelEvent* e) {
 QMenu* EcdisView::buildContextMenu(QPointF at) {
   auto* menu = new QMenu(this);
   menu->setAttribute(Qt::WA_DeleteOnClose);
+  routeOverlay_->addContextActions(menu, at, viewport());  // in route edit mode: the route's first
   const geo::GridPoint g = widgetToGrid(at);
   menu->addAction(tr("Add target here…"), this,
                   [this, g] {
@@ -484,6 +497,7 @@ void EcdisView::keyPressEvent(QKeyEvent* e) {
     update();
     return;
   }
+  if (routeOverlay_->key(e->key())) return;  // route edit mode: Esc leaves it, Delete a waypoint
   if (e->key() == Qt::Key_Plus || e->key() == Qt::Key_Equal || e->key() == Qt::Key_Minus) {
     stepRange(e->key() == Qt::Key_Minus ? 1 : -1);  // '+' zooms in to a shorter range
     return;

@@ -11,10 +11,13 @@
 // Mouse: drag the handle at the tip of own ship's ordered vector to order course and speed; Ctrl+click
 // steers towards a point; click a target to select it; the right button opens the context menu (add a
 // target by dragging its vector, acquire, cancel a track, EBL/VRM, pick report).
+// The route (route_overlay.h) is drawn under own ship and the targets; in Route edit mode it takes the
+// mouse first (a click adds a waypoint, a drag of one moves it, the context menu inserts and deletes).
 // Keys: left/right alter course 5 deg (1 with Shift), up/down speed 0.5 kn.
 // ecdis_view.cpp holds the state and the input handling, ecdis_motion.cpp the orientation, motion and
 // CCRP, ecdis_paint.cpp the painting of own ship and targets, ecdis_indications.cpp the readouts and
-// indications, ecdis_radar.cpp the radar overlay.
+// indications, ecdis_radar.cpp the radar overlay, ecdis_route.cpp the route (its state and mouse input
+// in RouteOverlay, route_overlay.h).
 #include <QImage>
 #include <QMenu>
 #include <QPainterPath>
@@ -27,6 +30,7 @@
 #include "ui/map/chart_view.h"
 #include "ui/map/ecdis_ais.h"
 #include "ui/map/guard_zones.h"
+#include "ui/map/route_overlay.h"
 
 namespace reckoner::ui {
 
@@ -184,6 +188,9 @@ class EcdisView : public ChartView {
   [[nodiscard]] std::optional<PolarMap> polarMap() const;
   /// The guard zones drawn: being dragged, else just edited (until a frame has them), else the frame's.
   [[nodiscard]] std::vector<track::AcquisitionZone> shownZones() const;
+  /// The route shown, its findings and route editing (route_overlay.h); the view draws it and passes
+  /// it the mouse and keys.
+  [[nodiscard]] RouteOverlay* routeOverlay() const { return routeOverlay_; }
 
  signals:
   /// Helm order from the mouse or keyboard: true heading, speed through the water.
@@ -214,6 +221,7 @@ class EcdisView : public ChartView {
   void contextMenuEvent(QContextMenuEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
+  bool chartClicked(QPointF at) override;
 
  private:
   static constexpr double kHandleRadiusPx = 7.0;
@@ -290,6 +298,14 @@ class EcdisView : public ChartView {
   // ecdis_trial.cpp
   void paintTrial(QPainter& p);
   void paintDangerSectors(QPainter& p, const sim::TrialResult& r, const Local& own);
+  // ecdis_route.cpp
+  void paintRoute(QPainter& p);
+  void paintRouteLegs(QPainter& p, const RouteGeometry& g, const QColor& c, bool dashed);
+  /// The cross-track limits, the turn arcs and the wheel-over lines.
+  void paintRouteMarks(QPainter& p, const RouteGeometry& g, const QColor& c);
+  void paintRouteWaypoints(QPainter& p, const geo::Route& route, const RouteGeometry& g, const QColor& c,
+                           std::optional<std::size_t> selected);
+  void paintRouteFindings(QPainter& p);
   // ecdis_radar.cpp
   void paintRadarPicture(QPainter& p);
   void paintRadarEchoes(QPainter& p);
@@ -344,6 +360,7 @@ class EcdisView : public ChartView {
   // The AIS symbols of the latest table (made again when the frame brings another table).
   std::vector<AisSymbol> aisSymbols_;
   bool trialMode_ = false;
+  RouteOverlay* routeOverlay_ = nullptr;
   std::shared_ptr<const std::vector<track::AisTarget>> aisSymbolsOf_;  // held: never mistaken by address
 };
 

@@ -22,6 +22,7 @@ packages=(
   qt6-base-dev qt6-charts-dev qt6-multimedia-dev libqt6opengl6-dev libxkbcommon-dev qt6-qpa-plugins
   libgdal-dev gdal-bin zlib1g-dev libbenchmark-dev libcli11-dev python3
   libpugixml-dev  # XML of the route files, RTZ and GPX (core/io/rtz.cpp, gpx.cpp; docs/routes.md)
+  libsqlite3-dev  # the voyage record of live --record, an SQLite database (core/files/voyage_record.h; docs/recorder.md)
   gmt-gshhg-low  # GSHHG shorelines (LGPL data), read at run time for the world background (docs/charts.md)
   qt6-serialport-dev libqt6serialport6  # serial sources of connections/ (QSerialPort; docs/connections.md)
   gpsd  # the real gpsd that tests/connections/tst_connection_devices.cpp connects a gpsd source to

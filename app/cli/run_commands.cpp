@@ -5,6 +5,8 @@
 #include <memory>
 #include <string>
 
+#include "charts/route/chart_safety.h"
+#include "charts/s57/s57_loader.h"
 #include "cli/cli_options.h"
 #include "cli/commands.h"
 #include "cli/nmea_out.h"
@@ -64,8 +66,26 @@ struct RunArgs {
   std::string profile;
   std::optional<std::string> nmeaOut;
   std::string date = "2026-01-01";
+  std::optional<std::string> enc;
   OutputArgs output;
 };
+
+/// The charts' answers for the run (the scenario's voyage settings), from --enc; null without it.
+std::shared_ptr<const sim::ChartGuard> chartGuardFor(const sim::Scenario& s,
+                                                     const std::optional<std::string>& enc) {
+  if (!enc) return nullptr;
+  const charts::LoadResult loaded = charts::loadCharts({*enc});
+  for (const auto& f : loaded.failures)
+    std::fprintf(stderr, "reckoner-cli: error: %s: %s\n", f.file.c_str(), f.reason.c_str());
+  if (loaded.cells.empty()) throw UsageError("--enc: no cell loaded from " + *enc);
+  charts::AntiGroundingSettings g;
+  g.safety.safetyContourM = s.voyage.safetyContourM;
+  g.safety.safetyDepthM = s.voyage.safetyDepthM;
+  g.draughtM = s.voyage.draughtM;
+  g.dangerClearanceM = s.voyage.dangerClearanceM;
+  g.halfBeamM = s.voyage.halfBeamM;
+  return std::make_shared<const charts::ChartSafety>(loaded.cells, g);
+}
 
 void printRun(const sim::Scenario& s, const sim::RunResult& run, std::uint64_t seed,
               studies::OwnShipFilter filter, const std::vector<metrics::PhaseStats>& phases,
@@ -104,6 +124,9 @@ int runCommand(const RunArgs& a) {
   const std::string out = prepareOutDir(a.output);
 
   // The DRKF always runs (it feeds the trackers); seed 002's filters beside it when chosen.
+  const std::shared_ptr<const sim::ChartGuard> guard = chartGuardFor(s, a.enc);
+  if (guard && filter != studies::OwnShipFilter::Drkf)
+    throw UsageError("--enc: the look-ahead and grounding run with --own-ship-filter drkf");
   sim::RunResult run;
   if (nmea) {
     sim::RunNmeaOutput sentences(s, *utc0);
@@ -111,9 +134,10 @@ int runCommand(const RunArgs& a) {
         s, seed,
         [&](const sim::SimFrame& f, const sim::OwnShipRow& row, std::span<const sim::TrackRow> tracks) {
           nmea->write(sentences.frame(f, row, tracks));
-        });
+        },
+        guard);
   } else if (filter == studies::OwnShipFilter::Drkf) {
-    run = sim::runScenario(s, seed);
+    run = sim::runScenario(s, seed, sim::FrameObserver{}, guard);
   } else {
     studies::OwnShipFilterRun both = studies::runOwnShipFilters(s, seed);
     run = std::move(both.drkf);
@@ -126,6 +150,9 @@ int runCommand(const RunArgs& a) {
   if (s.radar.fitted) files::writeTargetsCsv(out + "/targets.csv", run.trackRows);
   printSummary(a.output, summary);
   if (wantsTable(a.output)) printRun(s, run, seed, filter, phases, out);
+  if (run.grounded && !a.output.quiet)
+    std::printf("  own ship aground at %.0f s on %s\n", toSeconds(run.grounded->first),
+                run.grounded->second.what.c_str());
   if (nmea) {
     const std::string account = nmea->finish();
     if (wantsTable(a.output)) std::printf("  sent %s\n", account.c_str());
@@ -147,6 +174,8 @@ void addRun(CLI::App& root, Commands& out) {
   addValue(*app, "date", "YYYY-MM-DD",
            "the UTC day the run starts at midnight of, for --nmea-out's times (default 2026-01-01)",
            [p = a.get()](const std::string& t) { p->date = t; });
+  addText(*app, "enc", a->enc, "PATH",
+          "S-57 cells (a .000 file or a folder): the anti-grounding look-ahead and grounding on them");
   addOutputOptions(*app, a->output, Summary::Json, "ownship.csv, summary.json, targets.csv with a radar");
   out.push_back({app, [a] { return runCommand(*a); }, "run needs exactly one SCENARIO"});
 }

@@ -8,7 +8,9 @@ namespace {
 
 // Priorities after the performance standards: the ECDIS's "positioning system failure" is an alarm
 // (MSC.232(82) appendix 5), the radar's CPA/TCPA an alarm and lost target a warning (MSC.192(79)),
-// capacity a caution. docs/alerts.md gives the reasons for the rest.
+// capacity a caution; the route monitoring's crossing of the safety contour and deviation from route
+// alarms, approach to a waypoint a warning (MSC.232(82) appendix 5). docs/alerts.md gives the reasons
+// for the rest.
 constexpr std::array<AlertKindTraits, kAlertKindCount> kTraits{{
     {"CPA/TCPA", Priority::Alarm, false, false},
     {"GUARD ZONE", Priority::Warning, true, true},
@@ -20,6 +22,12 @@ constexpr std::array<AlertKindTraits, kAlertKindCount> kTraits{{
     {"SENSOR NOISE", Priority::Caution, false, false},
     {"CAPACITY", Priority::Caution, false, false},
     {"AIS CPA/TCPA", Priority::Alarm, false, false},
+    {"SAFETY CONTOUR AHEAD", Priority::Alarm, false, false},
+    {"DANGER AHEAD", Priority::Warning, true, false},
+    {"GROUNDED", Priority::Alarm, false, true},
+    {"OFF TRACK", Priority::Alarm, false, false},
+    {"WAYPOINT APPROACH", Priority::Warning, false, true},
+    {"ARRIVAL", Priority::Warning, false, true},
 }};
 
 }  // namespace

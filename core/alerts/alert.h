@@ -25,8 +25,16 @@ enum class AlertKind {
   SensorNoise,          ///< a sensor's innovations larger than its configured noise explains
   Capacity,             ///< the tracker (source 0) or the AIS target table (source 1) near its capacity
   AisCpaTcpa,           ///< an AIS target's CPA and TCPA under the limits (source: its MMSI)
+  SafetyContourAhead,   ///< own ship may cross the safety contour (or land, a prohibited area) within the
+                        ///< look-ahead, with at least the alert probability
+  DangerAhead,       ///< own ship may pass within the clearance of an isolated danger within the look-ahead
+  Grounded,          ///< own ship is aground (the simulator's, on the charts' depths)
+  OffTrack,          ///< the cross-track distance beyond the leg's limit (deviation from route)
+  WaypointApproach,  ///< the wheel-over point of the next waypoint within the warning time (source: waypoint
+                     ///< id)
+  Arrival,           ///< own ship has arrived at the route's last waypoint
 };
-inline constexpr int kAlertKindCount = 10;
+inline constexpr int kAlertKindCount = 16;
 
 /// Which condition, from which source (a track number, a zone index, a DRKF block; 0 when the kind has
 /// one source only).

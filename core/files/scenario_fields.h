@@ -181,5 +181,8 @@ void readTargetAis(Fields& target, sim::TargetSpec& t);
 void readAisAssociation(Fields& tracker, sim::TrackerSpec& tr);
 void writeTargetAis(io::JsonWriter& w, const sensors::AisTransmitterSpec& a);
 void writeAisAssociation(io::JsonWriter& w, const track::AisAssociationConfig& a);
+/// The "voyage" block (scenario_voyage.cpp).
+void readVoyage(Fields& top, sim::Scenario& s);
+void writeVoyage(io::JsonWriter& w, const sim::VoyageSpec& v);
 
 }  // namespace reckoner::files::scenario_detail

@@ -328,6 +328,7 @@ sim::Scenario parseScenario(std::string_view text, const std::string& sourceName
   readFilter(top, s);
   readTracker(top, s);
   readRadarMatching(top, s);
+  scenario_detail::readVoyage(top, s);
   top.finish();
   if (const std::string problem = sim::checkScenario(s); !problem.empty()) {
     const auto colon = problem.find(": ");

@@ -360,6 +360,7 @@ std::string writeScenario(const sim::Scenario& s) {
   writeTargets(w, s.targets);
   writeFilter(w, s.filter);
   writeRadarMatching(w, s.radarMatching);
+  scenario_detail::writeVoyage(w, s.voyage);
   w.key("tracker").beginObject();
   writeTrackManagement(w, s.tracker);
   writeTrackFilters(w, s.tracker);

@@ -20,12 +20,18 @@ void validate(const AlertFeedSettings& s) {
     throw std::invalid_argument("alerts: dr_limit_m must be a finite number of at least 0");
   if (!std::isfinite(s.positionDiscrepancyM) || s.positionDiscrepancyM < 0.0)
     throw std::invalid_argument("alerts: position_discrepancy_m must be a finite number of at least 0");
+  if (!(s.groundingAlertProbability > 0.0 && s.groundingAlertProbability < 1.0))
+    throw std::invalid_argument("alerts: the grounding alert probability must be in (0, 1)");
+  if (!(s.groundingConfirmationS >= 0.0 && s.groundingConfirmationS <= 120.0))
+    throw std::invalid_argument("alerts: the grounding alert's confirmation time must be in [0, 120] s");
 }
 
 AlertFeedSettings alertFeedSettingsFor(const Scenario& scenario) {
   AlertFeedSettings s;
   s.cpa.cpaM = scenario.tracker.dangerCpaM;
   s.cpa.tcpaS = scenario.tracker.dangerTcpaS;
+  s.groundingAlertProbability = scenario.voyage.alertProbability;
+  s.groundingConfirmationS = scenario.voyage.alertConfirmationS;
   return s;
 }
 
@@ -44,6 +50,7 @@ void AlertFeed::feed(const SimFrame& f, alerts::AlertManager& m, TimeUs clockOff
   feedTracks(f, m);
   feedOwnShip(f, m);
   feedDiscrepancy(f, m);
+  feedVoyage(f, m);
   m.tick(f.timeUs + offsetUs_);
 }
 
@@ -143,6 +150,63 @@ void AlertFeed::feedDiscrepancy(const SimFrame& f, alerts::AlertManager& m) {
   if (discrepant_)
     std::snprintf(text, sizeof text, "GPS and Loran-C %.0f m apart, limit %.0f m", apartM, limit);
   m.report(f.timeUs + offsetUs_, {AlertKind::PositionDiscrepancy, 0}, discrepant_, text);
+}
+
+void AlertFeed::feedVoyage(const SimFrame& f, alerts::AlertManager& m) {
+  const TimeUs now = f.timeUs + offsetUs_;
+  if (f.lookAhead && f.lookAhead->valid) {
+    const GroundingOutlook& o = *f.lookAhead;
+    const double p = settings_.groundingAlertProbability;
+    char text[128];
+    // confirmed by lasting, or at once when more likely than not (a turn towards the shallows)
+    const auto confirmed = [&](double probability, std::optional<TimeUs>& since) {
+      const bool above = probability >= p;
+      if (!above) since.reset();
+      if (above && !since) since = f.timeUs;
+      return probability >= kGroundingImmediateProbability ||
+             (above && toSeconds(f.timeUs - *since) >= settings_.groundingConfirmationS);
+    };
+    contourAhead_ = confirmed(o.crossingProbability, contourSinceUs_);
+    std::snprintf(text, sizeof text,
+                  "P %.0f%% of crossing the safety contour within %.0f min (median %.0f s)",
+                  100.0 * o.crossingProbability, o.horizonS / 60.0, o.medianCrossingS);
+    contourText_ = text;
+    dangerAhead_ = confirmed(o.dangerProbability, dangerSinceUs_);
+    std::snprintf(text, sizeof text, "P %.0f%% of passing a danger within %.0f min",
+                  100.0 * o.dangerProbability, o.horizonS / 60.0);
+    dangerText_ = text;
+  }
+  m.report(now, {AlertKind::SafetyContourAhead, 0}, contourAhead_, contourText_);
+  m.report(now, {AlertKind::DangerAhead, 0}, dangerAhead_, dangerText_);
+  if (f.grounded) groundedText_ = "aground on " + f.grounded->what;
+  m.report(now, {AlertKind::Grounded, 0}, f.aground, groundedText_);
+  // the route's conditions; approach and arrival are events: raised in their frame, ended in the next
+  // (they stay until acknowledged)
+  for (const int source : routeEvents_) {
+    m.report(now, {source < 0 ? AlertKind::Arrival : AlertKind::WaypointApproach, std::max(source, 0)},
+             false);
+  }
+  routeEvents_.clear();
+  if (!f.route) {
+    m.report(now, {AlertKind::OffTrack, 0}, false);
+    return;
+  }
+  const nav::RouteStatus& r = *f.route;
+  char text[128];
+  std::snprintf(text, sizeof text, "cross-track %.0f m %s, limit %.0f m", std::abs(r.crossTrackM),
+                r.side == nav::TrackSide::Port ? "port" : "starboard", r.crossTrackLimitM);
+  m.report(now, {AlertKind::OffTrack, 0}, r.valid && r.offTrack, text);
+  for (const nav::RouteEvent& e : r.events) {
+    if (e.kind == nav::RouteEventKind::ApproachingWaypoint) {
+      const int wp = static_cast<int>(e.waypoint);
+      std::snprintf(text, sizeof text, "waypoint %d: wheel over in %.0f s", wp + 1, r.timeToWheelOverS);
+      m.report(now, {AlertKind::WaypointApproach, wp}, true, text);
+      routeEvents_.insert(wp);
+    } else if (e.kind == nav::RouteEventKind::ArrivedFinal) {
+      m.report(now, {AlertKind::Arrival, 0}, true, "arrived at the last waypoint");
+      routeEvents_.insert(-1);
+    }
+  }
 }
 
 }  // namespace reckoner::sim

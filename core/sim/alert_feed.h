@@ -12,6 +12,14 @@
 //                       velocity over ground; it clears after 30 s below 80% of the limit)
 //   SENSOR NOISE        per DRKF block while its NIS window is above its band
 //   CAPACITY            while the track bank is at its warning level
+//   SAFETY CONTOUR AHEAD while the look-ahead's probability of crossing the safety contour (or entering
+//                       land, a prohibited area) is at least the alert probability (kept between
+//                       look-aheads)
+//   DANGER AHEAD        the same for passing within the clearance of an isolated danger
+//   GROUNDED            own ship aground (the simulator's)
+//   OFF TRACK           while the cross-track distance is beyond the leg's limit (with hysteresis)
+//   WAYPOINT APPROACH   per waypoint, once, when its wheel-over point is within the warning time
+//   ARRIVAL             once, at the route's last waypoint
 #include <optional>
 #include <set>
 
@@ -28,6 +36,10 @@ struct AlertFeedSettings {
   /// GPS and Loran-C fixes further apart than this raise POSITION DISCREPANCY; 0: no such alert.
   double positionDiscrepancyM = kDefaultPositionDiscrepancyM;
   static constexpr double kDefaultPositionDiscrepancyM = 185.2;  ///< 0.1 NM
+  /// SAFETY CONTOUR AHEAD and DANGER AHEAD hold once the look-ahead's probability has been at least
+  /// this for the confirmation time (the voyage's alert_probability and alert_confirmation_s).
+  double groundingAlertProbability = 0.05;
+  double groundingConfirmationS = 60.0;
 };
 /// The discrepancy alert clears when the fixes come closer than this fraction of the limit.
 inline constexpr double kDiscrepancyClearFraction = 0.8;
@@ -35,6 +47,8 @@ inline constexpr double kDiscrepancyClearFraction = 0.8;
 inline constexpr double kDiscrepancyClearAfterS = 30.0;
 /// Fixes older than this (s) are not compared.
 inline constexpr double kDiscrepancyFreshS = 10.0;
+/// SAFETY CONTOUR AHEAD and DANGER AHEAD are raised at once, unconfirmed, from this probability on.
+inline constexpr double kGroundingImmediateProbability = 0.5;
 /// Throws std::invalid_argument naming the field (the CPA limits', or dr_limit_m or
 /// position_discrepancy_m not finite and >= 0).
 void validate(const AlertFeedSettings& s);
@@ -57,6 +71,7 @@ class AlertFeed {
   void feedTracks(const SimFrame& f, alerts::AlertManager& m);
   void feedOwnShip(const SimFrame& f, alerts::AlertManager& m) const;
   void feedDiscrepancy(const SimFrame& f, alerts::AlertManager& m);
+  void feedVoyage(const SimFrame& f, alerts::AlertManager& m);
 
   struct Fix {
     TimeUs timeUs = 0;
@@ -70,6 +85,10 @@ class AlertFeed {
   std::optional<Fix> gps_, loran_;      ///< the latest fix of each position source
   bool discrepant_ = false;             ///< POSITION DISCREPANCY holds (with its hysteresis)
   std::optional<TimeUs> closeSinceUs_;  ///< since when, while it holds, the fixes are close again
+  bool contourAhead_ = false, dangerAhead_ = false;       ///< the alerts' conditions
+  std::optional<TimeUs> contourSinceUs_, dangerSinceUs_;  ///< since when the probability is above
+  std::string contourText_, dangerText_, groundedText_;
+  std::set<int> routeEvents_;  ///< WAYPOINT APPROACH sources (and ARRIVAL as -1) raised last frame
 };
 
 }  // namespace reckoner::sim

@@ -138,6 +138,23 @@ OwnShipFix ownShipFixOf(const ReplayOwnRow& row, const geo::LocalFrame& frame) {
 
 NmeaOutput::NmeaOutput(NmeaOutputOptions options) : options_(std::move(options)) {}
 
+std::vector<std::string> NmeaOutput::route(UtcUs utc, const nav::RouteStatus& status, const geo::Route& route,
+                                           bool deadReckoning) {
+  std::vector<std::string> out;
+  if (!options_.route) return out;
+  if (lastRouteUtc_ && utc >= *lastRouteUtc_ &&
+      toSeconds(utc - *lastRouteUtc_) < options_.ownShipPeriodS - 1e-6)
+    return out;
+  lastRouteUtc_ = utc;
+  const char mode = deadReckoning ? 'E' : 'A';
+  const std::string& talker = options_.routeTalker;
+  out.push_back(io::nmea::xte(talker, nav::xteOf(status, mode)));
+  out.push_back(io::nmea::rmb(talker, nav::rmbOf(status, route, mode)));
+  out.push_back(io::nmea::apb(talker, nav::apbOf(status, route, mode)));
+  counters_.sentences += 3;
+  return out;
+}
+
 std::vector<std::string> NmeaOutput::ownShip(const OwnShipFix& fix) {
   std::vector<std::string> out;
   if (!options_.ownShip && !options_.tracks) return out;
@@ -351,7 +368,8 @@ RunNmeaOutput::RunNmeaOutput(const Scenario& scenario, UtcUs utc0, NmeaOutputOpt
     : geo_(scenario.origin.latDeg, scenario.origin.lonDeg),
       utc0_(utc0),
       out_(std::move(options)),
-      feed_(alertFeedSettingsFor(scenario)) {}
+      feed_(alertFeedSettingsFor(scenario)),
+      route_(scenario.voyage.route) {}
 
 std::vector<std::string> RunNmeaOutput::frame(const SimFrame& f, const OwnShipRow& row,
                                               std::span<const TrackRow> tracks) {
@@ -363,6 +381,10 @@ std::vector<std::string> RunNmeaOutput::frame(const SimFrame& f, const OwnShipRo
     for (auto& l : out_.sweep(utc0_ + tracks[i].timeUs, tracks.subspan(i, j - i)))
       lines.push_back(std::move(l));
     i = j;
+  }
+  if (f.route && route_) {
+    for (auto& l : out_.route(utc0_ + f.timeUs, *f.route, *route_, f.deadReckoning.active))
+      lines.push_back(std::move(l));
   }
   feed_.feed(f, manager_);
   for (auto& l : out_.alerts(f.timeUs, utc0_ + f.timeUs, manager_.alerts())) lines.push_back(std::move(l));

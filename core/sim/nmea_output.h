@@ -33,7 +33,10 @@ struct NmeaOutputOptions {
   std::string radarTalker = "RA";    ///< radar / ARPA: TTM, TLL, OSD
   std::string alertTalker = "IN";
   bool ownShip = true, tracks = true, alerts = true;
-  bool ais = false;  ///< pass AIS lines through
+  /// XTE, RMB and APB while a route is monitored (for an autopilot or a plotter), as often as own ship.
+  bool route = true;
+  std::string routeTalker = "EC";  ///< ECDIS
+  bool ais = false;                ///< pass AIS lines through
   AlertSentences alertSentences = AlertSentences::Both;
   double ownShipPeriodS = 1.0;
   double alertRepeatS = 30.0;
@@ -74,6 +77,10 @@ class NmeaOutput {
   /// the track ids: a track keeps its number while it is in the sweeps, a number freed by a track that
   /// is gone is given again only after the others (round robin).
   std::vector<std::string> sweep(UtcUs utc, std::span<const TrackRow> tracks);
+  /// XTE, RMB and APB of the route monitoring's status at utc (nav::xteOf, rmbOf, apbOf): mode E while
+  /// dead reckoning. Empty while rate limited (ownShipPeriodS) or with route off.
+  std::vector<std::string> route(UtcUs utc, const nav::RouteStatus& status, const geo::Route& route,
+                                 bool deadReckoning);
   /// The alerts shown now (alerts::AlertManager::alerts()) at run time `now` and UTC utc.
   std::vector<std::string> alerts(TimeUs now, UtcUs utc, const std::vector<alerts::Alert>& shown);
   /// An AIS line (!AIVDM, !AIVDO) as it came, without CR LF; nothing when AIS is off or it is not AIS.
@@ -103,7 +110,7 @@ class NmeaOutput {
 
   NmeaOutputOptions options_;
   NmeaOutputCounters counters_;
-  std::optional<UtcUs> lastOwnUtc_, lastSweepUtc_;
+  std::optional<UtcUs> lastOwnUtc_, lastSweepUtc_, lastRouteUtc_;
   std::map<int, int> numbers_;  ///< track id -> target number
   int nextNumber_ = 1;
   std::map<alerts::AlertId, Sent> sent_;
@@ -126,6 +133,7 @@ class RunNmeaOutput {
   NmeaOutput out_;
   AlertFeed feed_;
   alerts::AlertManager manager_;
+  std::optional<geo::Route> route_;
 };
 
 /// The NMEA output of own-ship rows and the track rows (with their UTC) of the same stretch, the sweeps

@@ -381,6 +381,10 @@ std::string checkScenario(const Scenario& s) {
   checkFilter(c, s.filter);
   checkTracker(c, s);
   checkRadarMatching(c, s.radarMatching);
+  if (c.ok()) {
+    const std::vector<std::string> voyage = s.voyage.problems();
+    if (!voyage.empty()) return voyage.front();
+  }
   if (c.ok()) checkBudget(c, s);
   return c.problem();
 }

@@ -14,6 +14,7 @@
 #include "sensors/ais_transmitter.h"
 #include "sensors/own_ship_sensor_specs.h"
 #include "sensors/radar.h"
+#include "sim/voyage_spec.h"
 #include "tracking/ais_fusion.h"
 #include "tracking/track_manager.h"
 
@@ -162,6 +163,7 @@ struct Scenario {
   std::vector<TargetSpec> targets;
   FilterSpec filter;
   TrackerSpec tracker;
+  VoyageSpec voyage;  ///< the route, draught and look-ahead (sim/voyage_spec.h)
 };
 
 /// Which own-ship sensors are fitted and powered, and the speedlog mode.

@@ -16,8 +16,14 @@ RunResult runScenario(const Scenario& scenario, std::uint64_t seed) {
 }
 
 RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameObserver& observer) {
+  return runScenario(scenario, seed, observer, nullptr);
+}
+
+RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameObserver& observer,
+                      std::shared_ptr<const ChartGuard> guard) {
   const auto start = std::chrono::steady_clock::now();
   SimulationEngine engine(scenario, seed);
+  engine.setChartGuard(std::move(guard));
   RunResult result;
   result.seed = seed;
   result.rows.reserve(static_cast<std::size_t>(scenario.durationUs / scenario.stepUs + 1));
@@ -26,6 +32,7 @@ RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameO
     result.rows.push_back(makeRow(f, engine.frame(), engine.drkf().config().process));
     const std::size_t tracksBefore = result.trackRows.size();
     appendSweepRows(f, scenario, engine.frame(), result.trackRows, result.targetRows);
+    if (f.grounded) result.grounded.emplace(f.timeUs, *f.grounded);
     if (observer)
       observer(f, result.rows.back(), std::span<const TrackRow>(result.trackRows).subspan(tracksBefore));
   }

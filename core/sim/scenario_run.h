@@ -23,6 +23,8 @@ struct RunResult {
   track::TrackCounters trackCounters;
   /// The stretches without a recent position fix (nav::DeadReckoningMonitor, the window's DR rule).
   std::vector<nav::DeadReckoningInterval> deadReckoning;
+  /// Own ship ran aground (charts given): when and on what.
+  std::optional<std::pair<TimeUs, Grounding>> grounded;
   double wallTimeS = 0.0;
 };
 
@@ -32,6 +34,9 @@ RunResult runScenario(const Scenario& scenario, std::uint64_t seed);
 using FrameObserver = std::function<void(const SimFrame&, const OwnShipRow&, std::span<const TrackRow>)>;
 /// The same run, with every frame shown to `observer` as it is made (e.g. sim::RunNmeaOutput).
 RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameObserver& observer);
+/// The same with the charts' answers (the look-ahead and grounding; sim/chart_guard.h); null: none.
+RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameObserver& observer,
+                      std::shared_ptr<const ChartGuard> guard);
 
 /// Calls fn(i) for i in [0, runs) on `threads` worker threads (>= 1); rethrows the first exception
 /// (by index) after all have finished.

@@ -127,7 +127,14 @@ SimulationEngine::SimulationEngine(const Scenario& scenario, std::uint64_t seed)
                           scenario.targets[i].appearUs);
   manager_.emplace(trackManagerConfigFor(scenario.tracker, scenario.radar.sweepPeriodS));
   ais_.emplace(scenario, seed);
+  voyage_ = std::make_unique<VoyageWatch>(scenario.voyage);
   nextSweepUs_ = scenario.radar.fitted ? 0 : kNever;
+}
+
+void SimulationEngine::setRoute(const std::optional<geo::Route>& route, bool follow) {
+  voyage_->setRoute(route, follow);
+  scenario_.voyage.route = route;
+  scenario_.voyage.followRoute = follow && route.has_value();
 }
 
 const geo::GridInfo& SimulationEngine::truthGrid() {
@@ -318,6 +325,7 @@ SimFrame SimulationEngine::step() {
   gyro_.advanceTo(end);
   drkf_->predictTo(end);
   timeUs_ = end;
+  voyage_->step(end, *drkf_, truth_, frame_, frame);
 
   frame.timeUs = end;
   frame.truth = truth_.state();

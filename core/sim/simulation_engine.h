@@ -17,6 +17,7 @@
 #include "sim/ais_traffic.h"
 #include "sim/scenario.h"
 #include "sim/vessel_motion.h"
+#include "sim/voyage_watch.h"
 #include "tracking/track_manager.h"
 
 namespace reckoner::sim {
@@ -115,6 +116,13 @@ struct SimFrame {
   std::shared_ptr<const std::vector<track::AisTarget>> aisTargets;
   std::vector<track::AisAssociation> aisAssociations;
   std::vector<track::AisAssociationEvent> aisEvents;
+  /// The voyage (sim/voyage_watch.h): own ship against the active route (none: no route), the
+  /// anti-grounding look-ahead when one was made this cycle (charts present), the grounding of this
+  /// cycle, and whether own ship is aground.
+  std::optional<nav::RouteStatus> route;
+  std::optional<GroundingOutlook> lookAhead;
+  std::optional<Grounding> grounded;
+  bool aground = false;
 };
 
 /// A track of `bank` as the ARPA shows it at `time` (its belief predicted there; lost: at its last
@@ -141,6 +149,13 @@ class SimulationEngine {
   [[nodiscard]] const track::TrackManager& trackers() const { return *manager_; }
   /// The AIS transponders, table and fusion (idle when no target carries a transponder).
   [[nodiscard]] const AisTraffic& ais() const { return *ais_; }
+  /// The voyage: route monitoring, the autopilot, the look-ahead and grounding (sim/voyage_watch.h).
+  [[nodiscard]] const VoyageWatch& voyage() const { return *voyage_; }
+  /// The charts' answers (charts/route/chart_safety.h); null: no look-ahead and no grounding.
+  void setChartGuard(std::shared_ptr<const ChartGuard> guard) { voyage_->setChartGuard(std::move(guard)); }
+  /// The active route from now on (none: no monitoring), followed by the autopilot when `follow`;
+  /// recorded into scenario().voyage. Throws std::invalid_argument for a route with problems.
+  void setRoute(const std::optional<geo::Route>& route, bool follow);
   /// When own ship has been dead reckoning so far (evaluated at the end of every step).
   [[nodiscard]] const nav::DeadReckoningMonitor& deadReckoning() const { return deadReckoning_; }
 
@@ -237,6 +252,7 @@ class SimulationEngine {
   std::optional<double> lastSweepHeadingRad_;
   nav::DeadReckoningMonitor deadReckoning_;
   std::optional<AisTraffic> ais_;
+  std::unique_ptr<VoyageWatch> voyage_;
 };
 
 /// The DRKF configuration a scenario implies (the filter is tuned with the sensors' specifications).

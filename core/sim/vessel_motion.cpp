@@ -239,6 +239,20 @@ void VesselMotionModel::refreshOutputs(const Motion& m) {
   }
   truth_.headingRad = m.headingRad;
   order_ = m.order;
+  if (aground_) {
+    truth_.position = *aground_;
+    truth_.waterVxMps = -truth_.currentXMps;
+    truth_.waterVyMps = -truth_.currentYMps;
+    truth_.accelXMps2 = truth_.accelYMps2 = 0.0;
+  }
+}
+
+void VesselMotionModel::runAground() {
+  if (aground_) return;
+  aground_ = truth_.position;
+  truth_.waterVxMps = -truth_.currentXMps;
+  truth_.waterVyMps = -truth_.currentYMps;
+  truth_.accelXMps2 = truth_.accelYMps2 = 0.0;
 }
 
 bool VesselMotionModel::overrideFrom(const KinematicEvent& e) {

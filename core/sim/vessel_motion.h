@@ -45,6 +45,11 @@ class VesselMotionModel {
   /// time and appends it, so the schedule records what happened. Returns false if the time is too early.
   bool overrideFrom(const KinematicEvent& e);
 
+  /// The vessel runs aground at its position at the last time asked for: from then on it stays there,
+  /// at rest over ground (its water velocity the current's opposite), whatever its schedule says.
+  void runAground();
+  [[nodiscard]] bool aground() const { return aground_.has_value(); }
+
   static constexpr TimeUs kGridUs = 100'000;
 
  private:
@@ -88,6 +93,7 @@ class VesselMotionModel {
   std::size_t cacheNext_ = 0;
   VesselTruth truth_;
   std::optional<HelmOrder> order_;
+  std::optional<geo::GridPoint> aground_;
 };
 
 }  // namespace reckoner::sim

@@ -27,7 +27,13 @@ constexpr AlertKind kAllKinds[] = {AlertKind::CpaTcpa,
                                    AlertKind::PositionDiscrepancy,
                                    AlertKind::SensorNoise,
                                    AlertKind::Capacity,
-                                   AlertKind::AisCpaTcpa};
+                                   AlertKind::AisCpaTcpa,
+                                   AlertKind::SafetyContourAhead,
+                                   AlertKind::DangerAhead,
+                                   AlertKind::Grounded,
+                                   AlertKind::OffTrack,
+                                   AlertKind::WaypointApproach,
+                                   AlertKind::Arrival};
 
 track::Cpa cpaAt(double cpaM, double tcpaS) {
   track::Cpa c;

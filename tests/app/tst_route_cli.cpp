@@ -12,6 +12,7 @@
 #include "app/cli_process.h"
 #include "geo/route.h"
 #include "io/route_files.h"
+#include "support/route_fixtures.h"
 
 using namespace reckoner;
 using reckoner::test::runCli;
@@ -20,18 +21,8 @@ namespace {
 
 const QString kEnc = QStringLiteral(RECKONER_SHARED_DIR "/data/enc/US5WA22M");
 
-geo::Route routeOf(const std::vector<geo::GeoPoint>& pts, double xtlNm) {
-  geo::Route r;
-  r.name = "cli test";
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    geo::Waypoint w;
-    w.id = static_cast<int>(i + 1);
-    w.name = "WP" + std::to_string(i + 1);
-    w.position = pts[i];
-    w.leg.portXtlNm = w.leg.starboardXtlNm = xtlNm;
-    r.waypoints.push_back(w);
-  }
-  return r;
+geo::Route routeOf(const std::vector<geo::GeoPoint>& points, double xtlNm) {
+  return reckoner::test::routeOf(points, xtlNm, "cli test");
 }
 
 }  // namespace

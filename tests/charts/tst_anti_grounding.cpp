@@ -190,7 +190,7 @@ class TestAntiGrounding : public QObject {
     const auto guard =
         guardOf(charts::loadCell(std::string(RECKONER_SHARED_DIR) + "/data/enc/US5WA22M/US5WA22M.000"));
     // mid Commencement Bay, heading 225 for the south-west shore and its 9.1 m contour (some 3 km off)
-    const sim::Scenario s = scenarioAt({47.3035, -122.4497}, 225.0, 800.0);
+    const sim::Scenario s = scenarioAt({47.3035, -122.4497}, 225.0, 1000.0);
     double minLead = 1e9;
     for (int i = 0; i < runsPerCase(); ++i) {
       const RunResult r = run(s, 200 + static_cast<std::uint64_t>(i), guard);

@@ -30,6 +30,7 @@
 #include "common/angles.h"
 #include "common/units.h"
 #include "support/compare_near.h"
+#include "support/route_fixtures.h"
 
 using namespace reckoner;
 using namespace reckoner::charts;
@@ -39,17 +40,7 @@ namespace {
 const std::string kCell = std::string(RECKONER_SHARED_DIR) + "/data/enc/US5WA22M/US5WA22M.000";
 
 geo::Route routeOf(const std::vector<geo::GeoPoint>& points, double xtlNm) {
-  geo::Route r;
-  r.name = "test";
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    geo::Waypoint w;
-    w.id = static_cast<int>(i + 1);
-    w.name = "WP" + std::to_string(i + 1);
-    w.position = points[i];
-    w.leg.portXtlNm = w.leg.starboardXtlNm = xtlNm;
-    r.waypoints.push_back(w);
-  }
-  return r;
+  return reckoner::test::routeOf(points, xtlNm, "test");
 }
 
 geo::GeoPoint offset(const geo::GeoPoint& p, double azimuthDeg, double distM) {

@@ -29,6 +29,7 @@
 #include "io/text_format.h"
 #include "main_window_test_helpers.h"
 #include "support/compare_near.h"
+#include "support/route_fixtures.h"
 #include "ui/panels/route_panel.h"
 #include "ui/panels/route_table_model.h"
 #include "ui/route_library.h"
@@ -79,17 +80,7 @@ void dragOnChart(EcdisView* v, QPointF from, QPointF to) {
 }
 
 geo::Route routeOf(const std::vector<geo::GeoPoint>& points, double xtlNm) {
-  geo::Route r;
-  r.name = "Across the point";
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    geo::Waypoint wp;
-    wp.id = static_cast<int>(i + 1);
-    wp.name = "WP" + std::to_string(i + 1);
-    wp.position = points[i];
-    wp.leg.portXtlNm = wp.leg.starboardXtlNm = xtlNm;
-    r.waypoints.push_back(wp);
-  }
-  return r;
+  return reckoner::test::routeOf(points, xtlNm, "Across the point");
 }
 
 void writeFile(const QString& path, const QByteArray& text) {

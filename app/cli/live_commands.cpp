@@ -22,6 +22,7 @@
 #include "cli/commands.h"
 #include "cli/nmea_out.h"
 #include "cli/replay_settings.h"
+#include "cli/voyage_options.h"
 #include "connection_hub.h"
 #include "files/live_run.h"
 #include "files/voyage_recorder.h"
@@ -45,6 +46,7 @@ struct LiveArgs {
   double statusIntervalS = 1.0;
   double fileRate = 1.0;
   ReplaySettings settings;
+  VoyageArgs voyage;
   OutputArgs output;
 };
 
@@ -98,6 +100,7 @@ std::unique_ptr<files::VoyageRecorder> recorderOf(const LiveArgs& a, const sim::
   s.programVersion = RECKONER_VERSION;
   s.options = options;
   s.maxHours = a.recordMaxHours;
+  s.charts = a.voyage.enc;
   for (const conn::SourceConfig& c : sources)
     s.sources.push_back({0, c.name, c.role == conn::Role::Radar ? "radar" : "nmea", conn::toSpec(c)});
   return std::make_unique<files::VoyageRecorder>(*a.record, s, wallNow());
@@ -126,6 +129,9 @@ class LiveEngine {
       lines.push_back({std::move(l.source), std::move(l.line), l.receivedUtc, radar});
     }
     send(run_.batch(lines, wallNow()));
+  }
+  void setChartGuard(std::shared_ptr<const sim::ChartGuard> guard) {
+    run_.session().setChartGuard(std::move(guard));
   }
   /// The recorder's commits on the wall clock while the input is silent.
   void tick() { run_.tick(wallNow()); }
@@ -186,6 +192,10 @@ class LiveEngine {
       sink_->write(
           sim::rowsNmea(nmea_, batch.own, batch.tracks, batch.trackUtc, geo::LocalFrame(o.latDeg, o.lonDeg)));
     }
+    // The autopilot's sentences (XTE, RMB, APB) of every frame monitored against the route.
+    if (const auto& route = session.voyage().spec().route)
+      for (const files::LiveBatch::RouteRow& r : batch.route)
+        sink_->write(nmea_.route(r.utc, r.status, *route, r.deadReckoning));
     const sim::LiveWatch& watch = run_.watch();
     if (!a_.noNmeaOutAlerts && watch.zeroUtc() != 0)
       sink_->write(nmea_.alerts(watch.nowUs(), watch.nowUtc(), watch.alerts().alerts()));
@@ -207,6 +217,8 @@ int liveCommand(const LiveArgs& a) {
   lo.radar =
       std::any_of(sources.begin(), sources.end(), [](const auto& c) { return c.role == conn::Role::Radar; });
   lo.frames = true;  // the watch's alerts read them
+  applyVoyageArgs(a.voyage, lo.replay.settings.voyage);
+  const std::shared_ptr<const sim::ChartGuard> guard = chartGuardFor(lo.replay.settings.voyage, a.voyage.enc);
   if (a.recordMaxHours && !a.record) throw UsageError("--record-max-hours needs --record FILE.sqlite");
   const std::string out = prepareOutDir(a.output);
 
@@ -215,6 +227,7 @@ int liveCommand(const LiveArgs& a) {
   char* argv[] = {arg0, nullptr};
   QCoreApplication app(argc, argv);
   LiveEngine engine(a, lo, out, sources);
+  engine.setChartGuard(guard);
   if (::pipe(stopPipe) != 0) throw std::runtime_error("cannot make the signal pipe");
   std::signal(SIGINT, onStopSignal);
   std::signal(SIGTERM, onStopSignal);
@@ -303,6 +316,7 @@ void addLiveCommands(CLI::App& root, Commands& out) {
   app->add_flag("--no-nmea-out-alerts", a->noNmeaOutAlerts,
                 "send no alert sentences (ALR, ALF, ALC) to --nmea-out, only own ship and tracks");
   addReplaySettings(*app, a->settings);
+  addVoyageOptions(*app, a->voyage);
   addOutputOptions(*app, a->output, Summary::None,
                    "ownship.csv, summary.json, ais.csv, alerts.csv, targets.csv with radar");
   out.push_back({app, [a] { return liveCommand(*a); }, "live takes no positional arguments"});

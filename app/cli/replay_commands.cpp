@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <span>
 #include <string>
@@ -12,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/nmea_out.h"
 #include "cli/replay_settings.h"
+#include "cli/voyage_options.h"
 #include "common/angles.h"
 #include "common/time.h"
 #include "files/live_run.h"
@@ -127,6 +129,17 @@ int replayRecording(const ReplayArgs& a) {
   const sim::LiveOptions options = rec.liveOptions();
   const std::string out = prepareOutDir(a.output);
   files::LiveRun run(options, out);
+  // The look-ahead's charts, from where the run had them (the record names them, it does not hold them).
+  if (const auto charts = rec.chartsPath()) {
+    if (std::filesystem::exists(*charts))
+      run.session().setChartGuard(chartGuardFor(options.replay.settings.voyage, charts));
+    else
+      std::fprintf(
+          stderr,
+          "reckoner-cli: warning: %s: the run's look-ahead charts %s are not there: replayed without "
+          "the look-ahead (its alerts will differ)\n",
+          rec.path().c_str(), charts->c_str());
+  }
   files::RecordComparer compare(rec);
   long batches = 0;
   rec.forEachBatch([&](std::int64_t, std::span<const files::InputLine> lines) {

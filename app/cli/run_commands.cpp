@@ -5,11 +5,10 @@
 #include <memory>
 #include <string>
 
-#include "charts/route/chart_safety.h"
-#include "charts/s57/s57_loader.h"
 #include "cli/cli_options.h"
 #include "cli/commands.h"
 #include "cli/nmea_out.h"
+#include "cli/voyage_options.h"
 #include "common/time.h"
 #include "files/own_ship_output.h"
 #include "files/track_output.h"
@@ -70,23 +69,6 @@ struct RunArgs {
   OutputArgs output;
 };
 
-/// The charts' answers for the run (the scenario's voyage settings), from --enc; null without it.
-std::shared_ptr<const sim::ChartGuard> chartGuardFor(const sim::Scenario& s,
-                                                     const std::optional<std::string>& enc) {
-  if (!enc) return nullptr;
-  const charts::LoadResult loaded = charts::loadCharts({*enc});
-  for (const auto& f : loaded.failures)
-    std::fprintf(stderr, "reckoner-cli: error: %s: %s\n", f.file.c_str(), f.reason.c_str());
-  if (loaded.cells.empty()) throw UsageError("--enc: no cell loaded from " + *enc);
-  charts::AntiGroundingSettings g;
-  g.safety.safetyContourM = s.voyage.safetyContourM;
-  g.safety.safetyDepthM = s.voyage.safetyDepthM;
-  g.draughtM = s.voyage.draughtM;
-  g.dangerClearanceM = s.voyage.dangerClearanceM;
-  g.halfBeamM = s.voyage.halfBeamM;
-  return std::make_shared<const charts::ChartSafety>(loaded.cells, g);
-}
-
 void printRun(const sim::Scenario& s, const sim::RunResult& run, std::uint64_t seed,
               studies::OwnShipFilter filter, const std::vector<metrics::PhaseStats>& phases,
               const std::string& out) {
@@ -124,7 +106,7 @@ int runCommand(const RunArgs& a) {
   const std::string out = prepareOutDir(a.output);
 
   // The DRKF always runs (it feeds the trackers); seed 002's filters beside it when chosen.
-  const std::shared_ptr<const sim::ChartGuard> guard = chartGuardFor(s, a.enc);
+  const std::shared_ptr<const sim::ChartGuard> guard = chartGuardFor(s.voyage, a.enc);
   if (guard && filter != studies::OwnShipFilter::Drkf)
     throw UsageError("--enc: the look-ahead and grounding run with --own-ship-filter drkf");
   sim::RunResult run;

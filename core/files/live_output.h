@@ -19,6 +19,14 @@ struct LiveBatch {
   std::vector<UtcUs> trackUtc;                ///< per track row
   std::vector<alerts::AlertLogEntry> alerts;  ///< the watch's alert log entries written (alerts.csv)
   UtcUs alertZeroUtc = 0;                     ///< the watch's zero then: an entry's UTC is this + timeUs
+  /// Route monitoring of each frame that had it (LiveOptions::voyage): its UTC, the status and whether
+  /// own ship was dead reckoning then (the autopilot sentences' data valid flag). Filled by LiveRun.
+  struct RouteRow {
+    UtcUs utc = 0;
+    nav::RouteStatus status;
+    bool deadReckoning = false;
+  };
+  std::vector<RouteRow> route;
 };
 
 class LiveOutputWriter {

@@ -35,9 +35,15 @@ LiveBatch LiveRun::batch(std::span<const InputLine> lines, UtcUs wallUtc) {
   }
   const sim::LiveWatch::Taken taken = watch_.absorb(session_, received);
   LiveBatch out = writer_.append(session_, taken.ais, watch_);
+  addRoute(taken.frames, out);
   if (recorder_)
     recorder_->batch(lines, out, session_.result().targetLabels, session_.clockAt(received), wallUtc);
   return out;
+}
+
+void LiveRun::addRoute(const std::vector<sim::SimFrame>& frames, LiveBatch& out) const {
+  for (const sim::SimFrame& f : frames)
+    if (f.route) out.route.push_back({session_.result().utc0 + f.timeUs, *f.route, f.deadReckoning.active});
 }
 
 void LiveRun::tick(UtcUs wallUtc) {
@@ -48,6 +54,7 @@ LiveBatch LiveRun::finish(const std::string& inputName, UtcUs wallUtc) {
   session_.finish();
   const sim::LiveWatch::Taken taken = watch_.absorb(session_, std::nullopt);
   LiveBatch last = writer_.finish(session_, taken.ais, watch_, inputName);
+  addRoute(taken.frames, last);
   if (recorder_) recorder_->finish(last, session_.result().targetLabels, wallUtc);
   return last;
 }

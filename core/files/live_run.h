@@ -42,6 +42,7 @@ class LiveRun {
   LiveBatch finish(const std::string& inputName, UtcUs wallUtc);
 
   [[nodiscard]] const sim::LiveSession& session() const { return session_; }
+  sim::LiveSession& session() { return session_; }
   [[nodiscard]] const sim::LiveWatch& watch() const { return watch_; }
   sim::LiveWatch& watch() { return watch_; }
   [[nodiscard]] const LiveOutputWriter& writer() const { return writer_; }
@@ -49,6 +50,7 @@ class LiveRun {
   [[nodiscard]] long radarLines() const { return radarLines_; }
 
  private:
+  void addRoute(const std::vector<sim::SimFrame>& frames, LiveBatch& out) const;
   sim::LiveSession session_;
   sim::LiveWatch watch_;
   LiveOutputWriter writer_;

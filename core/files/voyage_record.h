@@ -111,6 +111,11 @@ class VoyageRecord {
   [[nodiscard]] std::optional<UtcUs> endUtc() const;
   /// The settings the run was made with (its scenario, options), ready for sim::LiveSession.
   [[nodiscard]] sim::LiveOptions liveOptions() const;
+  /// The charts the run's anti-grounding look-ahead used (RecorderSettings::charts; nullopt: none).
+  [[nodiscard]] std::optional<std::string> chartsPath() const {
+    const auto it = meta_.find("voyage.enc");
+    return it == meta_.end() ? std::nullopt : std::optional<std::string>(it->second);
+  }
   /// The name the run gave its input in summary.json ("live").
   [[nodiscard]] std::string inputName() const;
 

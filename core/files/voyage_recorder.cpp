@@ -79,6 +79,7 @@ VoyageRecorder::VoyageRecorder(const std::string& path, const RecorderSettings& 
       {"sync_wall_s", voyage::exactText(s_.syncWallS)},
   };
   if (s_.maxHours) meta.emplace_back("record_max_hours", voyage::exactText(*s_.maxHours));
+  if (s_.charts) meta.emplace_back("voyage.enc", *s_.charts);
   for (auto& kv : voyage::optionsMeta(s_.options)) meta.push_back(std::move(kv));
   for (const auto& [key, value] : meta) st_->meta.bindAll(key, value).run();
   for (const RecordedSource& src : s_.sources) {

@@ -29,6 +29,9 @@ struct RecorderSettings {
   std::string programVersion;                 ///< meta.program_version
   std::string inputName = "live";             ///< the input's name in summary.json
   sim::LiveOptions options;                   ///< the run's settings, recorded for its replay
+  /// The charts of the anti-grounding look-ahead (a cell or a folder; meta.voyage.enc): the record names
+  /// them, it does not hold them (a replay loads them again from there).
+  std::optional<std::string> charts;
   /// The connections known at the start (name, role "nmea"/"radar", spec); a line from a source not
   /// listed adds it with an empty spec.
   std::vector<RecordedSource> sources;

@@ -41,7 +41,8 @@ LiveSession::LiveSession(LiveOptions options)
     : o_(std::move(options)),
       stream_(std::make_unique<replay_input::NmeaStream>(
           nmeaOptionsOf(o_.replay), o_.name,
-          static_cast<std::int64_t>(std::llround(std::max(0.0, o_.reorderHorizonS) * 1e6)), res_.stats)) {
+          static_cast<std::int64_t>(std::llround(std::max(0.0, o_.reorderHorizonS) * 1e6)), res_.stats)),
+      voyage_(o_.replay.settings.voyage) {
   if (!o_.radar) return;
   plots_ = std::make_unique<replay_input::PlotStream>(o_.replay.time, res_.stats, res_.targetLabels);
   res_.sweepPeriodS = o_.replay.settings.radar.sweepPeriodS;
@@ -131,6 +132,7 @@ void LiveSession::run(const replay_input::Epoch& e) {
     runner_ = std::make_unique<replay_runner::Runner>(o_.replay, res_, o_.radar);
     if (o_.frames)
       runner_->setFrameSink([this](SimFrame&& f) {
+        if (const nav::Drkf* filter = runner_->drkf()) voyage_.observe(f.timeUs, *filter, f);
         if (frames_.size() >= kMaxFrames) {
           frames_.pop_front();
           ++framesDropped_;

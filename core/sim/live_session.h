@@ -70,6 +70,15 @@ class LiveSession {
   /// The end of the input: what is held is decided and run, the filters' counts closed.
   void finish();
 
+  // Route monitoring and the anti-grounding look-ahead on the estimate of each frame (VoyageWatch's
+  // observe(): frame.route, frame.lookAhead; with frames only), under the settings' voyage block
+  // (replay.settings.voyage: its route is monitored from the start; a voyage a recording keeps).
+  /// The route monitored from the next frame on (none: monitoring stops).
+  void setRoute(const std::optional<geo::Route>& route) { voyage_.setRoute(route, false); }
+  /// The charts' answers for the look-ahead (null: no look-ahead).
+  void setChartGuard(std::shared_ptr<const ChartGuard> guard) { voyage_.setChartGuard(std::move(guard)); }
+  [[nodiscard]] const VoyageWatch& voyage() const { return voyage_; }
+
   /// The filters have started (a position fix has arrived): origin and utc0 are set.
   [[nodiscard]] bool started() const { return runner_ != nullptr; }
   /// The run so far: rows (unless taken), stats, sources, counters, warnings.
@@ -106,6 +115,7 @@ class LiveSession {
   io::AisDecoder ais_;
   std::vector<LiveAisMessage> aisOut_;
   std::deque<SimFrame> frames_;
+  VoyageWatch voyage_;
   long framesDropped_ = 0;
   std::optional<geo::LocalFrame> frame_;
   std::optional<UtcUs> receivedAtLastRun_;

@@ -49,6 +49,8 @@ class Runner {
   /// samples, update report, sensors heard, tracks, the sweeps closed and plots taken since the
   /// previous frame, track events, dead reckoning) goes to the sink. None without one.
   void setFrameSink(std::function<void(SimFrame&&)> sink) { sink_ = std::move(sink); }
+  /// The DRKF now (null between a failure restart and the next fix).
+  [[nodiscard]] const nav::Drkf* drkf() const { return drkf_ ? &*drkf_ : nullptr; }
 
  private:
   [[nodiscard]] TimeUs rel(UtcUs u) const { return u - res_.utc0; }

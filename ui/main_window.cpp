@@ -301,24 +301,6 @@ void MainWindow::setRate(double rate) {
   runAction_->setText(rate == 0.0 ? tr("Run") : tr("Pause"));
 }
 
-void MainWindow::setPalette(charts::Palette palette) {
-  charts::MarinerSettings s = view_->settings();
-  s.palette = palette;
-  view_->setSettings(s);
-  const QPalette pal = widgetPalette(palette);
-  QMainWindow::setPalette(pal);
-  QToolTip::setPalette(pal);
-  for (QWidget* w : findChildren<QWidget*>()) w->setPalette(pal);
-  ownPlots_->setDark(palette != charts::Palette::Day);
-  targetPlots_->setDark(palette != charts::Palette::Day);
-  alertPanel_->setDisplayPalette(palette);
-  alertPanel_->refresh(history_);
-  ownPanel_->setDisplayPalette(palette);
-  if (!history_.alerts().empty()) updateAlarms();
-  for (auto* combo : findChildren<QComboBox*>(QStringLiteral("palette")))
-    combo->setCurrentIndex(static_cast<int>(palette));
-}
-
 void MainWindow::onFrame(const LiveFrame& frame) {
   QElapsedTimer t;
   t.start();
@@ -352,6 +334,7 @@ void MainWindow::repaintTick() {
   frameDirty_ = false;
   const LiveFrame& live = history_.latest();
   if (localFrame_) ownPanel_->setFrame(live, *localFrame_);
+  showVoyage(live);
   sensors_->setStates(live.frame.sensors, live.radarOn);
   sensors_->setNoisy(live.frame.noisierThanConfigured);
   for (QAction* a : trackerKindActions_)

@@ -51,6 +51,7 @@ class RoutePanel;
 struct RouteFindingRow;
 class SensorPanel;
 class TargetTableModel;
+class VoyagePanel;
 
 struct MainWindowOptions {
   std::string scenarioPath;    ///< empty: the last one (settings) or the embedded default
@@ -116,6 +117,8 @@ class MainWindow : public QMainWindow {
   /// the active route (an empty route: none), or read routeLibrary()->activeRoute().
   [[nodiscard]] RouteLibrary* routeLibrary() const { return routes_; }
   [[nodiscard]] RoutePanel* routePanel() const { return routePanel_; }
+  /// The Voyage dock: own ship against the active route, the look-ahead (main_window_voyage.cpp).
+  [[nodiscard]] VoyagePanel* voyagePanel() const { return voyagePanel_; }
   /// Route > Edit route (with a new route when none is shown); Esc on the chart ends it.
   void setRouteEditing(bool on);
   /// Route > Import: adds an RTZ or GPX file to the library; false with a message naming the file
@@ -224,6 +227,13 @@ class MainWindow : public QMainWindow {
   void showArrivedCharts(const std::vector<charts::CellPtr>& cells, const QString& failures);
   /// The status bar's chart figures after a render: cells, scale, overscale, render time.
   void showChartStatus(double renderMs);
+  // main_window_voyage.cpp: the active route to the simulation, route monitoring.
+  void buildVoyageDock();
+  void buildVoyageActions(QMenu* routeMenu);
+  /// The library's active route (when it has a leg and no problems; else none) and Follow route to the
+  /// simulation and a live run.
+  void sendActiveRoute();
+  void showVoyage(const LiveFrame& live);
   // main_window_routes.cpp: routes.
   void buildRouteDock();
   void buildRouteMenu();
@@ -324,6 +334,9 @@ class MainWindow : public QMainWindow {
   RoutePanel* routePanel_ = nullptr;
   QAction* routeEditAction_ = nullptr;
   QAction* routeActivateAction_ = nullptr;
+  VoyagePanel* voyagePanel_ = nullptr;
+  QAction* followRouteAction_ = nullptr;
+  bool lastFollowing_ = false;
   QTimer routeCheckTimer_;  ///< the check after an edit (single shot)
   RouteCheckCache routeCheck_;
   std::vector<charts::RouteFinding> routeFindings_;

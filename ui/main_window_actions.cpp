@@ -129,6 +129,7 @@ void MainWindow::buildDocks() {
   dock(tr("Pick report"), QStringLiteral("pickDock"), pick_, Qt::BottomDockWidgetArea);
   buildChartDock();
   buildRouteDock();
+  buildVoyageDock();
   buildLive();
   arrangeDocks();
 }
@@ -139,13 +140,14 @@ void MainWindow::arrangeDocks() {
   // float the docks; the arrangement is remembered (writeSettings).
   const auto d = [this](const char* name) { return findChild<QDockWidget*>(QString::fromLatin1(name)); };
   QDockWidget *own = d("ownShipDock"), *alerts = d("alarmDock");
-  for (const char* name : {"ownShipDock", "sensorDock", "plotDock", "routeDock", "alarmDock", "targetDock",
-                           "aisDock", "pickDock", "chartDock", "monitorDock"})
+  for (const char* name : {"ownShipDock", "sensorDock", "plotDock", "routeDock", "voyageDock", "alarmDock",
+                           "targetDock", "aisDock", "pickDock", "chartDock", "monitorDock"})
     addDockWidget(Qt::RightDockWidgetArea, d(name));
   splitDockWidget(own, alerts, Qt::Vertical);
   tabifyDockWidget(own, d("sensorDock"));
   tabifyDockWidget(own, d("plotDock"));
   tabifyDockWidget(own, d("routeDock"));
+  tabifyDockWidget(own, d("voyageDock"));
   tabifyDockWidget(alerts, d("targetDock"));
   tabifyDockWidget(alerts, d("pickDock"));
   tabifyDockWidget(alerts, d("chartDock"));

@@ -12,14 +12,20 @@
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QToolBar>
+#include <QToolTip>
 #include <algorithm>
 #include <cmath>
 
 #include "ui/main_window.h"
 #include "ui/map/range_scale.h"
+#include "ui/panels/alert_panel.h"
+#include "ui/panels/alert_sound.h"
 #include "ui/panels/own_ship_panel.h"
 #include "ui/panels/route_panel.h"
 #include "ui/panels/target_table_model.h"
+#include "ui/panels/voyage_panel.h"
+#include "ui/panels/widget_palette.h"
+#include "ui/plots/error_plots.h"
 
 namespace reckoner::ui {
 namespace {
@@ -259,6 +265,7 @@ void MainWindow::setDisplayUnits(const DisplayUnits& units) {
   model_->setUnits(units);
   ownPanel_->setUnits(units);
   routePanel_->setUnits(units);
+  voyagePanel_->setUnits(units);
   if (localFrame_ && !history_.empty()) ownPanel_->setFrame(history_.latest(), *localFrame_);
   const std::pair<const char*, bool> checks[] = {{"units_nm", units.distance == DistanceUnit::NauticalMiles},
                                                  {"units_km", units.distance == DistanceUnit::Kilometres},
@@ -359,6 +366,25 @@ void MainWindow::askCcrp() {
   connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
   form->addRow(buttons);
   if (dialog.exec() == QDialog::Accepted) setCcrp(bow->value(), side->value());
+}
+
+void MainWindow::setPalette(charts::Palette palette) {
+  charts::MarinerSettings s = view_->settings();
+  s.palette = palette;
+  view_->setSettings(s);
+  const QPalette pal = widgetPalette(palette);
+  QMainWindow::setPalette(pal);
+  QToolTip::setPalette(pal);
+  for (QWidget* w : findChildren<QWidget*>()) w->setPalette(pal);
+  ownPlots_->setDark(palette != charts::Palette::Day);
+  targetPlots_->setDark(palette != charts::Palette::Day);
+  alertPanel_->setDisplayPalette(palette);
+  alertPanel_->refresh(history_);
+  ownPanel_->setDisplayPalette(palette);
+  voyagePanel_->setDisplayPalette(palette);
+  if (!history_.alerts().empty()) updateAlarms();
+  for (auto* combo : findChildren<QComboBox*>(QStringLiteral("palette")))
+    combo->setCurrentIndex(static_cast<int>(palette));
 }
 
 }  // namespace reckoner::ui

@@ -86,6 +86,7 @@ void MainWindow::buildRouteMenu() {
   routeActivateAction_ = add(tr("Activate route"), "routeActivateAction",
                              [this](bool on) { routes_->setActive(on ? routes_->current() : -1); });
   routeActivateAction_->setCheckable(true);
+  buildVoyageActions(menu);
   menu->addSeparator();
   add(tr("Check route"), "routeCheckAction", [this] {
     checkRoute();

@@ -132,6 +132,14 @@ struct LiveFrame {
   std::shared_ptr<const radar::LandMask> land;
   bool radarMatching = false;
   int chartContourSegments = 0;
+  /// The voyage (sim/voyage_watch.h; frame.route holds the monitoring of the latest step): the route
+  /// own ship is monitored against (null: none), whether the autopilot follows it, the latest
+  /// anti-grounding look-ahead (null before the first, or without charts) and whether the ship is
+  /// aground (and on what).
+  std::shared_ptr<const geo::Route> route;
+  bool followingRoute = false;
+  std::shared_ptr<const sim::GroundingOutlook> lookAhead;
+  std::optional<sim::Grounding> aground;
   double rate = 0.0;          ///< requested rate (0: paused, < 0: as fast as possible)
   double achievedRate = 0.0;  ///< simulated seconds per wall second, measured
   bool radarOn = false;

@@ -37,6 +37,7 @@ void LiveWorker::start(conn::ConnectionHub* hub, const sim::LiveOptions& options
     emit failed(QString::fromStdString(std::string("cannot start the live run: ") + e.what()));
     return;
   }
+  applyVoyage();
   process_ = sim::drkfConfigFor(o.replay.settings).process;
   hub_ = hub;
   pending_ = LiveFrame{};
@@ -87,12 +88,15 @@ void LiveWorker::tick() {
 
 void LiveWorker::absorb(std::optional<UtcUs> receivedUtc) {
   sim::LiveWatch::Taken taken = watch_->absorb(*session_, receivedUtc);
-  sendNmea();
+  sendNmea(taken.frames);
   if (session_->started()) {
     pending_.liveOrigin = session_->result().origin;
     pending_.liveUtc0 = session_->result().utc0;
   }
   for (sim::SimFrame& f : taken.frames) {
+    if (f.lookAhead)
+      pending_.lookAhead = std::make_shared<const sim::GroundingOutlook>(std::move(*f.lookAhead));
+    f.lookAhead.reset();
     folder_.fold(f, session_->frame(), process_, {}, pending_);
     f.sweeps.clear();  // in trackHistory now
     pending_.frame = std::move(f);
@@ -106,18 +110,55 @@ void LiveWorker::absorb(std::optional<UtcUs> receivedUtc) {
   refreshAis(false);
 }
 
-void LiveWorker::sendNmea() {
+void LiveWorker::sendNmea(const std::vector<sim::SimFrame>& frames) {
   const std::vector<sim::ReplayOwnRow> own = session_->takeOwnRows();
   std::vector<UtcUs> trackUtc;
   const std::vector<sim::TrackRow> tracks = session_->takeTrackRows(&trackUtc);
   if (!nmeaDest_) return;
   std::vector<std::string> lines;
   if (session_->started()) lines = sim::rowsNmea(*nmea_, own, tracks, trackUtc, session_->frame());
+  // The autopilot's sentences of every frame monitored against the route.
+  if (const auto& route = session_->voyage().spec().route)
+    for (const sim::SimFrame& f : frames)
+      if (f.route)
+        for (std::string& l :
+             nmea_->route(session_->result().utc0 + f.timeUs, *f.route, *route, f.deadReckoning.active))
+          lines.push_back(std::move(l));
   if (watch_->zeroUtc() != 0) {
     const auto alerts = nmea_->alerts(watch_->nowUs(), watch_->nowUtc(), watch_->alerts().alerts());
     lines.insert(lines.end(), alerts.begin(), alerts.end());
   }
   if (!lines.empty()) nmeaDest_->write(lines);
+}
+
+void LiveWorker::setRoute(const std::optional<geo::Route>& route) {
+  route_ = route;
+  applyVoyage();
+}
+
+void LiveWorker::setCharts(std::vector<charts::CellPtr> cells) {
+  guard_.setCells(std::move(cells));
+  applyVoyage();
+}
+
+void LiveWorker::setSafety(const charts::SafetySettings& safety) {
+  guard_.setSafety(safety);
+  applyVoyage();
+}
+
+void LiveWorker::applyVoyage() {
+  if (!session_) return;
+  try {
+    session_->setRoute(route_);
+    session_->setChartGuard(guard_.guardFor(session_->voyage().spec()));
+  } catch (const std::exception& e) {
+    emit failed(QString::fromStdString(std::string("live route monitoring: ") + e.what()));
+  }
+  pending_.route = session_->voyage().spec().route
+                       ? std::make_shared<const geo::Route>(*session_->voyage().spec().route)
+                       : nullptr;
+  if (!guard_.guardFor(session_->voyage().spec())) pending_.lookAhead.reset();
+  dirty_ = true;
 }
 
 void LiveWorker::setNmeaOut(const QString& spec) {

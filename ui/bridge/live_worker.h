@@ -19,6 +19,7 @@
 #include "sim/nmea_output.h"
 #include "ui/bridge/frame_samples.h"
 #include "ui/bridge/live_frame.h"
+#include "ui/bridge/voyage_guard.h"
 
 namespace reckoner::ui {
 
@@ -48,6 +49,12 @@ class LiveWorker : public QObject {
   /// alerts to udp://HOST:PORT, tcp://:PORT or a file, as `reckoner-cli live --nmea-out`; empty: none.
   /// Emits failed() naming the destination when it cannot be opened.
   void setNmeaOut(const QString& spec);
+  /// The route monitored on the live estimate (none: none), now and in the runs started later; its
+  /// XTE, RMB and APB go to the NMEA output.
+  void setRoute(const std::optional<geo::Route>& route);
+  /// The charts the window shows and the mariner's safety settings: the anti-grounding look-ahead.
+  void setCharts(std::vector<charts::CellPtr> cells);
+  void setSafety(const charts::SafetySettings& safety);
   /// Lines a batch takes from the hub at most (the rest wait for the next turn of the event loop, so
   /// commands and the frame acknowledgement are never held up by a flood).
   static constexpr std::size_t kBatchLines = 20'000;
@@ -64,7 +71,9 @@ class LiveWorker : public QObject {
   /// The AIS table copied into the pending frame when it changed (at most 4 times a second unless forced).
   void refreshAis(bool force);
   /// The rows since the last call to the NMEA output (dropped without one: a watch does not grow).
-  void sendNmea();
+  void sendNmea(const std::vector<sim::SimFrame>& frames);
+  /// The route and the charts' answers given to the session now.
+  void applyVoyage();
 
   conn::ConnectionHub* hub_ = nullptr;
   std::unique_ptr<sim::LiveSession> session_;
@@ -81,6 +90,8 @@ class LiveWorker : public QObject {
   QMetaObject::Connection linesConnection_;
   std::unique_ptr<conn::NmeaDestination> nmeaDest_;
   std::unique_ptr<sim::NmeaOutput> nmea_;
+  std::optional<geo::Route> route_;
+  VoyageGuard guard_;
 };
 
 }  // namespace reckoner::ui

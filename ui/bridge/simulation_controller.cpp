@@ -77,7 +77,20 @@ void SimulationController::setRadarPower(bool on) {
   emit scenarioEdited();
 }
 void SimulationController::setCharts(const std::vector<charts::CellPtr>& cells) {
+  cells_ = cells;
   sim_.post(&SimulationWorker::setCharts, cells);
+  if (liveThread_) live().post(&LiveWorker::setCharts, cells);
+}
+void SimulationController::setVoyageRoute(const std::optional<geo::Route>& route, bool follow) {
+  route_ = route;
+  sim_.post(&SimulationWorker::setVoyageRoute, route, follow);
+  if (liveThread_) live().post(&LiveWorker::setRoute, route);
+  emit scenarioEdited();
+}
+void SimulationController::setSafety(const charts::SafetySettings& safety) {
+  safety_ = safety;
+  sim_.post(&SimulationWorker::setSafety, safety);
+  if (liveThread_) live().post(&LiveWorker::setSafety, safety);
 }
 void SimulationController::setRadarMatching(bool on) {
   if (live_) return;  // the simulation is not running in Live mode
@@ -138,6 +151,10 @@ WorkerThread<LiveWorker>& SimulationController::live() {
     LiveWorker* w = liveThread_->worker();
     connect(w, &LiveWorker::frameReady, this, &SimulationController::onLiveFrame, Qt::QueuedConnection);
     connect(w, &LiveWorker::failed, this, &SimulationController::failed, Qt::QueuedConnection);
+    // What the window gave before the live worker existed: its charts, route and safety settings.
+    liveThread_->post(&LiveWorker::setCharts, cells_);
+    liveThread_->post(&LiveWorker::setRoute, route_);
+    if (safety_) liveThread_->post(&LiveWorker::setSafety, *safety_);
   }
   return *liveThread_;
 }

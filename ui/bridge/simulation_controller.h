@@ -35,6 +35,11 @@ class SimulationController : public QObject {
   void setTrackerKind(track::TrackerKind kind);
   /// The charts the window shows, for radar matching and chart-aided acquisition (SimulationWorker).
   void setCharts(const std::vector<charts::CellPtr>& cells);
+  /// The window's active route (none: no route of the window's), followed by the autopilot when
+  /// `follow` (SimulationWorker::setVoyageRoute); in Live mode, monitored on the live estimate.
+  void setVoyageRoute(const std::optional<geo::Route>& route, bool follow);
+  /// The mariner's safety contour and depth for the anti-grounding look-ahead.
+  void setSafety(const charts::SafetySettings& safety);
   void setRadarMatching(bool on);
   void setRadarPicturesWanted(bool on);
   void addTarget(double xM, double yM, double vxMps, double vyMps);
@@ -93,6 +98,10 @@ class SimulationController : public QObject {
   LiveFrame latest_;
   sim::Scenario scenario_;
   LatestRequest loads_;
+  // The window's charts, active route and safety settings, for a live worker started later.
+  std::vector<charts::CellPtr> cells_;
+  std::optional<geo::Route> route_;
+  std::optional<charts::SafetySettings> safety_;
 };
 
 }  // namespace reckoner::ui

@@ -66,13 +66,15 @@ void SimulationWorker::load(const sim::Scenario& scenario, quint64 generation) {
   }
   picture_.reset();
   match_.reset();
+  lookAhead_.reset();
+  pending_ = LiveFrame{};
   applyCharts();
+  applyRoute();
   engine_->setRadarPicturesWanted(picturesWanted_);
   rate_ = 0.0;
   timer_->stop();
   targetS_ = 0.0;
   inFlight_ = false;
-  pending_ = LiveFrame{};
   folder_.clear();
   rateWindow_.clear();
   drHorizon_ = nav::DeadReckoningHorizon{};
@@ -218,6 +220,10 @@ void SimulationWorker::absorb(sim::SimFrame&& f) {
     match_ = std::move(shown);
   }
   if (f.radarPicture) picture_ = std::move(f.radarPicture);
+  if (f.lookAhead) lookAhead_ = std::make_shared<const sim::GroundingOutlook>(std::move(*f.lookAhead));
+  f.lookAhead.reset();
+  if (f.grounded) pending_.aground = f.grounded;
+  if (!f.aground) pending_.aground.reset();
   if (f.aisTargets) {  // simulated transponders: the same AIS picture as Live mode's
     pending_.aisTargets = f.aisTargets;
     pending_.aisCounts = engine_->ais().table().counts();
@@ -262,6 +268,9 @@ void SimulationWorker::maybeEmit(bool force) {
     picture_.reset();
     rasterisedNs_ = now;
   }
+  pending_.route = shownRoute_;
+  pending_.followingRoute = engine_->scenario().voyage.followRoute;
+  pending_.lookAhead = lookAhead_;
   pending_.alerts = alerts_.alerts();
   pending_.alertAudible = alerts_.audible();
   pending_.autoAcquire = engine_->trackers().config().autoAcquire;
@@ -286,7 +295,13 @@ void SimulationWorker::orderOwnShip(double trueHeadingRad, double speedMps) {
   if (!engine_) return;
   const auto& p = pending_.frame.truth.position;
   const double gamma = engine_->frame().gridInfo(p).convergenceRad;
+  // A helm order takes the ship off track control (as taking the wheel does): the route stays monitored.
+  if (engine_->scenario().voyage.followRoute) {
+    follow_ = false;
+    engine_->setRoute(engine_->scenario().voyage.route, false);
+  }
   engine_->orderOwnShip(sim::HelmOrder{wrapTwoPi(trueHeadingRad - gamma), std::max(0.0, speedMps)});
+  dirty_ = true;
 }
 
 void SimulationWorker::orderTarget(int targetId, double trueHeadingRad, double speedMps,
@@ -317,6 +332,7 @@ void SimulationWorker::setSpeedlogMode(sensors::SpeedlogMode mode) {
 
 void SimulationWorker::setCharts(std::vector<charts::CellPtr> cells) {
   cells_ = std::move(cells);
+  guard_.setCells(cells_);
   chartsOrigin_.reset();
   applyCharts();
   dirty_ = true;
@@ -344,6 +360,51 @@ void SimulationWorker::applyCharts() {
   }
   engine_->setCoastline(coast_);
   engine_->setLandMask(landMask_);
+  applyGuard();
+}
+
+void SimulationWorker::applyGuard() {
+  if (!engine_) return;
+  try {
+    engine_->setChartGuard(guard_.guardFor(engine_->scenario().voyage));
+  } catch (const std::exception& e) {
+    engine_->setChartGuard(nullptr);
+    emit failed(QString::fromStdString(std::string("anti-grounding on the charts: ") + e.what()));
+  }
+}
+
+void SimulationWorker::applyRoute() {
+  if (!engine_) return;
+  if (routeSet_) {
+    try {
+      engine_->setRoute(route_, follow_);
+    } catch (const std::exception& e) {
+      emit failed(QString::fromStdString(std::string("route: ") + e.what()));
+    }
+  }
+  const auto& r = engine_->scenario().voyage.route;
+  shownRoute_ = r ? std::make_shared<const geo::Route>(*r) : nullptr;
+}
+
+void SimulationWorker::setVoyageRoute(const std::optional<geo::Route>& route, bool follow) {
+  route_ = route;
+  follow_ = follow && route.has_value();
+  routeSet_ = route.has_value();
+  if (!engine_) return;
+  if (!route) {
+    engine_->setRoute(std::nullopt, false);
+    lookAhead_.reset();  // the look-ahead goes on (it needs no route); the shown one is renewed
+  }
+  applyRoute();
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void SimulationWorker::setSafety(const charts::SafetySettings& safety) {
+  guard_.setSafety(safety);
+  applyGuard();
+  dirty_ = true;
+  maybeEmit(true);
 }
 
 void SimulationWorker::setRadarMatching(bool on) {

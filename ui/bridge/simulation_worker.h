@@ -18,6 +18,7 @@
 #include "sim/alert_feed.h"
 #include "ui/bridge/frame_samples.h"
 #include "ui/bridge/live_frame.h"
+#include "ui/bridge/voyage_guard.h"
 
 namespace reckoner::ui {
 
@@ -70,6 +71,13 @@ class SimulationWorker : public QObject {
   /// The charts the window shows: their radar contours and land areas (around the scenario's origin)
   /// go to the engine for radar matching and chart-aided acquisition, now and at every load.
   void setCharts(std::vector<charts::CellPtr> cells);
+  /// The window's active route for own ship, now and at every load, followed by the autopilot when
+  /// `follow` (none: the route ends now, and a loaded scenario's own voyage route stands). A route
+  /// with problems is refused (failed()).
+  void setVoyageRoute(const std::optional<geo::Route>& route, bool follow);
+  /// The safety contour and depth of the anti-grounding look-ahead (the mariner's settings); the
+  /// draught, clearance and half-beam are the scenario's voyage's.
+  void setSafety(const charts::SafetySettings& safety);
   /// Radar matching on or off from now (an operator change recorded in the scenario).
   void setRadarMatching(bool on);
   /// A radar picture at every sweep for the overlay (rasterised at most every 100 ms of wall time).
@@ -89,6 +97,10 @@ class SimulationWorker : public QObject {
   void maybeEmit(bool force);
   void updateDeadReckoning();
   void applyCharts();
+  /// The charts' answers to the voyage (charts::ChartSafety) on the cells and settings now, made
+  /// again only when they changed.
+  void applyGuard();
+  void applyRoute();
 
   std::unique_ptr<sim::SimulationEngine> engine_;
   std::unique_ptr<studies::Seed002Filters> seed002_;  ///< beside the DRKF, on the same samples (display)
@@ -121,6 +133,15 @@ class SimulationWorker : public QObject {
   std::optional<sim::AlertFeed> alertFeed_;
   void alertsChanged();
   nav::DeadReckoningHorizon drHorizon_;
+  // The voyage: the window's route (routeSet_: one was given since the last "none"), the charts'
+  // answers, and the latest look-ahead (kept between the cycles that
+  // compute one).
+  bool routeSet_ = false;
+  std::optional<geo::Route> route_;
+  bool follow_ = false;
+  VoyageGuard guard_;
+  std::shared_ptr<const geo::Route> shownRoute_;
+  std::shared_ptr<const sim::GroundingOutlook> lookAhead_;
 };
 
 }  // namespace reckoner::ui

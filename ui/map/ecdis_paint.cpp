@@ -119,6 +119,7 @@ void EcdisView::paintOverlay(QPainter& p, const charts::Viewport& view) {
   if (haveOwnShip()) {
     const geo::GridPoint c = ccrpGrid();
     const Local ccrp = localAt(c.xM, c.yM);
+    paintLookAhead(p);
     paintZones(p);
     paintRings(p, ccrp);
     if (overlay_.showRadarEchoes) paintRadarEchoes(p);

@@ -18,6 +18,8 @@ namespace {
 
 constexpr double kWaypointRadiusPx = 5.0;
 constexpr double kFindingRadiusPx = 9.0;
+/// The look-ahead area is filled and labelled from this crossing probability (the alert's default).
+constexpr double kLookAheadShownProbability = 0.05;
 
 QPolygonF polyline(const charts::MercatorToScreen& m, const std::vector<charts::MercatorPoint>& pts) {
   QPolygonF out;
@@ -127,6 +129,52 @@ void EcdisView::paintRouteFindings(QPainter& p) {
     if (labelled.insert({f.leg, f.kind}).second || sel)
       pendingLabels_.push_back(PendingLabel{kindText(f.kind), at, box, danger, 8.0, false});
   }
+}
+
+void EcdisView::paintLookAhead(QPainter& p) {
+  // The anti-grounding look-ahead (docs/routes.md): the area own ship may cover (95%) within the
+  // look-ahead time, outlined while the crossing probability is below the alert's and filled in the
+  // danger colour above it; the hazards met, ringed; and where the ship is aground, a cross.
+  const LiveFrame& live = history_->latest();
+  const charts::Viewport view = viewport();
+  p.save();
+  if (const sim::GroundingOutlook* o = live.lookAhead.get(); o && o->valid && o->area.size() >= 3) {
+    QPolygonF area;
+    for (const geo::GeoPoint& g : o->area) {
+      const charts::ScreenPoint s = view.toScreen({g.latDeg, g.lonDeg});
+      area << QPointF(s.x, s.y);
+    }
+    const double prob = std::max(o->crossingProbability, o->dangerProbability);
+    const bool alerting = prob >= kLookAheadShownProbability;
+    QColor edge = alerting ? colour("danger") : colour("tool");
+    QColor fill = edge;
+    fill.setAlpha(alerting ? 60 : 0);
+    p.setBrush(alerting ? QBrush(fill) : QBrush(Qt::NoBrush));
+    p.setPen(QPen(edge, alerting ? 1.8 : 1.0, Qt::DashLine));
+    p.drawPolygon(area);
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(colour("danger"), 1.5));
+    for (const sim::HazardAhead& h : o->ahead) {
+      if (h.probability <= 0.0) continue;
+      const charts::ScreenPoint s = view.toScreen({h.position.latDeg, h.position.lonDeg});
+      p.drawEllipse(QPointF(s.x, s.y), 5.0, 5.0);
+    }
+    if (alerting) {
+      const QRectF box = area.boundingRect();
+      pendingLabels_.push_back(PendingLabel{
+          QStringLiteral("%1% in %2 min").arg(100.0 * prob, 0, 'f', 0).arg(o->horizonS / 60.0, 0, 'f', 0),
+          box.center(), 4.0, colour("danger"), 8.0, true});
+    }
+  }
+  if (live.aground) {
+    const auto& x = live.frame.estimate.x;
+    const Local at = localAt(x[est::drkf::kPosX], x[est::drkf::kPosY]);
+    p.setPen(QPen(colour("danger"), 3.0));
+    p.drawLine(at.p + QPointF(-12, -12), at.p + QPointF(12, 12));
+    p.drawLine(at.p + QPointF(-12, 12), at.p + QPointF(12, -12));
+    pendingLabels_.push_back(PendingLabel{tr("AGROUND"), at.p, 14.0, colour("danger"), 9.0, true});
+  }
+  p.restore();
 }
 
 void EcdisView::paintRoute(QPainter& p) {

@@ -300,6 +300,7 @@ class EcdisView : public ChartView {
   void paintDangerSectors(QPainter& p, const sim::TrialResult& r, const Local& own);
   // ecdis_route.cpp
   void paintRoute(QPainter& p);
+  void paintLookAhead(QPainter& p);
   void paintRouteLegs(QPainter& p, const RouteGeometry& g, const QColor& c, bool dashed);
   /// The cross-track limits, the turn arcs and the wheel-over lines.
   void paintRouteMarks(QPainter& p, const RouteGeometry& g, const QColor& c);

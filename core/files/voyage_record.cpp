@@ -77,7 +77,7 @@ std::int64_t VoyageRecord::inputCount() const {
 }
 
 std::optional<TimeSpan> VoyageRecord::inputSpan() const {
-  sqlite::Statement q(*db_, "SELECT min(rx_utc_us), max(rx_utc_us) FROM inputs");
+  sqlite::Statement q(*db_, "SELECT min(rx_utc_us), max(rx_utc_us) FROM inputs WHERE rx_utc_us != 0");
   if (!q.step() || q.isNull(0)) return std::nullopt;
   return TimeSpan{q.integer(0), q.integer(1)};
 }

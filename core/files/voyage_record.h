@@ -121,7 +121,7 @@ class VoyageRecord {
 
   [[nodiscard]] std::vector<RecordedSource> sources() const;
   [[nodiscard]] std::int64_t inputCount() const;
-  /// Receive times of the first and last input (nullopt: none).
+  /// Receive times of the first and last input whose receive time is known (not 0; nullopt: none).
   [[nodiscard]] std::optional<TimeSpan> inputSpan() const;
   /// UTC of the first and last own-ship estimate (nullopt: none).
   [[nodiscard]] std::optional<TimeSpan> estimateSpan() const;

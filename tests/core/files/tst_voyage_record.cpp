@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "files/live_run.h"
+#include "files/record_playback.h"
 #include "files/scenario_json.h"
 #include "files/voyage_compare.h"
 #include "files/voyage_record.h"
@@ -24,6 +25,7 @@
 #include "io/text_file.h"
 #include "sim/nmea_export.h"
 #include "support/drkf_fixtures.h"
+#include "support/recorded_runs.h"
 #include "support/text_lines.h"
 
 using namespace reckoner;
@@ -31,51 +33,6 @@ using namespace reckoner;
 namespace {
 
 const UtcUs kDay = *io::parseIso8601("2026-11-23T00:00:00Z");
-
-/// A simulated run's NMEA and radar plots with real AIS sentences, as the batches a live run takes:
-/// each second's sentences (from its RMC on) in one batch, the plots stamped before that second and one
-/// AIS sentence ahead of them; receive times 0.3 s into each second.
-std::vector<std::vector<files::InputLine>> simulatedBatches(int seconds) {
-  sim::Scenario s = test::builtinScenario("ttkf-matched");
-  s.durationUs = seconds * kMicrosPerSecond;
-  const sim::ExportedRun e = sim::exportRun(s, 3, *io::parseIso8601("2026-11-23T10:00:00Z"));
-  const auto radar = test::splitLines(e.radarCsv, test::EmptyLines::Drop);
-  std::vector<std::string> ais;
-  for (auto& l : test::splitLines(io::readTextFile(RECKONER_SHARED_DIR "/data/ais/gpsd-sample.aivdm")))
-    if (l.starts_with('!')) ais.push_back(l);
-  std::vector<std::vector<files::InputLine>> batches;
-  std::size_t r = 0, a = 0;
-  UtcUs rx = 0;
-  for (const std::string& l : test::splitLines(e.nmea, test::EmptyLines::Drop)) {
-    if (l.starts_with("$GPRMC,")) {
-      const int hh = std::stoi(l.substr(7, 2)), mm = std::stoi(l.substr(9, 2)),
-                ss = std::stoi(l.substr(11, 2));
-      const UtcUs t = kDay + ((hh * 60 + mm) * 60 + ss) * kMicrosPerSecond;
-      rx = t + 300'000;
-      batches.emplace_back();
-      if (a < ais.size()) batches.back().push_back({"nmea1", ais[a++], rx, false});
-      for (; r < radar.size(); ++r) {
-        const auto u = io::parseIso8601(radar[r].substr(0, radar[r].find(',')));
-        if (u && *u >= t) break;
-        batches.back().push_back({"radar1", radar[r], rx, true});
-      }
-    }
-    if (batches.empty()) batches.emplace_back();
-    batches.back().push_back({"nmea1", l, rx, false});
-  }
-  return batches;
-}
-
-sim::LiveOptions radarOptions() {
-  sim::LiveOptions lo;
-  lo.replay.settings = test::builtinScenario("ttkf-matched");
-  lo.replay.settingsName = "builtin:ttkf-matched";
-  lo.replay.originFromSettings = true;
-  lo.reorderHorizonS = 1.0;
-  lo.radar = true;
-  lo.frames = true;
-  return lo;
-}
 
 files::RecorderSettings recorderSettings(const sim::LiveOptions& lo) {
   files::RecorderSettings s;
@@ -135,6 +92,8 @@ class TestVoyageRecord : public QObject {
 
   QTemporaryDir dir_;
   std::string good_;  ///< a finished record, made by the first test, damaged by the last
+  // what the live run of the first test made and recorded
+  std::size_t own_ = 0, tracks_ = 0, alerts_ = 0, batches_ = 0;
 
  private slots:
   void initTestCase() {
@@ -148,8 +107,8 @@ class TestVoyageRecord : public QObject {
     // run that records them
     const std::string d = dir_.path().toStdString();
     good_ = d + "/run.sqlite";
-    const sim::LiveOptions lo = radarOptions();
-    const auto batches = simulatedBatches(300);
+    const sim::LiveOptions lo = test::radarLiveOptions();
+    const auto batches = test::simulatedBatches(300, kDay, RECKONER_SHARED_DIR "/data/ais/gpsd-sample.aivdm");
     std::filesystem::create_directories(d + "/live");
     std::filesystem::create_directories(d + "/replay");
     std::vector<sim::ReplayOwnRow> own;
@@ -212,6 +171,16 @@ class TestVoyageRecord : public QObject {
     QCOMPARE(page[0].batch, std::int64_t{101});
     QCOMPARE(rec.inputSeqAt(kDay + 86400 * kMicrosPerSecond), std::int64_t{0});
 
+    own_ = own.size();
+    tracks_ = tracks;
+    alerts_ = alerts;
+    batches_ = batches.size();
+  }
+
+  void aRecordReplaysThroughTheSamePipelineToTheSameFiles() {
+    if (good_.empty()) QSKIP("needs the record of aRecordedRunReplaysToTheSameFilesAndEstimates");
+    const std::string d = dir_.path().toStdString();
+    const files::VoyageRecord rec(good_);
     // WHEN it is replayed through the same pipeline with the recorded settings, batch by batch
     files::LiveRun replay(rec.liveOptions(), d + "/replay");
     files::RecordComparer compare(rec);
@@ -224,14 +193,72 @@ class TestVoyageRecord : public QObject {
     const files::RecordComparison c = compare.finish();
     // THEN every recorded estimate, track row and alert entry is computed again, exactly
     QVERIFY2(c.equal(), c.firstDifference.c_str());
-    QCOMPARE(replayedBatches, batches.size());
-    QCOMPARE(c.ownEqual, static_cast<long>(own.size()));
-    QCOMPARE(c.tracksEqual, static_cast<long>(tracks));
-    QCOMPARE(c.alertsEqual, static_cast<long>(alerts));
+    QCOMPARE(replayedBatches, batches_);
+    QCOMPARE(c.ownEqual, static_cast<long>(own_));
+    QCOMPARE(c.tracksEqual, static_cast<long>(tracks_));
+    QCOMPARE(c.alertsEqual, static_cast<long>(alerts_));
     QCOMPARE(c.ownNotRecorded + c.tracksNotRecorded + c.alertsNotRecorded, 0L);
     // AND the files are the live run's, byte for byte
     for (const char* f : {"ownship.csv", "targets.csv", "ais.csv", "alerts.csv", "summary.json"})
       QVERIFY2(io::readTextFile(d + "/live/" + f) == io::readTextFile(d + "/replay/" + f), f);
+  }
+
+  void aPlaybackToAClockGivesTheRecordedRun() {
+    // GIVEN the record of the first test, played back to a clock that moves in uneven steps (a tenth
+    // of a second to a minute, at most 7 batches a call: the window's timeline at any speed), rewound
+    // two thirds of the way through and played again from the start, as a seek back does
+    if (good_.empty()) QSKIP("needs the record of aRecordedRunReplaysToTheSameFilesAndEstimates");
+    const std::string d = dir_.path().toStdString();
+    files::RecordPlayback playback(good_);
+    QCOMPARE(playback.alerts().size(), files::VoyageRecord(good_).alerts().size());
+    const files::TimeSpan span = playback.span();
+    QVERIFY(span.last > span.first);
+    for (const int pass : {0, 1}) {
+      const std::string out = d + "/playback" + std::to_string(pass);
+      std::filesystem::create_directories(out);
+      files::LiveRun run(playback.options(), out);
+      files::RecordComparer compare(playback.record());
+      const auto feed = [&](std::span<const files::InputLine> b) {
+        compare.add(run.batch(b, 0), run.session().result().targetLabels);
+      };
+      const UtcUs stop = pass == 0 ? span.first + (span.last - span.first) * 2 / 3 : span.last;
+      UtcUs clock = span.first - 1;
+      std::size_t calls = 0;
+      // (a call that fed its 7 batches may have more due: the clock waits for them, as the window's does)
+      for (std::int64_t step = 100'000; !playback.atEnd() && clock < stop; ++calls) {
+        clock = std::min(stop, clock + step);
+        while (playback.feedTo(clock, feed, 7) == 7) ++calls;
+        QVERIFY(playback.position() <= clock);
+        step = step >= 60 * kMicrosPerSecond ? 100'000 : step * 3;
+      }
+      if (pass == 0) {
+        // THEN the position is where the clock stopped (within a batch's second) AND after the rewind
+        QVERIFY2(
+            playback.position() <= stop && playback.position() > stop - 2 * kMicrosPerSecond,
+            qPrintable(QString("position %1 s before the stop").arg(toSeconds(stop - playback.position()))));
+        playback.rewind();
+        QCOMPARE(playback.position(), span.first);
+        continue;
+      }
+      QVERIFY(playback.atEnd());
+      compare.add(run.finish(playback.record().inputName(), 0), run.session().result().targetLabels);
+      const files::RecordComparison c = compare.finish();
+      // THEN the run played again from the start is the recorded run, estimate for estimate
+      QVERIFY2(c.equal(), c.firstDifference.c_str());
+      QCOMPARE(c.ownNotReplayed + c.tracksNotReplayed + c.alertsNotReplayed, 0L);
+      qInfo("played back in %zu calls: %ld own-ship rows, %ld track rows, %ld alert entries equal", calls,
+            c.ownEqual, c.tracksEqual, c.alertsEqual);
+      QVERIFY(c.ownEqual > 250);
+    }
+    // AND a record with no input cannot be played back
+    const std::string empty = d + "/empty.sqlite";
+    { files::VoyageRecorder rec(empty, recorderSettings(sim::LiveOptions{}), kDay); }
+    try {
+      files::RecordPlayback none(empty);
+      QFAIL("a record without inputs was accepted");
+    } catch (const io::InputError& e) {
+      QVERIFY2(std::string(e.what()).find("empty.sqlite") != std::string::npos, e.what());
+    }
   }
 
   void commitsKeepAtMostTheLastSecondPending() {

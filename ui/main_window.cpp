@@ -304,6 +304,7 @@ void MainWindow::setRate(double rate) {
 void MainWindow::onFrame(const LiveFrame& frame) {
   QElapsedTimer t;
   t.start();
+  if (frame.restarted) history_.clear();  // a playback's seek back: its run starts again
   history_.append(frame);
   appendAlertLog(frame);
   const bool raised =
@@ -335,6 +336,7 @@ void MainWindow::repaintTick() {
   const LiveFrame& live = history_.latest();
   if (localFrame_) ownPanel_->setFrame(live, *localFrame_);
   showVoyage(live);
+  showPlayback(live);
   sensors_->setStates(live.frame.sensors, live.radarOn);
   sensors_->setNoisy(live.frame.noisierThanConfigured);
   for (QAction* a : trackerKindActions_)

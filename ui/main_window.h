@@ -46,6 +46,7 @@ class MessageBar;
 class ChartListPanel;
 class ErrorPlots;
 class OwnShipPanel;
+class PlaybackBar;
 class RouteLibrary;
 class RoutePanel;
 struct RouteFindingRow;
@@ -108,6 +109,12 @@ class MainWindow : public QMainWindow {
   bool startLive();
   void stopLive();
   [[nodiscard]] bool isLive() const;
+  /// Live > Play back a record…: the voyage record through the live worker, paused at its start, with
+  /// the playback bar (docs/gui.md "Playback"); false with a message when there is no such file (a
+  /// record that cannot be read is reported when the worker opens it). stopLive() ends it.
+  bool startPlayback(const QString& path);
+  [[nodiscard]] bool isPlayback() const;
+  [[nodiscard]] PlaybackBar* playbackBar() const { return playbackBar_; }
   /// Live > NMEA output: where the live run's own ship, tracks and alerts go as NMEA 0183 (a
   /// --nmea-out destination; empty: nowhere), remembered; false with a message naming what is wrong.
   bool setLiveNmeaOut(const QString& spec);
@@ -227,6 +234,9 @@ class MainWindow : public QMainWindow {
   void showArrivedCharts(const std::vector<charts::CellPtr>& cells, const QString& failures);
   /// The status bar's chart figures after a render: cells, scale, overscale, render time.
   void showChartStatus(double renderMs);
+  // main_window_playback.cpp: playback of a voyage record.
+  void buildPlayback(QMenu* liveMenu);
+  void showPlayback(const LiveFrame& live);
   // main_window_voyage.cpp: the active route to the simulation, route monitoring.
   void buildVoyageDock();
   void buildVoyageActions(QMenu* routeMenu);
@@ -335,6 +345,8 @@ class MainWindow : public QMainWindow {
   QAction* routeEditAction_ = nullptr;
   QAction* routeActivateAction_ = nullptr;
   VoyagePanel* voyagePanel_ = nullptr;
+  PlaybackBar* playbackBar_ = nullptr;
+  QToolBar* playbackToolbar_ = nullptr;
   QAction* followRouteAction_ = nullptr;
   bool lastFollowing_ = false;
   QTimer routeCheckTimer_;  ///< the check after an edit (single shot)

@@ -13,6 +13,7 @@
 #include <QStatusBar>
 #include <QTableView>
 #include <QTextBrowser>
+#include <QToolBar>
 #include <algorithm>
 
 #include "common/units.h"
@@ -108,6 +109,8 @@ void MainWindow::buildLiveMenu() {
   });
   live->addAction(tr("NMEA output…"), this, &MainWindow::askLiveNmeaOut);
   live->addSeparator();
+  buildPlayback(live);
+  live->addSeparator();
   for (const char* name : {"monitorDock", "aisDock"})
     if (auto* d = findChild<QDockWidget*>(QString::fromLatin1(name))) live->addAction(d->toggleViewAction());
 }
@@ -163,6 +166,7 @@ void MainWindow::stopLive() {
   if (!controller_->isLive()) return;
   controller_->stopLive();
   hub_->stop();
+  playbackToolbar_->hide();
   {
     const QSignalBlocker block(liveAction_);
     liveAction_->setChecked(false);
@@ -215,7 +219,8 @@ void MainWindow::liveFrameArrived(const LiveFrame& frame) {
     view_->setHistory(&history_, *localFrame_);
     firstFrame_ = true;  // the first view shows own ship and the targets
     statusBar()->showMessage(
-        tr("Live: own ship from the connections' first position fix, %1")
+        (frame.playback ? tr("Playback: own ship from the record's first position fix, %1")
+                        : tr("Live: own ship from the connections' first position fix, %1"))
             .arg(QString::fromStdString(io::formatLatitude(o.latDeg) + " " + io::formatLongitude(o.lonDeg))),
         8000);
   }
@@ -234,10 +239,11 @@ void MainWindow::refreshAisTable(const LiveFrame& live) {
 QString MainWindow::liveClockText(const LiveFrame& live) const {
   const UtcUs utc = live.liveUtc0 + live.frame.timeUs;
   const auto sod = static_cast<long long>((utc / kMicrosPerSecond) % 86400);
-  QString text = QStringLiteral("LIVE %1:%2:%3 UTC")
+  QString text = QStringLiteral("%4 %1:%2:%3 UTC")
                      .arg(sod / 3600, 2, 10, QChar('0'))
                      .arg(sod / 60 % 60, 2, 10, QChar('0'))
-                     .arg(sod % 60, 2, 10, QChar('0'));
+                     .arg(sod % 60, 2, 10, QChar('0'))
+                     .arg(live.playback ? tr("PLAYBACK") : QStringLiteral("LIVE"));
   if (live.frame.deadReckoning.active) text += tr("  DR");
   if (live.aisCounts.targets > 0) text += tr("  AIS %1").arg(live.aisCounts.targets);
   return text;

@@ -4,12 +4,15 @@
 // compact history samples of every step and sweep since the previous emitted frame, so plots miss
 // nothing. Plain values only: no pointers into the worker's state.
 #include <QMetaType>
+#include <QString>
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "alerts/alert.h"
+#include "files/voyage_record.h"
 #include "radar/land_mask.h"
 #include "sim/live_watch.h"
 #include "sim/scenario.h"
@@ -163,6 +166,30 @@ struct LiveFrame {
   sim::LiveOwnShipSource ownShipSource = sim::LiveOwnShipSource::None;
   /// The trial manoeuvre shown (sim/trial_manoeuvre.h; null when off), computed on this frame.
   std::shared_ptr<const sim::TrialResult> trial;
+  /// Playback of a voyage record (LiveWorker::startPlayback): the record's file and span, the clock, its
+  /// rate (0 paused, < 0 as fast as possible), whether all was played, and the record's alert log (the
+  /// timeline's marks). None in a live run or a simulation.
+  struct Playback {
+    QString path;
+    UtcUs first = 0, last = 0, clock = 0;  ///< receive times (the clock the batches are played to)
+    /// The stream's UTC of the first and last own-ship estimate: the alerts' times are on this clock,
+    /// placed on the receive clock by the line through the two spans (exact for a live run, 1:1 but for
+    /// latency, and for a file played at a constant --file-rate).
+    UtcUs streamFirst = 0, streamLast = 0;
+    /// The receive time of a stream UTC (by the line above).
+    [[nodiscard]] UtcUs receiveTimeOf(UtcUs stream) const {
+      if (streamLast <= streamFirst) return std::clamp(stream, first, last);
+      const double f =
+          static_cast<double>(stream - streamFirst) / static_cast<double>(streamLast - streamFirst);
+      return first + static_cast<UtcUs>(f * static_cast<double>(last - first));
+    }
+    double rate = 0.0;
+    bool atEnd = false;
+    std::shared_ptr<const std::vector<files::RecordedAlert>> alerts;
+  };
+  std::optional<Playback> playback;
+  /// The first frame of a run started again (a playback's seek back): the window drops its history.
+  bool restarted = false;
   /// Lines the live run has taken from the connections, and its session's counts.
   std::uint64_t liveLines = 0;
   long liveRows = 0;

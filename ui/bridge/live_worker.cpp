@@ -1,22 +1,34 @@
 #include "ui/bridge/live_worker.h"
 
 #include <QDateTime>
+#include <algorithm>
+#include <cmath>
 #include <exception>
+
+#include "files/live_run.h"
 
 namespace reckoner::ui {
 namespace {
 constexpr int kTickMs = 1000;
 constexpr qint64 kMinEmitIntervalNs = 33'000'000;  // <= 30 frames per second
-constexpr qint64 kAisRefreshNs = 250'000'000;  // the AIS table copied for the GUI at most 4 times a second
+constexpr qint64 kAisRefreshNs = 250'000'000;
+constexpr int kPlayTickMs = 20;               // the playback clock's step
+constexpr qint64 kPlayBudgetNs = 15'000'000;  // of a tick's wall time fed to the pipeline
+constexpr qint64 kSeekBudgetNs =
+    3'600'000'000'000;  // a seek runs to its time (an hour of wall time: never)  // the AIS table copied for
+                        // the GUI at most 4 times a second
 
 UtcUs systemUtc() {
   return static_cast<UtcUs>(QDateTime::currentMSecsSinceEpoch()) * 1000;
 }
 }  // namespace
 
-LiveWorker::LiveWorker(QObject* parent) : QObject(parent), timer_(new QTimer(this)) {
+LiveWorker::LiveWorker(QObject* parent)
+    : QObject(parent), timer_(new QTimer(this)), playTimer_(new QTimer(this)) {
   timer_->setInterval(kTickMs);
   connect(timer_, &QTimer::timeout, this, &LiveWorker::tick);
+  playTimer_->setInterval(kPlayTickMs);
+  connect(playTimer_, &QTimer::timeout, this, &LiveWorker::playbackTick);
   wall_.start();
 }
 
@@ -53,6 +65,9 @@ void LiveWorker::start(conn::ConnectionHub* hub, const sim::LiveOptions& options
 }
 
 void LiveWorker::stop() {
+  playTimer_->stop();
+  playback_.reset();
+  playbackAlerts_.reset();
   if (!session_) return;
   disconnect(linesConnection_);
   timer_->stop();
@@ -81,7 +96,7 @@ void LiveWorker::consume() {
 }
 
 void LiveWorker::tick() {
-  if (!session_) return;
+  if (!session_ || playback_) return;
   absorb(systemUtc());
   maybeEmit(true);
 }
@@ -149,7 +164,8 @@ void LiveWorker::setSafety(const charts::SafetySettings& safety) {
 void LiveWorker::applyVoyage() {
   if (!session_) return;
   try {
-    session_->setRoute(route_);
+    // A playback monitors the recorded route (its alerts are the record's); a live run the window's.
+    if (!playback_) session_->setRoute(route_);
     session_->setChartGuard(guard_.guardFor(session_->voyage().spec()));
   } catch (const std::exception& e) {
     emit failed(QString::fromStdString(std::string("live route monitoring: ") + e.what()));
@@ -206,11 +222,13 @@ void LiveWorker::maybeEmit(bool force) {
   pending_.radarOn = session_->result().sweepPeriodS > 0.0 && !pending_.frame.tracks.empty();
   pending_.liveLines = lines_;
   pending_.liveRows = static_cast<long>(session_->result().stats.epochs);
+  setPlaybackState();
   inFlight_ = true;
   dirty_ = false;
   lastEmitNs_ = now;
   emit frameReady(pending_);
   pending_.clearBatches();
+  pending_.restarted = false;
 }
 
 void LiveWorker::frameConsumed() {
@@ -256,6 +274,147 @@ void LiveWorker::activateAis(quint32 mmsi, bool on) {
 void LiveWorker::selectAis(quint32 mmsi) {
   if (watch_ && watch_->select(mmsi)) refreshAis(true);
   maybeEmit(true);
+}
+
+// ---- playback -----------------------------------------------------------------------------------
+
+void LiveWorker::startPlayback(const QString& path, quint64 generation) {
+  stop();
+  generation_ = generation;
+  try {
+    playback_ = std::make_unique<files::RecordPlayback>(path.toStdString());
+  } catch (const std::exception& e) {
+    playback_.reset();
+    emit failed(QString::fromStdString(std::string("cannot play the record back: ") + e.what()));
+    return;
+  }
+  playbackPath_ = path;
+  playbackAlerts_ = std::make_shared<const std::vector<files::RecordedAlert>>(playback_->alerts());
+  playbackRate_ = 0.0;
+  if (!restartPlayback()) return;
+  // To the first estimate, so the window has own ship to show.
+  while (pending_.ownHistory.empty() && !playback_->atEnd()) playTo(playback_->span().last, kSeekBudgetNs, 1);
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+bool LiveWorker::restartPlayback() {
+  sim::LiveOptions o = playback_->options();
+  o.frames = true;  // the window draws them
+  try {
+    session_ = std::make_unique<sim::LiveSession>(o);
+    watch_ = std::make_unique<sim::LiveWatch>(files::liveWatchSettings(o));
+  } catch (const std::exception& e) {
+    stop();
+    emit failed(QString::fromStdString(std::string("cannot play the record back: ") + e.what()));
+    return false;
+  }
+  process_ = sim::drkfConfigFor(o.replay.settings).process;
+  playback_->rewind();
+  playbackClock_ = playback_->span().first;
+  pending_ = LiveFrame{};
+  pending_.live = true;
+  pending_.restarted = true;
+  folder_.clear();
+  lines_ = 0;
+  aisVersion_ = 0;
+  applyVoyage();
+  return true;
+}
+
+void LiveWorker::playTo(UtcUs utc, qint64 budgetNs, std::size_t maxBatches) {
+  const qint64 start = wall_.nsecsElapsed();
+  const auto feed = [this](std::span<const files::InputLine> lines) {
+    // As files::LiveRun::batch: every line into the session, then the watch absorbs at the last one's time.
+    std::optional<UtcUs> received;
+    for (const files::InputLine& l : lines) {
+      if (l.receivedUtc != 0) received = l.receivedUtc;
+      if (l.radar)
+        session_->radar(l.line, l.receivedUtc);
+      else
+        session_->nmea(l.line, l.receivedUtc, l.source);
+    }
+    lines_ += lines.size();
+    absorb(received);
+  };
+  bool all = false;
+  std::size_t fed = 0;
+  while (fed < maxBatches && wall_.nsecsElapsed() - start < budgetNs) {
+    const std::size_t n = playback_->feedTo(utc, feed, std::min<std::size_t>(16, maxBatches - fed));
+    if (n == 0) {
+      all = true;
+      break;
+    }
+    fed += n;
+  }
+  playbackClock_ = all ? std::max(playbackClock_, utc) : std::max(playbackClock_, playback_->position());
+  if (playback_->atEnd()) {
+    playbackClock_ = std::max(playbackClock_, playback_->span().last);
+    session_->finish();
+    absorb(std::nullopt);
+    playbackRate_ = 0.0;
+    playTimer_->stop();
+  }
+  dirty_ = true;
+}
+
+void LiveWorker::playbackTick() {
+  if (!playback_ || playbackRate_ == 0.0) return;
+  const qint64 now = wall_.nsecsElapsed();
+  const double dtS = static_cast<double>(now - lastPlayNs_) * 1e-9;
+  lastPlayNs_ = now;
+  const UtcUs target = playbackRate_ < 0.0
+                           ? playback_->span().last
+                           : playbackClock_ + static_cast<UtcUs>(std::llround(dtS * playbackRate_ * 1e6));
+  playTo(target, kPlayBudgetNs);
+  maybeEmit(false);
+}
+
+void LiveWorker::setPlaybackRate(double rate) {
+  if (!playback_) return;
+  playbackRate_ = std::isfinite(rate) ? rate : -1.0;
+  lastPlayNs_ = wall_.nsecsElapsed();
+  if (playbackRate_ != 0.0 && !playback_->atEnd())
+    playTimer_->start();
+  else
+    playTimer_->stop();
+  if (playback_->atEnd()) playbackRate_ = 0.0;
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void LiveWorker::seekPlayback(qint64 utc) {
+  if (!playback_) return;
+  const files::TimeSpan span = playback_->span();
+  const UtcUs to = std::clamp<UtcUs>(utc, span.first, span.last);
+  if (to < playbackClock_ && !restartPlayback()) return;
+  playTo(to, kSeekBudgetNs);
+  lastPlayNs_ = wall_.nsecsElapsed();
+  if (playbackRate_ != 0.0 && !playback_->atEnd()) playTimer_->start();
+  dirty_ = true;
+  maybeEmit(true);
+}
+
+void LiveWorker::setPlaybackState() {
+  if (!playback_) {
+    pending_.playback.reset();
+    return;
+  }
+  LiveFrame::Playback p;
+  p.path = playbackPath_;
+  p.first = playback_->span().first;
+  p.last = playback_->span().last;
+  p.clock = playbackClock_;
+  if (const auto stream = playback_->record().estimateSpan()) {
+    p.streamFirst = stream->first;
+    p.streamLast = stream->last;
+  }
+  p.rate = playbackRate_;
+  p.atEnd = playback_->atEnd();
+  p.alerts = playbackAlerts_;
+  pending_.playback = std::move(p);
+  pending_.running = playbackRate_ != 0.0;
+  pending_.rate = playbackRate_;
 }
 
 }  // namespace reckoner::ui

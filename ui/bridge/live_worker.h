@@ -14,6 +14,7 @@
 
 #include "connections/connection_hub.h"
 #include "connections/nmea_destination.h"
+#include "files/record_playback.h"
 #include "sim/live_session.h"
 #include "sim/live_watch.h"
 #include "sim/nmea_output.h"
@@ -36,6 +37,16 @@ class LiveWorker : public QObject {
              quint64 generation);
   /// Ends the run: the lines still queued are read, the session finished, a last frame sent.
   void stop();
+  /// Plays a voyage record back (docs/gui.md, "Playback") instead of the connections: its batches
+  /// through a session and watch made with the recorded settings (files::RecordPlayback), to a clock
+  /// that starts paused at the record's first input; the frames are a live run's, with the playback's
+  /// state. Emits failed() naming the file when it cannot be read.
+  void startPlayback(const QString& path, quint64 generation);
+  /// The playback clock's rate: 0 pauses, 1 the recorded pace, < 0 as fast as possible.
+  void setPlaybackRate(double rate);
+  /// The playback clock to utc (within the record): forward at full speed, back by playing again from
+  /// the start (the first frame after says restarted). The rate is kept.
+  void seekPlayback(qint64 utc);
   void frameConsumed();
   void acknowledgeAlert(reckoner::alerts::AlertId id);
   void silenceAlerts();
@@ -72,6 +83,13 @@ class LiveWorker : public QObject {
   void refreshAis(bool force);
   /// The rows since the last call to the NMEA output (dropped without one: a watch does not grow).
   void sendNmea(const std::vector<sim::SimFrame>& frames);
+  /// Playback: new session and watch with the record's settings (the start and a seek back).
+  bool restartPlayback();
+  /// Playback: the batches up to utc through the session (LiveRun::batch's order), for at most
+  /// budgetNs of wall time and maxBatches; the clock to utc when all were fed, else to the last fed.
+  void playTo(UtcUs utc, qint64 budgetNs, std::size_t maxBatches = SIZE_MAX);
+  void playbackTick();
+  void setPlaybackState();
   /// The route and the charts' answers given to the session now.
   void applyVoyage();
 
@@ -92,6 +110,14 @@ class LiveWorker : public QObject {
   std::unique_ptr<sim::NmeaOutput> nmea_;
   std::optional<geo::Route> route_;
   VoyageGuard guard_;
+  // Playback (null: a live run on the hub).
+  std::unique_ptr<files::RecordPlayback> playback_;
+  QString playbackPath_;
+  std::shared_ptr<const std::vector<files::RecordedAlert>> playbackAlerts_;
+  QTimer* playTimer_ = nullptr;
+  double playbackRate_ = 0.0;
+  UtcUs playbackClock_ = 0;
+  qint64 lastPlayNs_ = 0;
 };
 
 }  // namespace reckoner::ui

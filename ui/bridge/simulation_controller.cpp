@@ -163,13 +163,31 @@ void SimulationController::startLive(conn::ConnectionHub* hub, const sim::LiveOp
                                      const sim::LiveWatchSettings& watch) {
   sim_.post(&SimulationWorker::setRate, 0.0);  // the simulation waits, paused, behind the live run
   live_ = true;
+  playback_ = false;
   latest_ = LiveFrame{};
   live().post(&LiveWorker::start, hub, options, watch, loads_.issue());
+}
+
+void SimulationController::startPlayback(const QString& path) {
+  sim_.post(&SimulationWorker::setRate, 0.0);  // the simulation waits, paused, behind the playback
+  live_ = true;
+  playback_ = true;
+  latest_ = LiveFrame{};
+  live().post(&LiveWorker::startPlayback, path, loads_.issue());
+}
+
+void SimulationController::setPlaybackRate(double rate) {
+  if (isPlayback()) live().post(&LiveWorker::setPlaybackRate, rate);
+}
+
+void SimulationController::seekPlayback(UtcUs utc) {
+  if (isPlayback()) live().post(&LiveWorker::seekPlayback, static_cast<qint64>(utc));
 }
 
 void SimulationController::stopLive() {
   if (!live_) return;
   live_ = false;
+  playback_ = false;
   live().post(&LiveWorker::stop);
   loads_.issue();  // the live run's frames still queued are dropped
 }

@@ -63,9 +63,15 @@ class SimulationController : public QObject {
   /// and DR limits go to the live run.
   void startLive(conn::ConnectionHub* hub, const sim::LiveOptions& options,
                  const sim::LiveWatchSettings& watch);
-  /// Ends Live mode; the window loads a scenario again to go back to the simulation.
+  /// Ends Live mode (or a playback); the window loads a scenario again to go back to the simulation.
   void stopLive();
   [[nodiscard]] bool isLive() const { return live_; }
+  /// Playback of a voyage record in the live worker (LiveWorker::startPlayback), paused at its start;
+  /// commands go to it as in Live mode. stopLive() ends it.
+  void startPlayback(const QString& path);
+  [[nodiscard]] bool isPlayback() const { return live_ && playback_; }
+  void setPlaybackRate(double rate);
+  void seekPlayback(UtcUs utc);
   /// Operator activation and selection of an AIS target (Live mode).
   void activateAis(quint32 mmsi, bool on);
   void selectAis(quint32 mmsi);
@@ -95,6 +101,7 @@ class SimulationController : public QObject {
   WorkerThread<SimulationWorker> sim_{QStringLiteral("simulation")};
   std::unique_ptr<WorkerThread<LiveWorker>> liveThread_;
   bool live_ = false;
+  bool playback_ = false;
   LiveFrame latest_;
   sim::Scenario scenario_;
   LatestRequest loads_;

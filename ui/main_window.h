@@ -114,6 +114,9 @@ class MainWindow : public QMainWindow {
   /// record that cannot be read is reported when the worker opens it). stopLive() ends it.
   bool startPlayback(const QString& path);
   [[nodiscard]] bool isPlayback() const;
+  /// Live > Record the live run…: the live runs started from now on are recorded to this new file
+  /// (docs/recorder.md); empty: not recorded. False with a message when the file exists.
+  bool setLiveRecordPath(const QString& path);
   [[nodiscard]] PlaybackBar* playbackBar() const { return playbackBar_; }
   /// Live > NMEA output: where the live run's own ship, tracks and alerts go as NMEA 0183 (a
   /// --nmea-out destination; empty: nowhere), remembered; false with a message naming what is wrong.
@@ -346,6 +349,7 @@ class MainWindow : public QMainWindow {
   QAction* routeActivateAction_ = nullptr;
   VoyagePanel* voyagePanel_ = nullptr;
   PlaybackBar* playbackBar_ = nullptr;
+  QAction* recordLiveAction_ = nullptr;
   QToolBar* playbackToolbar_ = nullptr;
   QAction* followRouteAction_ = nullptr;
   bool lastFollowing_ = false;

@@ -1,4 +1,5 @@
-// Playback of a voyage record in the window (docs/gui.md, "Playback"; docs/recorder.md): Live ▸ Play back
+// The voyage record in the window: Live ▸ Record the live run… (LiveWorker's recorder) and playback of a
+// record (docs/gui.md, "Playback"; docs/recorder.md): Live ▸ Play back
 // a record… runs the record through the live worker (LiveWorker::startPlayback) as Live mode runs the
 // connections, so the chart, the targets, the tables, the alerts and the plots follow it; the playback
 // bar at the bottom plays, pauses, sets the speed, seeks on the timeline and jumps to the alerts.
@@ -15,6 +16,21 @@
 namespace reckoner::ui {
 
 void MainWindow::buildPlayback(QMenu* liveMenu) {
+  recordLiveAction_ = liveMenu->addAction(tr("Record the live run…"));
+  recordLiveAction_->setObjectName(QStringLiteral("recordLiveAction"));
+  recordLiveAction_->setCheckable(true);
+  recordLiveAction_->setToolTip(
+      tr("Record the next live run (every line, the estimates, the alerts, your actions "
+         "and the charts) to a new voyage record"));
+  connect(recordLiveAction_, &QAction::triggered, this, [this](bool on) {
+    if (!on) {
+      setLiveRecordPath({});
+      return;
+    }
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Record the live run to"), {}, tr("Voyage records (*.sqlite)"));
+    setLiveRecordPath(path);
+  });
   QAction* open = liveMenu->addAction(tr("Play back a record…"), this, [this] {
     const QString path = QFileDialog::getOpenFileName(this, tr("Play back a voyage record"), {},
                                                       tr("Voyage records (*.sqlite);;All files (*)"));
@@ -51,6 +67,25 @@ bool MainWindow::startPlayback(const QString& path) {
   setWindowTitle(tr("Playback %1 — Reckoner").arg(QFileInfo(path).fileName()));
   statusBar()->showMessage(tr("Playback of %1: paused at its start; Play or the timeline").arg(path), 10000);
   updateClock();
+  return true;
+}
+
+bool MainWindow::setLiveRecordPath(const QString& path) {
+  const bool on = !path.isEmpty();
+  if (on && QFileInfo::exists(path)) {
+    reportError(tr("%1: a voyage record is never written over: choose a new file").arg(path));
+    recordLiveAction_->setChecked(false);
+    return false;
+  }
+  controller_->setLiveRecordPath(path);
+  recordLiveAction_->setChecked(on);
+  recordLiveAction_->setText(on ? tr("Record the live run… (%1)").arg(QFileInfo(path).fileName())
+                                : tr("Record the live run…"));
+  if (on)
+    statusBar()->showMessage(controller_->isLive() && !controller_->isPlayback()
+                                 ? tr("The next live run is recorded to %1 (this one is not)").arg(path)
+                                 : tr("The next live run is recorded to %1").arg(path),
+                             8000);
   return true;
 }
 

@@ -3,20 +3,29 @@
 // test time, never copied) sent over loopback UDP with AIS targets of our own encoding interleaved.
 // Own ship appears on the chart from the live DRKF (no truth anywhere), the AIS dock and the chart show
 // the targets, the data monitor the raw lines, the status bar the connection; the window is rendered to
-// PNG to look at; stopping Live mode brings the simulation back. Waits are on conditions only.
+// PNG to look at; stopping Live mode brings the simulation back. The run is recorded (Live > Record the
+// live run…): the record holds every line, the estimates, an operator's CPA limits and the chart shown,
+// and played through the same pipeline gives the same estimates. Waits are on conditions only.
 #include <QDockWidget>
 #include <QFile>
 #include <QNetworkDatagram>
 #include <QSettings>
 #include <QTableView>
+#include <QTemporaryDir>
 #include <QUdpSocket>
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "common/angles.h"
 #include "common/units.h"
+#include "files/live_run.h"
+#include "files/voyage_compare.h"
+#include "files/voyage_record.h"
 #include "io/nmea.h"
 #include "io/text_file.h"
 #include "main_window_test_helpers.h"
@@ -85,35 +94,19 @@ class TstLiveWindow : public QObject {
     QUdpSocket rx;
     QVERIFY(rx.bind(QHostAddress::LocalHost, 0));
     QVERIFY(w.setLiveNmeaOut(QStringLiteral("udp://127.0.0.1:%1").arg(rx.localPort())));
+    // AND Live > Record the live run… to a new file (an existing one is refused, naming it)
+    QTemporaryDir recordDir;
+    const QString record = recordDir.path() + "/live.sqlite";
+    QVERIFY(!w.setLiveRecordPath(QString::fromLatin1(RECKONER_SHARED_DIR "/data/nmea/NOTICE.md")));
+    QVERIFY(w.lastError().contains("NOTICE.md"));
+    QVERIFY(w.setLiveRecordPath(record));
     // WHEN Live mode starts and the recording is sent in bursts, a few AIS targets with it
     QVERIFY(w.startLive());
     QVERIFY(w.isLive());
     QTRY_VERIFY_WITH_TIMEOUT(w.hub()->status().front().state == conn::State::Connected, kTimeoutMs);
     qInfo("connected");
-    const auto lines =
-        reckoner::test::splitLines(io::readTextFile(RECKONER_SHARED_DIR "/data/nmea/gpsd-bundg_zeus_9.log"));
-    const std::vector<std::string> targets = aisAround(52.8502, 5.3136, 6);
-    QUdpSocket tx;
-    QByteArray burst;
-    int sent = 0, rmc = 0;
-    for (const std::string& l : lines) {
-      if (l.empty() || l.front() == '#') continue;
-      const bool timed = l.rfind("$GPRMC,", 0) == 0;
-      if (timed && !burst.isEmpty()) {
-        QCOMPARE(tx.writeDatagram(burst, QHostAddress::LocalHost, port), burst.size());
-        burst.clear();
-        // the hub keeps up: never more than a few hundred lines ahead of what it delivered
-        QTRY_VERIFY_WITH_TIMEOUT(static_cast<int>(w.hub()->status().front().lines) >= sent - 200, kTimeoutMs);
-      }
-      burst += QByteArray::fromStdString(l + "\r\n");
-      ++sent;
-      if (timed && ++rmc % 5 == 0)
-        for (const std::string& a : targets) {
-          burst += QByteArray::fromStdString(a + "\r\n");
-          ++sent;
-        }
-    }
-    QCOMPARE(tx.writeDatagram(burst, QHostAddress::LocalHost, port), burst.size());
+    const int sent = sendZeus(w, port);
+    QVERIFY2(sent > 0, "the recording was not sent, or the hub did not keep up");
     qInfo("sent %d lines; the hub delivered %llu", sent,
           static_cast<unsigned long long>(w.hub()->status().front().lines));
     // THEN the live frames come: own ship from the live DRKF, no truth, the run's origin for the chart
@@ -123,8 +116,35 @@ class TstLiveWindow : public QObject {
     QVERIFY(!live.frame.hasTruth);
     QVERIFY(live.liveOrigin.has_value());
     QVERIFY(std::isnan(w.history().own().back().truePos[0]));
+    w.controller()->setCpaLimits(926.0, 600.0);  // an operator action, for the record
     RK_COMPARE_NEAR(live.liveOrigin->latDeg, 52.85, 0.01);
-    // AND the AIS dock lists the six targets, with range and CPA from own ship
+    verifyAisAndNmeaOutput(w, rx);
+    if (QTest::currentTestFailed()) return;
+    // AND the data monitor shows the raw lines, the clock says LIVE
+    QTRY_VERIFY_WITH_TIMEOUT(w.dataMonitor()->model()->rowCount() > 100, kTimeoutMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(w.clock()->text().startsWith("LIVE"), qPrintable(w.clock()->text()),
+                              kTimeoutMs);
+    qInfo("monitor rows %d, clock %s", w.dataMonitor()->model()->rowCount(), qPrintable(w.clock()->text()));
+    // AND the chart shows it all (looked at: screenshots/live_window.png)
+    w.chart()->setRangeNm(1.5);
+    if (auto* d = w.findChild<QDockWidget*>(QStringLiteral("aisDock"))) d->raise();
+    saveWindowShot(w, QStringLiteral("live_window"));
+    // WHEN Live mode stops THEN the simulation is back, with its truth
+    w.stopLive();
+    QVERIFY(!w.isLive());
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !w.history().empty() && !w.history().latest().live && w.history().latest().frame.hasTruth,
+        kTimeoutMs);
+    QCOMPARE(w.aisModel()->rowCount(), 0);
+    // AND the record holds the lines the run took, its estimates, the operator's action and the chart;
+    // played through the same pipeline it gives the same estimates, tracks and alerts
+    verifyRecord(record.toStdString(), sent);
+  }
+
+ private:
+  /// The AIS dock lists the six targets, with range and CPA from own ship; the NMEA output carries own
+  /// ship, every sentence read back by the project's reader.
+  static void verifyAisAndNmeaOutput(MainWindow& w, QUdpSocket& rx) {
     QTRY_COMPARE_WITH_TIMEOUT(w.aisModel()->rowCount(), 6, kTimeoutMs);
     qInfo("AIS rows %d", w.aisModel()->rowCount());
     const auto aisState = [&w] {
@@ -146,7 +166,6 @@ class TstLiveWindow : public QObject {
       QVERIFY2(t.rangeM > nmToMetres(0.5) && t.rangeM < nmToMetres(3.0),
                qPrintable(QString::number(t.rangeM)));
     QCOMPARE(w.history().latest().ownShipSource, sim::LiveOwnShipSource::Drkf);
-    // AND the NMEA output carries own ship, every sentence read back by the project's reader
     int rmcOut = 0, ggaOut = 0;
     QTRY_VERIFY_WITH_TIMEOUT(
         [&] {
@@ -166,22 +185,69 @@ class TstLiveWindow : public QObject {
         }(),
         kTimeoutMs);
     qInfo("NMEA output: %d RMC, %d GGA read back", rmcOut, ggaOut);
-    // AND the data monitor shows the raw lines, the clock says LIVE
-    QTRY_VERIFY_WITH_TIMEOUT(w.dataMonitor()->model()->rowCount() > 100, kTimeoutMs);
-    QTRY_VERIFY2_WITH_TIMEOUT(w.clock()->text().startsWith("LIVE"), qPrintable(w.clock()->text()),
-                              kTimeoutMs);
-    qInfo("monitor rows %d, clock %s", w.dataMonitor()->model()->rowCount(), qPrintable(w.clock()->text()));
-    // AND the chart shows it all (looked at: screenshots/live_window.png)
-    w.chart()->setRangeNm(1.5);
-    if (auto* d = w.findChild<QDockWidget*>(QStringLiteral("aisDock"))) d->raise();
-    saveWindowShot(w, QStringLiteral("live_window"));
-    // WHEN Live mode stops THEN the simulation is back, with its truth
-    w.stopLive();
-    QVERIFY(!w.isLive());
-    QTRY_VERIFY_WITH_TIMEOUT(
-        !w.history().empty() && !w.history().latest().live && w.history().latest().frame.hasTruth,
-        kTimeoutMs);
-    QCOMPARE(w.aisModel()->rowCount(), 0);
+  }
+
+  /// The Zeus recording sent to the live UDP port in bursts (one per RMC), a few AIS targets with every
+  /// fifth, the hub kept up with; returns the lines sent.
+  static int sendZeus(MainWindow& w, quint16 port) {
+    const auto lines =
+        reckoner::test::splitLines(io::readTextFile(RECKONER_SHARED_DIR "/data/nmea/gpsd-bundg_zeus_9.log"));
+    const std::vector<std::string> targets = aisAround(52.8502, 5.3136, 6);
+    QUdpSocket tx;
+    QByteArray burst;
+    int sent = 0, rmc = 0;
+    for (const std::string& l : lines) {
+      if (l.empty() || l.front() == '#') continue;
+      const bool timed = l.rfind("$GPRMC,", 0) == 0;
+      if (timed && !burst.isEmpty()) {
+        if (tx.writeDatagram(burst, QHostAddress::LocalHost, port) != burst.size()) return -1;
+        burst.clear();
+        // the hub keeps up: never more than a few hundred lines ahead of what it delivered
+        if (!QTest::qWaitFor([&] { return static_cast<int>(w.hub()->status().front().lines) >= sent - 200; },
+                             kTimeoutMs))
+          return -1;
+      }
+      burst += QByteArray::fromStdString(l + "\r\n");
+      ++sent;
+      if (timed && ++rmc % 5 == 0)
+        for (const std::string& a : targets) {
+          burst += QByteArray::fromStdString(a + "\r\n");
+          ++sent;
+        }
+    }
+    if (tx.writeDatagram(burst, QHostAddress::LocalHost, port) != burst.size()) return -1;
+    return sent;
+  }
+
+  static void verifyRecord(const std::string& path, int sent) {
+    QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(QString::fromStdString(path)), kTimeoutMs);
+    std::optional<files::VoyageRecord> rec;
+    QTRY_VERIFY_WITH_TIMEOUT((rec.emplace(path), rec->endUtc().has_value()), kTimeoutMs);
+    const auto actions = rec->operatorActions();
+    const auto chartsShown = rec->charts();
+    qInfo(
+        "record: %lld of %d lines, %zu estimates, %zu alert entries, %zu operator actions, %zu chart events",
+        static_cast<long long>(rec->inputCount()), sent, rec->estimates(INT64_MIN, INT64_MAX).size(),
+        rec->alerts().size(), actions.size(), chartsShown.size());
+    QVERIFY(rec->inputCount() > sent * 9 / 10);
+    QVERIFY(std::any_of(actions.begin(), actions.end(), [](const files::OperatorAction& a) {
+      return a.action == "cpa_limits" && a.value.find("cpa_m=926") != std::string::npos;
+    }));
+    QVERIFY(std::any_of(chartsShown.begin(), chartsShown.end(), [](const files::ChartEvent& c) {
+      return c.event == "loaded" && c.name == "RK5SOUND";
+    }));
+    QTemporaryDir out;
+    files::LiveRun replay(rec->liveOptions(), out.path().toStdString());
+    files::RecordComparer compare(*rec);
+    rec->forEachBatch([&](std::int64_t, std::span<const files::InputLine> b) {
+      compare.add(replay.batch(b, 0), replay.session().result().targetLabels);
+    });
+    compare.add(replay.finish(rec->inputName(), 0), replay.session().result().targetLabels);
+    const files::RecordComparison c = compare.finish();
+    qInfo("replayed: own-ship rows %ld equal, %ld different; alert entries %ld equal, %ld different",
+          c.ownEqual, c.ownDifferent, c.alertsEqual, c.alertsDifferent);
+    QVERIFY2(c.equal(), c.firstDifference.c_str());
+    QVERIFY(c.ownEqual > 100);
   }
 };
 

@@ -1,5 +1,6 @@
 #include "ui/bridge/live_worker.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,9 @@ namespace {
 constexpr int kTickMs = 1000;
 constexpr qint64 kMinEmitIntervalNs = 33'000'000;  // <= 30 frames per second
 constexpr qint64 kAisRefreshNs = 250'000'000;
-constexpr int kPlayTickMs = 20;               // the playback clock's step
+constexpr int kPlayTickMs = 20;
+constexpr int kRecordTickMs = 100;  // the record's wall-clock commits (as reckoner-cli live's) // the
+                                    // playback clock's step
 constexpr qint64 kPlayBudgetNs = 15'000'000;  // of a tick's wall time fed to the pipeline
 constexpr qint64 kSeekBudgetNs =
     3'600'000'000'000;  // a seek runs to its time (an hour of wall time: never)  // the AIS table copied for
@@ -27,6 +30,17 @@ LiveWorker::LiveWorker(QObject* parent)
     : QObject(parent), timer_(new QTimer(this)), playTimer_(new QTimer(this)) {
   timer_->setInterval(kTickMs);
   connect(timer_, &QTimer::timeout, this, &LiveWorker::tick);
+  recordTimer_ = new QTimer(this);
+  recordTimer_->setInterval(kRecordTickMs);
+  connect(recordTimer_, &QTimer::timeout, this, [this] {
+    try {
+      if (recorder_) recorder_->tick(systemUtc());
+    } catch (const std::exception& e) {
+      recorder_.reset();
+      recordTimer_->stop();
+      emit failed(QString::fromStdString(std::string("the voyage record stopped: ") + e.what()));
+    }
+  });
   playTimer_->setInterval(kPlayTickMs);
   connect(playTimer_, &QTimer::timeout, this, &LiveWorker::playbackTick);
   wall_.start();
@@ -52,6 +66,7 @@ void LiveWorker::start(conn::ConnectionHub* hub, const sim::LiveOptions& options
   applyVoyage();
   process_ = sim::drkfConfigFor(o.replay.settings).process;
   hub_ = hub;
+  startRecording(o);
   pending_ = LiveFrame{};
   pending_.live = true;
   folder_.clear();
@@ -71,6 +86,7 @@ void LiveWorker::stop() {
   if (!session_) return;
   disconnect(linesConnection_);
   timer_->stop();
+  finishRecording();
   session_.reset();
   watch_.reset();
   hub_ = nullptr;
@@ -80,15 +96,19 @@ void LiveWorker::consume() {
   if (!session_ || !hub_) return;
   const std::vector<conn::ReceivedLine> lines = hub_->take(kBatchLines);
   std::optional<UtcUs> received;
+  std::vector<files::InputLine> in;
+  if (recorder_) in.reserve(lines.size());
   for (const conn::ReceivedLine& l : lines) {
     received = l.receivedUtc;
-    if (l.role == conn::Role::Radar)
+    const bool radar = l.role == conn::Role::Radar;
+    if (radar)
       session_->radar(l.line, l.receivedUtc);
     else
       session_->nmea(l.line, l.receivedUtc, l.source);
+    if (recorder_) in.push_back({l.source, l.line, l.receivedUtc, radar});
   }
   lines_ += lines.size();
-  absorb(received);
+  absorb(received, in);
   // A full batch leaves lines queued: come back after the commands waiting in the event loop.
   if (lines.size() == kBatchLines)
     QMetaObject::invokeMethod(this, &LiveWorker::consume, Qt::QueuedConnection);
@@ -101,9 +121,35 @@ void LiveWorker::tick() {
   maybeEmit(true);
 }
 
-void LiveWorker::absorb(std::optional<UtcUs> receivedUtc) {
+void LiveWorker::absorb(std::optional<UtcUs> receivedUtc, std::span<const files::InputLine> lines) {
   sim::LiveWatch::Taken taken = watch_->absorb(*session_, receivedUtc);
-  sendNmea(taken.frames);
+  files::LiveBatch out;
+  out.own = session_->takeOwnRows();
+  out.tracks = session_->takeTrackRows(&out.trackUtc);
+  out.alerts = watch_->alerts().takeLog();
+  out.alertZeroUtc = watch_->zeroUtc();
+  const std::vector<alerts::AlertLogEntry> log = out.alerts;
+  sendNmea(out, taken.frames);
+  if (recorder_) {
+    // What a tick took waits for the next batch: a record holds rows only with the lines they came of.
+    files::LiveBatch& r = unrecorded_;
+    r.own.insert(r.own.end(), out.own.begin(), out.own.end());
+    r.tracks.insert(r.tracks.end(), out.tracks.begin(), out.tracks.end());
+    r.trackUtc.insert(r.trackUtc.end(), out.trackUtc.begin(), out.trackUtc.end());
+    r.alerts.insert(r.alerts.end(), out.alerts.begin(), out.alerts.end());
+    r.alertZeroUtc = out.alertZeroUtc;
+    if (!lines.empty()) {
+      try {
+        recorder_->batch(lines, r, session_->result().targetLabels, session_->clockAt(receivedUtc),
+                         systemUtc());
+      } catch (const std::exception& e) {
+        recorder_.reset();
+        recordTimer_->stop();
+        emit failed(QString::fromStdString(std::string("the voyage record stopped: ") + e.what()));
+      }
+      unrecorded_ = files::LiveBatch{};
+    }
+  }
   if (session_->started()) {
     pending_.liveOrigin = session_->result().origin;
     pending_.liveUtc0 = session_->result().utc0;
@@ -117,7 +163,6 @@ void LiveWorker::absorb(std::optional<UtcUs> receivedUtc) {
     pending_.frame = std::move(f);
     dirty_ = true;
   }
-  const std::vector<alerts::AlertLogEntry> log = watch_->alerts().takeLog();
   if (!log.empty()) {
     pending_.alertLog.insert(pending_.alertLog.end(), log.begin(), log.end());
     dirty_ = true;
@@ -125,13 +170,11 @@ void LiveWorker::absorb(std::optional<UtcUs> receivedUtc) {
   refreshAis(false);
 }
 
-void LiveWorker::sendNmea(const std::vector<sim::SimFrame>& frames) {
-  const std::vector<sim::ReplayOwnRow> own = session_->takeOwnRows();
-  std::vector<UtcUs> trackUtc;
-  const std::vector<sim::TrackRow> tracks = session_->takeTrackRows(&trackUtc);
+void LiveWorker::sendNmea(const files::LiveBatch& out, const std::vector<sim::SimFrame>& frames) {
   if (!nmeaDest_) return;
   std::vector<std::string> lines;
-  if (session_->started()) lines = sim::rowsNmea(*nmea_, own, tracks, trackUtc, session_->frame());
+  if (session_->started())
+    lines = sim::rowsNmea(*nmea_, out.own, out.tracks, out.trackUtc, session_->frame());
   // The autopilot's sentences of every frame monitored against the route.
   if (const auto& route = session_->voyage().spec().route)
     for (const sim::SimFrame& f : frames)
@@ -152,6 +195,8 @@ void LiveWorker::setRoute(const std::optional<geo::Route>& route) {
 }
 
 void LiveWorker::setCharts(std::vector<charts::CellPtr> cells) {
+  cells_ = cells;
+  recordCharts();
   guard_.setCells(std::move(cells));
   applyVoyage();
 }
@@ -238,12 +283,15 @@ void LiveWorker::frameConsumed() {
 
 void LiveWorker::acknowledgeAlert(alerts::AlertId id) {
   if (!watch_ || !watch_->acknowledge(id)) return;
+  recordAction("acknowledge",
+               std::string("alert:") + alerts::traitsOf(id.kind).name + ':' + std::to_string(id.source), "");
   dirty_ = true;
   maybeEmit(true);
 }
 
 void LiveWorker::silenceAlerts() {
   if (!watch_ || watch_->silenceAll() == 0) return;
+  recordAction("silence_all", "", "");
   dirty_ = true;
   maybeEmit(true);
 }
@@ -252,6 +300,7 @@ void LiveWorker::setCpaLimits(double cpaM, double tcpaS) {
   if (!watch_) return;
   try {
     watch_->setCpaLimits(cpaM, tcpaS);
+    recordAction("cpa_limits", "", "cpa_m=" + std::to_string(cpaM) + ";tcpa_s=" + std::to_string(tcpaS));
   } catch (const std::exception& e) {
     emit failed(QString::fromStdString(std::string("CPA/TCPA limits: ") + e.what()));
   }
@@ -261,19 +310,121 @@ void LiveWorker::setDrLimit(double metres) {
   if (!watch_) return;
   try {
     watch_->setDrLimit(metres);
+    recordAction("dr_limit", "", "m=" + std::to_string(metres));
   } catch (const std::exception& e) {
     emit failed(QString::fromStdString(std::string("dead-reckoning limit: ") + e.what()));
   }
 }
 
 void LiveWorker::activateAis(quint32 mmsi, bool on) {
-  if (watch_ && watch_->activate(mmsi, on)) refreshAis(true);
+  if (watch_ && watch_->activate(mmsi, on)) {
+    recordAction(on ? "ais_activate" : "ais_sleep", "mmsi:" + std::to_string(mmsi), "");
+    refreshAis(true);
+  }
   maybeEmit(true);
 }
 
 void LiveWorker::selectAis(quint32 mmsi) {
-  if (watch_ && watch_->select(mmsi)) refreshAis(true);
+  if (watch_ && watch_->select(mmsi)) {
+    recordAction("ais_select", "mmsi:" + std::to_string(mmsi), "");
+    refreshAis(true);
+  }
   maybeEmit(true);
+}
+
+// ---- recording ----------------------------------------------------------------------------------
+
+void LiveWorker::setRecordPath(const QString& path) {
+  recordPath_ = path;
+}
+
+void LiveWorker::startRecording(const sim::LiveOptions& options) {
+  recorder_.reset();
+  unrecorded_ = files::LiveBatch{};
+  recordedCells_.clear();
+  if (recordPath_.isEmpty() || !hub_) return;
+  files::RecorderSettings s;
+  s.program = "reckoner";
+  s.programVersion = QCoreApplication::applicationVersion().toStdString();
+  s.options = options;
+  for (const conn::SourceConfig& c : hub_->sources())
+    s.sources.push_back({0, c.name, c.role == conn::Role::Radar ? "radar" : "nmea", conn::toSpec(c)});
+  try {
+    recorder_ = std::make_unique<files::VoyageRecorder>(recordPath_.toStdString(), s, systemUtc());
+  } catch (const std::exception& e) {
+    emit failed(QString::fromStdString(std::string("the live run is not recorded: ") + e.what()));
+    return;
+  }
+  recordCharts();
+  recordTimer_->start();
+}
+
+void LiveWorker::finishRecording() {
+  if (!recorder_ || !session_) return;
+  recordTimer_->stop();
+  try {
+    session_->finish();
+    sim::LiveWatch::Taken taken = watch_->absorb(*session_, std::nullopt);
+    (void)taken;
+    files::LiveBatch& last = unrecorded_;
+    for (sim::ReplayOwnRow& r : session_->takeOwnRows()) last.own.push_back(std::move(r));
+    std::vector<UtcUs> utc;
+    std::vector<sim::TrackRow> tracks = session_->takeTrackRows(&utc);
+    last.tracks.insert(last.tracks.end(), tracks.begin(), tracks.end());
+    last.trackUtc.insert(last.trackUtc.end(), utc.begin(), utc.end());
+    for (alerts::AlertLogEntry& e : watch_->alerts().takeLog()) last.alerts.push_back(e);
+    last.alertZeroUtc = watch_->zeroUtc();
+    recorder_->finish(last, session_->result().targetLabels, systemUtc());
+  } catch (const std::exception& e) {
+    emit failed(QString::fromStdString(std::string("the voyage record's end: ") + e.what()));
+  }
+  recorder_.reset();
+  unrecorded_ = files::LiveBatch{};
+}
+
+void LiveWorker::recordAction(const char* action, const std::string& subject, const std::string& value) {
+  if (!recorder_ || !watch_) return;
+  try {
+    files::OperatorAction a;
+    a.afterBatch = recorder_->batches();
+    a.wallUtc = systemUtc();
+    if (watch_->zeroUtc() != 0) a.streamUtc = watch_->nowUtc();
+    a.action = action;
+    a.subject = subject;
+    a.value = value;
+    recorder_->operatorAction(std::move(a));
+  } catch (const std::exception& e) {
+    emit failed(QString::fromStdString(std::string("the voyage record: ") + e.what()));
+  }
+}
+
+void LiveWorker::recordCharts() {
+  if (!recorder_) return;
+  const auto has = [](const std::vector<charts::CellPtr>& in, const charts::CellPtr& c) {
+    return std::find(in.begin(), in.end(), c) != in.end();
+  };
+  const auto event = [&](const charts::CellPtr& c, const char* what) {
+    const charts::CellInfo& i = c->info();
+    files::ChartEvent e;
+    e.wallUtc = systemUtc();
+    if (watch_ && watch_->zeroUtc() != 0) e.streamUtc = watch_->nowUtc();
+    e.event = what;
+    e.name = i.name;
+    e.edition = i.edition;
+    e.updateNumber = std::to_string(i.updateNumber);
+    e.issueDate = i.issueDate;
+    e.path = i.path;
+    recorder_->chart(e);
+  };
+  try {
+    for (const charts::CellPtr& c : recordedCells_)
+      if (!has(cells_, c)) event(c, "unloaded");
+    for (const charts::CellPtr& c : cells_)
+      if (!has(recordedCells_, c)) event(c, "loaded");
+    recordedCells_ = cells_;
+  } catch (const std::exception& e) {
+    emit failed(QString::fromStdString(std::string("the voyage record: ") + e.what()));
+  }
 }
 
 // ---- playback -----------------------------------------------------------------------------------

@@ -11,10 +11,13 @@
 #include <QTimer>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "connections/connection_hub.h"
 #include "connections/nmea_destination.h"
+#include "files/live_output.h"
 #include "files/record_playback.h"
+#include "files/voyage_recorder.h"
 #include "sim/live_session.h"
 #include "sim/live_watch.h"
 #include "sim/nmea_output.h"
@@ -37,6 +40,11 @@ class LiveWorker : public QObject {
              quint64 generation);
   /// Ends the run: the lines still queued are read, the session finished, a last frame sent.
   void stop();
+  /// The voyage record of the live runs started from now on (files::VoyageRecorder; a new file, as
+  /// `reckoner-cli live --record`): every line, the estimates, the alerts, the operator's actions and
+  /// the charts shown. Empty: none. A file that cannot be made is reported (failed()) and the run goes
+  /// on unrecorded.
+  void setRecordPath(const QString& path);
   /// Plays a voyage record back (docs/gui.md, "Playback") instead of the connections: its batches
   /// through a session and watch made with the recorded settings (files::RecordPlayback), to a clock
   /// that starts paused at the record's first input; the frames are a live run's, with the playback's
@@ -77,12 +85,19 @@ class LiveWorker : public QObject {
  private:
   void consume();
   void tick();
-  void absorb(std::optional<UtcUs> receivedUtc);
+  /// The watch after lines (or a tick: none): frames to the window, rows to the NMEA output and, with
+  /// the lines, to the record.
+  void absorb(std::optional<UtcUs> receivedUtc, std::span<const files::InputLine> lines = {});
+  /// Starts the recorder for a run just started; reports and drops it when the file cannot be made.
+  void startRecording(const sim::LiveOptions& options);
+  void finishRecording();
+  void recordAction(const char* action, const std::string& subject, const std::string& value);
+  void recordCharts();
   void maybeEmit(bool force);
   /// The AIS table copied into the pending frame when it changed (at most 4 times a second unless forced).
   void refreshAis(bool force);
   /// The rows since the last call to the NMEA output (dropped without one: a watch does not grow).
-  void sendNmea(const std::vector<sim::SimFrame>& frames);
+  void sendNmea(const files::LiveBatch& out, const std::vector<sim::SimFrame>& frames);
   /// Playback: new session and watch with the record's settings (the start and a seek back).
   bool restartPlayback();
   /// Playback: the batches up to utc through the session (LiveRun::batch's order), for at most
@@ -110,6 +125,13 @@ class LiveWorker : public QObject {
   std::unique_ptr<sim::NmeaOutput> nmea_;
   std::optional<geo::Route> route_;
   VoyageGuard guard_;
+  // Recording (null: none): the file for the next run, the recorder of this one, the rows a tick took
+  // (recorded with the next batch), the cells shown (their loads and unloads are recorded).
+  QString recordPath_;
+  std::unique_ptr<files::VoyageRecorder> recorder_;
+  files::LiveBatch unrecorded_;
+  std::vector<charts::CellPtr> cells_, recordedCells_;
+  QTimer* recordTimer_ = nullptr;
   // Playback (null: a live run on the hub).
   std::unique_ptr<files::RecordPlayback> playback_;
   QString playbackPath_;

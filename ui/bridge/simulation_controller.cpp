@@ -168,6 +168,10 @@ void SimulationController::startLive(conn::ConnectionHub* hub, const sim::LiveOp
   live().post(&LiveWorker::start, hub, options, watch, loads_.issue());
 }
 
+void SimulationController::setLiveRecordPath(const QString& path) {
+  live().post(&LiveWorker::setRecordPath, path);
+}
+
 void SimulationController::startPlayback(const QString& path) {
   sim_.post(&SimulationWorker::setRate, 0.0);  // the simulation waits, paused, behind the playback
   live_ = true;

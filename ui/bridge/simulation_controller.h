@@ -75,6 +75,8 @@ class SimulationController : public QObject {
   /// Operator activation and selection of an AIS target (Live mode).
   void activateAis(quint32 mmsi, bool on);
   void selectAis(quint32 mmsi);
+  /// The voyage record of the live runs started from now on (LiveWorker::setRecordPath); empty: none.
+  void setLiveRecordPath(const QString& path);
   /// The live run's NMEA 0183 output (LiveWorker::setNmeaOut); empty: none.
   void setLiveNmeaOut(const QString& spec);
 

@@ -38,6 +38,10 @@ void MainWindow::buildPlayback(QMenu* liveMenu) {
   });
   open->setObjectName(QStringLiteral("playbackOpenAction"));
   playbackBar_ = new PlaybackBar(this);
+  playbackBar_->setObjectName(QStringLiteral("playbackBar"));
+  playbackBar_->setToolTip(
+      tr("Playback of a voyage record: play, pause, speed, the timeline with its alerts, "
+         "the jumps to them"));
   playbackToolbar_ = new QToolBar(tr("Playback"), this);
   playbackToolbar_->setObjectName(QStringLiteral("playbackToolbar"));
   playbackToolbar_->addWidget(playbackBar_);

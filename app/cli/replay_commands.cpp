@@ -17,6 +17,7 @@
 #include "common/angles.h"
 #include "common/time.h"
 #include "files/live_run.h"
+#include "files/recorded_actions.h"
 #include "files/track_output.h"
 #include "files/voyage_compare.h"
 #include "files/voyage_record.h"
@@ -142,10 +143,17 @@ int replayRecording(const ReplayArgs& a) {
   }
   files::RecordComparer compare(rec);
   long batches = 0;
-  rec.forEachBatch([&](std::int64_t, std::span<const files::InputLine> lines) {
+  // The operator's actions put to the watch after the batch each followed, as in the run.
+  files::ActionReplayer actions(rec.operatorActions());
+  rec.forEachBatch([&](std::int64_t batch, std::span<const files::InputLine> lines) {
     compare.add(run.batch(lines, 0), run.session().result().targetLabels);
+    actions.afterBatch(batch, run.watch());
     ++batches;
   });
+  if (actions.skipped() > 0)
+    std::fprintf(stderr,
+                 "reckoner-cli: warning: %s: %ld operator actions this program cannot apply were skipped\n",
+                 rec.path().c_str(), actions.skipped());
   compare.add(run.finish(rec.inputName(), 0), run.session().result().targetLabels);
   const files::RecordComparison c = compare.finish();
   for (const auto& w : run.session().result().warnings)

@@ -35,8 +35,9 @@ bool RecordPlayback::atEnd() {
   return !fillBatch();
 }
 
-std::size_t RecordPlayback::feedTo(UtcUs utc, const std::function<void(std::span<const InputLine>)>& feed,
-                                   std::size_t maxBatches) {
+std::size_t RecordPlayback::feedTo(
+    UtcUs utc, const std::function<void(std::int64_t batch, std::span<const InputLine>)>& feed,
+    std::size_t maxBatches) {
   std::size_t fed = 0;
   std::vector<InputLine> lines;
   while (fed < maxBatches && fillBatch()) {
@@ -51,7 +52,7 @@ std::size_t RecordPlayback::feedTo(UtcUs utc, const std::function<void(std::span
       ahead_.pop_front();
     }
     position_ = std::max(position_, at);
-    feed(lines);
+    feed(batch, lines);
     ++fed;
   }
   return fed;

@@ -30,9 +30,10 @@ class RecordPlayback {
   /// The receive time of the last batch handed out (span().first before any).
   [[nodiscard]] UtcUs position() const { return position_; }
   [[nodiscard]] bool atEnd();
-  /// Hands every batch not yet handed out whose last line was received at or before utc to `feed`, in
-  /// order, at most maxBatches of them; returns how many.
-  std::size_t feedTo(UtcUs utc, const std::function<void(std::span<const InputLine>)>& feed,
+  /// Hands every batch not yet handed out whose last line was received at or before utc to `feed` with
+  /// its number (OperatorAction::afterBatch's), in order, at most maxBatches of them; returns how many.
+  std::size_t feedTo(UtcUs utc,
+                     const std::function<void(std::int64_t batch, std::span<const InputLine>)>& feed,
                      std::size_t maxBatches = SIZE_MAX);
   /// Back to before the first batch.
   void rewind();

@@ -24,6 +24,7 @@
 #include "common/angles.h"
 #include "common/units.h"
 #include "files/live_run.h"
+#include "files/recorded_actions.h"
 #include "files/voyage_compare.h"
 #include "files/voyage_record.h"
 #include "io/nmea.h"
@@ -239,9 +240,12 @@ class TstLiveWindow : public QObject {
     QTemporaryDir out;
     files::LiveRun replay(rec->liveOptions(), out.path().toStdString());
     files::RecordComparer compare(*rec);
-    rec->forEachBatch([&](std::int64_t, std::span<const files::InputLine> b) {
+    files::ActionReplayer replayer(rec->operatorActions());
+    rec->forEachBatch([&](std::int64_t batch, std::span<const files::InputLine> b) {
       compare.add(replay.batch(b, 0), replay.session().result().targetLabels);
+      replayer.afterBatch(batch, replay.watch());
     });
+    QCOMPARE(replayer.applied(), 1L);
     compare.add(replay.finish(rec->inputName(), 0), replay.session().result().targetLabels);
     const files::RecordComparison c = compare.finish();
     qInfo("replayed: own-ship rows %ld equal, %ld different; alert entries %ld equal, %ld different",

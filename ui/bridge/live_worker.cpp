@@ -7,6 +7,7 @@
 #include <exception>
 
 #include "files/live_run.h"
+#include "files/recorded_actions.h"
 
 namespace reckoner::ui {
 namespace {
@@ -83,6 +84,7 @@ void LiveWorker::stop() {
   playTimer_->stop();
   playback_.reset();
   playbackAlerts_.reset();
+  playbackActions_.reset();
   if (!session_) return;
   disconnect(linesConnection_);
   timer_->stop();
@@ -441,6 +443,7 @@ void LiveWorker::startPlayback(const QString& path, quint64 generation) {
   }
   playbackPath_ = path;
   playbackAlerts_ = std::make_shared<const std::vector<files::RecordedAlert>>(playback_->alerts());
+  playbackActions_.emplace(playback_->record().operatorActions());
   playbackRate_ = 0.0;
   if (!restartPlayback()) return;
   // To the first estimate, so the window has own ship to show.
@@ -462,6 +465,7 @@ bool LiveWorker::restartPlayback() {
   }
   process_ = sim::drkfConfigFor(o.replay.settings).process;
   playback_->rewind();
+  if (playbackActions_) playbackActions_->rewind();
   playbackClock_ = playback_->span().first;
   pending_ = LiveFrame{};
   pending_.live = true;
@@ -475,7 +479,7 @@ bool LiveWorker::restartPlayback() {
 
 void LiveWorker::playTo(UtcUs utc, qint64 budgetNs, std::size_t maxBatches) {
   const qint64 start = wall_.nsecsElapsed();
-  const auto feed = [this](std::span<const files::InputLine> lines) {
+  const auto feed = [this](std::int64_t batch, std::span<const files::InputLine> lines) {
     // As files::LiveRun::batch: every line into the session, then the watch absorbs at the last one's time.
     std::optional<UtcUs> received;
     for (const files::InputLine& l : lines) {
@@ -487,6 +491,7 @@ void LiveWorker::playTo(UtcUs utc, qint64 budgetNs, std::size_t maxBatches) {
     }
     lines_ += lines.size();
     absorb(received);
+    if (playbackActions_) playbackActions_->afterBatch(batch, *watch_);  // the operator's, as in the run
   };
   bool all = false;
   std::size_t fed = 0;

@@ -17,6 +17,7 @@
 #include "connections/nmea_destination.h"
 #include "files/live_output.h"
 #include "files/record_playback.h"
+#include "files/recorded_actions.h"
 #include "files/voyage_recorder.h"
 #include "sim/live_session.h"
 #include "sim/live_watch.h"
@@ -136,6 +137,7 @@ class LiveWorker : public QObject {
   std::unique_ptr<files::RecordPlayback> playback_;
   QString playbackPath_;
   std::shared_ptr<const std::vector<files::RecordedAlert>> playbackAlerts_;
+  std::optional<files::ActionReplayer> playbackActions_;  ///< the record's operator actions, applied again
   QTimer* playTimer_ = nullptr;
   double playbackRate_ = 0.0;
   UtcUs playbackClock_ = 0;

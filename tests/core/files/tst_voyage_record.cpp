@@ -16,6 +16,7 @@
 
 #include "files/live_run.h"
 #include "files/record_playback.h"
+#include "files/recorded_actions.h"
 #include "files/scenario_json.h"
 #include "files/voyage_compare.h"
 #include "files/voyage_record.h"
@@ -123,7 +124,10 @@ class TestVoyageRecord : public QObject {
         alerts += out.alerts.size();
         lines += b.size();
       }
-      recorder.operatorAction({0, kDay + 5, kDay + 6, "acknowledge", "alert:LOST AIS TARGET:1", ""});
+      // an operator's action, as the window makes and records it (replays apply it again)
+      const files::OperatorAction ack{0, kDay + 5, kDay + 6, "cpa_limits", "", "cpa_m=500;tcpa_s=300"};
+      QVERIFY(files::applyOperatorAction(ack, run.watch()));
+      recorder.operatorAction(ack);
       recorder.chart(
           {kDay + 7, std::nullopt, "loaded", "US5WA22M", "12", "3", "20250101", "/charts/US5WA22M.000"});
       const files::LiveBatch last = run.finish("live", batches.back().front().receivedUtc + 1);
@@ -185,10 +189,13 @@ class TestVoyageRecord : public QObject {
     files::LiveRun replay(rec.liveOptions(), d + "/replay");
     files::RecordComparer compare(rec);
     std::size_t replayedBatches = 0;
-    rec.forEachBatch([&](std::int64_t, std::span<const files::InputLine> b) {
+    files::ActionReplayer actions(rec.operatorActions());
+    rec.forEachBatch([&](std::int64_t batch, std::span<const files::InputLine> b) {
       compare.add(replay.batch(b, 0), replay.session().result().targetLabels);
+      actions.afterBatch(batch, replay.watch());
       ++replayedBatches;
     });
+    QCOMPARE(actions.applied(), 1L);
     compare.add(replay.finish(rec.inputName(), 0), replay.session().result().targetLabels);
     const files::RecordComparison c = compare.finish();
     // THEN every recorded estimate, track row and alert entry is computed again, exactly
@@ -218,8 +225,10 @@ class TestVoyageRecord : public QObject {
       std::filesystem::create_directories(out);
       files::LiveRun run(playback.options(), out);
       files::RecordComparer compare(playback.record());
-      const auto feed = [&](std::span<const files::InputLine> b) {
+      files::ActionReplayer actions(playback.record().operatorActions());
+      const auto feed = [&](std::int64_t batch, std::span<const files::InputLine> b) {
         compare.add(run.batch(b, 0), run.session().result().targetLabels);
+        actions.afterBatch(batch, run.watch());
       };
       const UtcUs stop = pass == 0 ? span.first + (span.last - span.first) * 2 / 3 : span.last;
       UtcUs clock = span.first - 1;
@@ -259,6 +268,45 @@ class TestVoyageRecord : public QObject {
     } catch (const io::InputError& e) {
       QVERIFY2(std::string(e.what()).find("empty.sqlite") != std::string::npos, e.what());
     }
+  }
+
+  void operatorActionsAreAppliedAgainOrCounted() {
+    sim::LiveWatch w;
+    const auto act = [](std::int64_t after, const char* action, const char* subject, const char* value) {
+      return files::OperatorAction{after, 0, std::nullopt, action, subject, value};
+    };
+    QVERIFY(files::applyOperatorAction(act(0, "cpa_limits", "", "cpa_m=500;tcpa_s=300"), w));
+    QCOMPARE(w.settings().alerts.cpa.cpaM, 500.0);
+    QCOMPARE(w.settings().ais.tcpaLimitS, 300.0);
+    QVERIFY(files::applyOperatorAction(act(0, "dr_limit", "", "m=250"), w));
+    QCOMPARE(w.settings().alerts.drLimitM, 250.0);
+    QVERIFY(files::applyOperatorAction(act(0, "acknowledge", "alert:CPA/TCPA:3", ""), w));
+    QVERIFY(files::applyOperatorAction(act(0, "silence_all", "", ""), w));
+    QVERIFY(files::applyOperatorAction(act(0, "ais_select", "mmsi:244660000", ""), w));
+    // what cannot be read or is refused is counted, never applied halfway
+    for (const auto& bad :
+         {act(0, "cpa_limits", "", "cpa_m=x;tcpa_s=300"), act(0, "cpa_limits", "", "cpa_m=500"),
+          act(0, "dr_limit", "", "m=-5"), act(0, "acknowledge", "alert:NO SUCH ALERT:1", ""),
+          act(0, "acknowledge", "alert:CPA/TCPA:x", ""), act(0, "ais_sleep", "mmsi:abc", ""),
+          act(0, "teleport", "", "")})
+      QVERIFY2(!files::applyOperatorAction(bad, w),
+               (bad.action + " " + bad.subject + " " + bad.value).c_str());
+    QCOMPARE(w.settings().alerts.cpa.cpaM, 500.0);
+    QCOMPARE(w.settings().alerts.drLimitM, 250.0);
+    // in batch order, each once, after its batch
+    files::ActionReplayer r(
+        {act(3, "dr_limit", "", "m=300"), act(1, "dr_limit", "", "m=200"), act(3, "teleport", "", "")});
+    r.afterBatch(1, w);
+    QCOMPARE(w.settings().alerts.drLimitM, 200.0);
+    r.afterBatch(2, w);
+    QCOMPARE(r.applied(), 1L);
+    r.afterBatch(5, w);
+    QCOMPARE(w.settings().alerts.drLimitM, 300.0);
+    QCOMPARE(r.applied(), 2L);
+    QCOMPARE(r.skipped(), 1L);
+    r.rewind();
+    r.afterBatch(1, w);
+    QCOMPARE(w.settings().alerts.drLimitM, 200.0);
   }
 
   void commitsKeepAtMostTheLastSecondPending() {

@@ -63,7 +63,9 @@ class TestVoyageWindow : public QObject {
                                            0.1, "Test approach");
     r.waypoints[1].turnRadiusNm = 0.2;
     RouteLibrary* lib = w.routeLibrary();
+    QVERIFY(!w.isWindowModified());  // no route yet: nothing for a save to keep
     lib->setActive(lib->add(r));
+    QVERIFY(w.isWindowModified());  // the scenario records the route now followed
     action(w, "followRouteAction")->setChecked(true);
     // The route shown is checked against the chart: nothing on it.
     w.checkRoute();

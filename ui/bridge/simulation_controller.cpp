@@ -82,10 +82,12 @@ void SimulationController::setCharts(const std::vector<charts::CellPtr>& cells) 
   if (liveThread_) live().post(&LiveWorker::setCharts, cells);
 }
 void SimulationController::setVoyageRoute(const std::optional<geo::Route>& route, bool follow) {
+  const bool changed = route != route_ || follow != follow_;
   route_ = route;
+  follow_ = follow;
   sim_.post(&SimulationWorker::setVoyageRoute, route, follow);
   if (liveThread_) live().post(&LiveWorker::setRoute, route);
-  emit scenarioEdited();
+  if (changed) emit scenarioEdited();  // the scenario records its route (a save keeps it)
 }
 void SimulationController::setSafety(const charts::SafetySettings& safety) {
   safety_ = safety;

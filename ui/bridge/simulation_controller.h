@@ -110,6 +110,7 @@ class SimulationController : public QObject {
   // The window's charts, active route and safety settings, for a live worker started later.
   std::vector<charts::CellPtr> cells_;
   std::optional<geo::Route> route_;
+  bool follow_ = false;
   std::optional<charts::SafetySettings> safety_;
 };
 

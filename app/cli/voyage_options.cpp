@@ -41,13 +41,7 @@ std::shared_ptr<const sim::ChartGuard> chartGuardFor(const sim::VoyageSpec& v,
   for (const auto& f : loaded.failures)
     std::fprintf(stderr, "reckoner-cli: error: %s: %s\n", f.file.c_str(), f.reason.c_str());
   if (loaded.cells.empty()) throw UsageError("--enc: no cell loaded from " + *enc);
-  charts::AntiGroundingSettings g;
-  g.safety.safetyContourM = v.safetyContourM;
-  g.safety.safetyDepthM = v.safetyDepthM;
-  g.draughtM = v.draughtM;
-  g.dangerClearanceM = v.dangerClearanceM;
-  g.halfBeamM = v.halfBeamM;
-  return std::make_shared<const charts::ChartSafety>(loaded.cells, g);
+  return std::make_shared<const charts::ChartSafety>(loaded.cells, charts::antiGroundingSettingsOf(v));
 }
 
 }  // namespace reckoner::cli

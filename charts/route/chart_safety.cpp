@@ -194,6 +194,16 @@ std::vector<std::string> AntiGroundingSettings::problems() const {
   return out;
 }
 
+AntiGroundingSettings antiGroundingSettingsOf(const sim::VoyageSpec& v) {
+  AntiGroundingSettings g;
+  g.safety.safetyContourM = v.safetyContourM;
+  g.safety.safetyDepthM = v.safetyDepthM;
+  g.draughtM = v.draughtM;
+  g.dangerClearanceM = v.dangerClearanceM;
+  g.halfBeamM = v.halfBeamM;
+  return g;
+}
+
 ChartSafety::ChartSafety(const std::vector<CellPtr>& cells, const AntiGroundingSettings& settings)
     : settings_(settings),
       hazards_(cells, settings.safety),

@@ -17,6 +17,7 @@
 
 #include "charts/route/chart_hazards.h"
 #include "sim/chart_guard.h"
+#include "sim/voyage_spec.h"
 
 namespace reckoner::charts {
 
@@ -28,6 +29,9 @@ struct AntiGroundingSettings {
   /// What makes the settings unusable, one line each (empty: none).
   [[nodiscard]] std::vector<std::string> problems() const;
 };
+
+/// A voyage's settings (its safety contour and depth, draught, clearance, half-beam) for the guard.
+AntiGroundingSettings antiGroundingSettingsOf(const sim::VoyageSpec& voyage);
 
 class ChartSafety : public sim::ChartGuard {
  public:

@@ -210,17 +210,19 @@ void LiveWorker::setSafety(const charts::SafetySettings& safety) {
 
 void LiveWorker::applyVoyage() {
   if (!session_) return;
+  std::shared_ptr<const charts::ChartSafety> guard;
   try {
     // A playback monitors the recorded route (its alerts are the record's); a live run the window's.
     if (!playback_) session_->setRoute(route_);
-    session_->setChartGuard(guard_.guardFor(session_->voyage().spec()));
+    guard = guard_.guardFor(session_->voyage().spec());
+    session_->setChartGuard(guard);
   } catch (const std::exception& e) {
     emit failed(QString::fromStdString(std::string("live route monitoring: ") + e.what()));
   }
   pending_.route = session_->voyage().spec().route
                        ? std::make_shared<const geo::Route>(*session_->voyage().spec().route)
                        : nullptr;
-  if (!guard_.guardFor(session_->voyage().spec())) pending_.lookAhead.reset();
+  if (!guard) pending_.lookAhead.reset();
   dirty_ = true;
 }
 
@@ -366,17 +368,8 @@ void LiveWorker::finishRecording() {
   recordTimer_->stop();
   try {
     session_->finish();
-    sim::LiveWatch::Taken taken = watch_->absorb(*session_, std::nullopt);
-    (void)taken;
-    files::LiveBatch& last = unrecorded_;
-    for (sim::ReplayOwnRow& r : session_->takeOwnRows()) last.own.push_back(std::move(r));
-    std::vector<UtcUs> utc;
-    std::vector<sim::TrackRow> tracks = session_->takeTrackRows(&utc);
-    last.tracks.insert(last.tracks.end(), tracks.begin(), tracks.end());
-    last.trackUtc.insert(last.trackUtc.end(), utc.begin(), utc.end());
-    for (alerts::AlertLogEntry& e : watch_->alerts().takeLog()) last.alerts.push_back(e);
-    last.alertZeroUtc = watch_->zeroUtc();
-    recorder_->finish(last, session_->result().targetLabels, systemUtc());
+    absorb(std::nullopt);  // the session's last rows join what is not recorded yet
+    recorder_->finish(unrecorded_, session_->result().targetLabels, systemUtc());
   } catch (const std::exception& e) {
     emit failed(QString::fromStdString(std::string("the voyage record's end: ") + e.what()));
   }

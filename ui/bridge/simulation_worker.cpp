@@ -391,10 +391,7 @@ void SimulationWorker::setVoyageRoute(const std::optional<geo::Route>& route, bo
   follow_ = follow && route.has_value();
   routeSet_ = route.has_value();
   if (!engine_) return;
-  if (!route) {
-    engine_->setRoute(std::nullopt, false);
-    lookAhead_.reset();  // the look-ahead goes on (it needs no route); the shown one is renewed
-  }
+  if (!route) engine_->setRoute(std::nullopt, false);
   applyRoute();
   dirty_ = true;
   maybeEmit(true);

@@ -20,16 +20,8 @@ void VoyageGuard::setSafety(const charts::SafetySettings& safety) {
 
 std::shared_ptr<const charts::ChartSafety> VoyageGuard::guardFor(const sim::VoyageSpec& v) {
   if (cells_.empty()) return nullptr;
-  charts::AntiGroundingSettings g;
-  if (safety_) {
-    g.safety = *safety_;
-  } else {
-    g.safety.safetyContourM = v.safetyContourM;
-    g.safety.safetyDepthM = v.safetyDepthM;
-  }
-  g.draughtM = v.draughtM;
-  g.dangerClearanceM = v.dangerClearanceM;
-  g.halfBeamM = v.halfBeamM;
+  charts::AntiGroundingSettings g = charts::antiGroundingSettingsOf(v);
+  if (safety_) g.safety = *safety_;
   if (!guard_ || !same(guard_->settings(), g)) {
     guard_.reset();
     guard_ = std::make_shared<const charts::ChartSafety>(cells_, g);

@@ -123,6 +123,8 @@ class TestPlaybackWindow : public QObject {
           io::formatIso8601(at).c_str(), w.history().own().size());
 
     // The next alert: the clock on its mark, the alert raised in the list
+    // (the bar shows the clock the window shows: after its repaint tick)
+    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
     const auto next = std::upper_bound(marks.begin(), marks.end(), playback(w).clock);
     if (next != marks.end()) {
       child<QToolButton>(w, "playbackNextAlert")->click();
@@ -130,6 +132,7 @@ class TestPlaybackWindow : public QObject {
       QVERIFY(w.history().alertHistoryCount() > 0);
     }
     // The previous alert: back (a seek back) to the mark before the clock
+    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
     const auto previous = std::lower_bound(marks.begin(), marks.end(), playback(w).clock);
     if (previous != marks.begin()) {
       child<QToolButton>(w, "playbackPreviousAlert")->click();

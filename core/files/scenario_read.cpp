@@ -265,6 +265,10 @@ void readTargets(Fields& top, sim::Scenario& s) {
         f.fail(id, f.pathOf("id"), "id " + std::to_string(t.id) + " is used by another target");
     t.name = f.stringOr("name", "target " + std::to_string(t.id));
     if (f.get("appear_s")) t.appearUs = timeField(f, "appear_s", s.durationUs);
+    if (const auto* leave = f.get("leave_s")) {
+      t.leaveUs = timeField(f, "leave_s", s.durationUs);
+      if (*t.leaveUs <= t.appearUs) f.fail(*leave, f.pathOf("leave_s"), "must be after appear_s");
+    }
     readMotion(f, t.motion, s.durationUs);
     readTargetAis(f, t);
     f.finish();
@@ -330,7 +334,7 @@ sim::Scenario parseScenario(std::string_view text, const std::string& sourceName
   readRadarMatching(top, s);
   scenario_detail::readVoyage(top, s);
   top.finish();
-  if (const std::string problem = sim::checkScenario(s); !problem.empty()) {
+  if (const std::string problem = sim::checkScenarioForRows(s); !problem.empty()) {
     const auto colon = problem.find(": ");
     if (colon == std::string::npos) throw InputError(sourceName, 0, "", problem);
     const std::string field = problem.substr(0, colon);

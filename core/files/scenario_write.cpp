@@ -201,6 +201,7 @@ void writeTargets(JsonWriter& w, const std::vector<sim::TargetSpec>& targets) {
     w.key("id").value(t.id);
     w.key("name").value(t.name);
     if (t.appearUs > 0) writeTime(w, "appear_s", t.appearUs);
+    if (t.leaveUs) writeTime(w, "leave_s", *t.leaveUs);
     writeMotion(w, t.motion);
     if (t.ais) scenario_detail::writeTargetAis(w, *t.ais);
     w.endObject();

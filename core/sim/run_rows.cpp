@@ -156,8 +156,6 @@ TrackRow trackEstimateRow(TimeUs t, int trackId, int targetId, track::TrackStatu
   return r;
 }
 
-namespace {
-/// NEES of the target's position and velocity alone: the 4 x 4 block of the TTKF's covariance.
 double positionVelocityNees4(const est::ttkf::Belief& b, const VesselTruth& truth) {
   namespace tk = est::ttkf;
   constexpr std::array<int, 4> kIdx{tk::kTgtX, tk::kTgtY, tk::kTgtVx, tk::kTgtVy};
@@ -171,7 +169,6 @@ double positionVelocityNees4(const est::ttkf::Belief& b, const VesselTruth& trut
   }
   return est::nees<4>(e, P);
 }
-}  // namespace
 
 TrackRow trackRow(const SweepSnapshot& sw, const TrackSnapshot& t, const std::vector<TargetSpec>& targets,
                   const geo::LocalFrame& geo) {

@@ -106,6 +106,10 @@ struct TrackRow {
   [[nodiscard]] double velocityErrorMps() const;
 };
 
+/// NEES of a track's target position and velocity alone (the 4 x 4 block of its covariance) against
+/// the target's truth.
+double positionVelocityNees4(const est::ttkf::Belief& b, const VesselTruth& truth);
+
 /// A TrackRow's estimate columns from a track's belief and kinematics (no truth; both NEES NaN).
 TrackRow trackEstimateRow(TimeUs t, int trackId, int targetId, track::TrackStatus status, bool dangerous,
                           const est::ttkf::Belief& b, const track::TrackKinematics& k, double nis,

@@ -186,6 +186,10 @@ void checkTarget(ScenarioCheck& c, const Scenario& s, std::size_t i) {
   for (std::size_t j = 0; j < i; ++j)
     if (s.targets[j].id == t.id) c.fail(path + ".id", "id " + std::to_string(t.id) + " used twice");
   c.time(path + ".appear_s", t.appearUs);
+  if (t.leaveUs) {
+    c.time(path + ".leave_s", *t.leaveUs);
+    if (*t.leaveUs <= t.appearUs) c.fail(path + ".leave_s", "must be after appear_s");
+  }
   checkMotion(c, path, t.motion);
   if (t.ais) {
     if (const std::string e = t.ais->check(); !e.empty()) c.fail(path + ".ais", e);
@@ -292,8 +296,12 @@ void checkBudget(ScenarioCheck& c, const Scenario& s) {
                  formatValue(clutter) + " false plots per sweep; the limit is " +
                  formatValue(limits::kMaxClutterPerSweep));
   }
-  const double tracks =
-      static_cast<double>(s.targets.size()) + std::min(clutter, static_cast<double>(s.tracker.capacity));
+  // A target counts for the share of the run it is present (appear_s to leave_s).
+  double targets = 0.0;
+  for (const TargetSpec& t : s.targets)
+    targets += static_cast<double>(t.leaveUs.value_or(s.durationUs) - std::min(t.appearUs, s.durationUs)) /
+               static_cast<double>(s.durationUs);
+  const double tracks = targets + std::min(clutter, static_cast<double>(s.tracker.capacity));
   const double rows = steps + sweeps * tracks;
   if (rows > limits::kMaxOutputRows)
     c.fail("duration_s", formatValue(toSeconds(s.durationUs)) + " s gives " + formatValue(steps) +
@@ -385,7 +393,13 @@ std::string checkScenario(const Scenario& s) {
     const std::vector<std::string> voyage = s.voyage.problems();
     if (!voyage.empty()) return voyage.front();
   }
-  if (c.ok()) checkBudget(c, s);
+  return c.problem();
+}
+
+std::string checkScenarioForRows(const Scenario& s) {
+  if (std::string problem = checkScenario(s); !problem.empty()) return problem;
+  ScenarioCheck c;
+  checkBudget(c, s);
   return c.problem();
 }
 

@@ -63,7 +63,13 @@ struct TargetSpec {
   /// The target exists (moves, echoes) from this time on; its motion starts here from the initial
   /// position (targets added during a run).
   TimeUs appearUs = 0;
+  /// The target leaves the scene at this time (no more echoes or AIS messages; its tracks and AIS
+  /// target are then lost as with a vessel gone out of range); none: it stays to the end.
+  std::optional<TimeUs> leaveUs;
   VesselMotionSpec motion;
+
+  /// Moving and seen (echoes, transmissions) at time t: from appearUs until leaveUs.
+  [[nodiscard]] bool presentAt(TimeUs t) const { return appearUs <= t && (!leaveUs || t < *leaveUs); }
   /// An AIS transponder on board (sensors/ais_transmitter.h); none: a target the radar alone sees.
   std::optional<sensors::AisTransmitterSpec> ais;
 };
@@ -184,5 +190,10 @@ std::string sensorLabel(const SensorStates& s);
 /// Checks the invariants the engine relies on; returns an empty string when valid, else the first
 /// problem (field names as in the JSON format).
 std::string checkScenario(const Scenario& s);
+/// checkScenario, and the run's rows within the output budget (docs/scenarios.md "Limits": a row per
+/// step, a row per present target and clutter track per sweep): what a run that keeps or writes every
+/// row (the scenario files' reader, runScenario, reckoner-cli) needs. The engine alone streams its
+/// frames and does not need it (the soak of docs/robustness.md runs a day of 240 vessels).
+std::string checkScenarioForRows(const Scenario& s);
 
 }  // namespace reckoner::sim

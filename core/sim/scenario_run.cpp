@@ -68,7 +68,7 @@ std::vector<RunResult> runMonteCarlo(const Scenario& scenario, int runs, int thr
                                      std::uint64_t baseSeed) {
   if (runs <= 0) throw std::invalid_argument("Monte Carlo: runs must be positive");
   if (threads <= 0) throw std::invalid_argument("Monte Carlo: threads must be positive");
-  if (const std::string problem = checkScenario(scenario); !problem.empty())
+  if (const std::string problem = checkScenarioForRows(scenario); !problem.empty())
     throw std::invalid_argument("scenario " + io::quoted(scenario.name) + ": " + problem);
   std::vector<RunResult> results(static_cast<std::size_t>(runs));
   parallelRuns(runs, threads, [&](int i) {

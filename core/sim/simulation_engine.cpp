@@ -171,7 +171,10 @@ State SimulationEngine::trueState() const {
 }
 
 void SimulationEngine::advanceTargetsTo(TimeUs t) {
-  for (auto& m : targets_) m.advanceTo(t);
+  for (std::size_t i = 0; i < targets_.size(); ++i) {
+    const auto& leave = scenario_.targets[i].leaveUs;
+    if (!leave || t <= *leave) targets_[i].advanceTo(t);  // one gone stays where it left
+  }
 }
 
 track::OwnShipInput SimulationEngine::ownShipInput() const {
@@ -258,7 +261,7 @@ void SimulationEngine::startSweep(TimeUs t, SimFrame& frame) {
   const double gamma = truthGrid().convergenceRad;
   std::vector<PendingPlot> sweep;
   for (std::size_t i = 0; i < targets_.size(); ++i) {
-    if (scenario_.targets[i].appearUs > t) continue;
+    if (!scenario_.targets[i].presentAt(t)) continue;
     const auto& p = targets_[i].state().position;
     const double trueBearing = bearingOf(p.xM - own.position.xM, p.yM - own.position.yM) + gamma;
     sweep.push_back({radar_.beamTime(t, trueBearing), i, std::nullopt});
@@ -277,6 +280,7 @@ void SimulationEngine::radarPlot(const PendingPlot& pp, SimFrame& frame) {
   std::optional<sensors::RadarPlot> plot = pp.plot;
   int source = -1;
   if (pp.target != kClutter) {
+    if (!scenario_.targets[pp.target].presentAt(pp.timeUs)) return;  // left during the sweep
     const VesselTruth& own = truth_.state();
     const VesselTruth& tgt = targets_[pp.target].state();
     plot = radar_.measure(pp.timeUs, tgt.position.xM - own.position.xM, tgt.position.yM - own.position.yM,
@@ -337,7 +341,7 @@ SimFrame SimulationEngine::step() {
   frame.order = truth_.order();
   for (std::size_t i = 0; i < targets_.size(); ++i) {
     frame.targets.push_back(targets_[i].state());
-    frame.targetPresent.push_back(scenario_.targets[i].appearUs <= end ? 1 : 0);
+    frame.targetPresent.push_back(scenario_.targets[i].presentAt(end) ? 1 : 0);
   }
   if (!ais_->idle()) {
     AisCycle c = ais_->step(end, targets_, frame.targetPresent, frame_, *manager_, ownShipInput());
@@ -385,7 +389,7 @@ bool SimulationEngine::orderTarget(int targetId, const HelmOrder& order) {
   if (!std::isfinite(e.order->headingRad) || !std::isfinite(e.order->speedMps)) return false;
   for (std::size_t i = 0; i < scenario_.targets.size(); ++i) {
     TargetSpec& t = scenario_.targets[i];
-    if (t.id != targetId || t.appearUs > timeUs_) continue;
+    if (t.id != targetId || !t.presentAt(timeUs_)) continue;
     if (!targets_[i].overrideFrom(e)) return false;
     auto& events = t.motion.schedule;
     while (!events.empty() && events.back().timeUs >= e.timeUs) events.pop_back();
@@ -433,7 +437,7 @@ RadarPicture SimulationEngine::sweepPicture(TimeUs t, std::optional<double> last
   truePose.headingRad = tr.headingRad - truePose.turnRateRadPerS * T;
   std::vector<radar::RadarTarget> targets;
   for (std::size_t i = 0; i < targets_.size(); ++i) {
-    if (scenario_.targets[i].appearUs > t) continue;
+    if (!scenario_.targets[i].presentAt(t)) continue;
     const auto& p = targets_[i].state().position;
     targets.push_back({est::Vec<2>(p.xM, p.yM), 25.0});
   }

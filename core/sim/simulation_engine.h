@@ -97,7 +97,7 @@ struct SimFrame {
   SensorStates sensors;
   std::optional<HelmOrder> order;            ///< own ship's helm order in force, if any
   std::vector<VesselTruth> targets;          ///< in scenario order
-  std::vector<std::uint8_t> targetPresent;   ///< per target: 1 once it has appeared (appear_s)
+  std::vector<std::uint8_t> targetPresent;   ///< per target: 1 from appear_s until leave_s
   std::vector<sensors::RadarPlot> plots;     ///< radar plots of this cycle
   std::vector<int> plotSources;              ///< target id of each plot (-1: clutter); not given to trackers
   std::vector<TrackSnapshot> tracks;         ///< at timeUs

@@ -250,7 +250,7 @@ std::vector<ComparisonRow> compareCoupled(const Scenario& s, const std::vector<i
   for (int n : counts) {
     if (n <= 0) throw std::invalid_argument("compare: target counts must be positive");
     const Scenario sn = withTargetCount(s, n);
-    if (const std::string problem = checkScenario(sn); !problem.empty())
+    if (const std::string problem = checkScenarioForRows(sn); !problem.empty())
       throw std::invalid_argument("scenario " + io::quoted(sn.name) + ": " + problem);
     std::vector<RunOutcome> outs(static_cast<std::size_t>(runs));
     // Run 0 alone, so that its timings are not disturbed by the other threads.

@@ -132,7 +132,7 @@ class TestScenarioJson : public QObject {
   },
   "targets": [{"id": 7, "name": "ferry", "position_m": [100, 200], "velocity_mps": [1, 2],
                "random_acceleration": {"variance_m2_s4": 0.01, "beta_per_s": 0.1},
-               "schedule": [{"t_s": 40, "velocity_mps": [5, 5]}]}],
+               "schedule": [{"t_s": 40, "velocity_mps": [5, 5]}], "appear_s": 10, "leave_s": 50}],
   "tracker": {"own_acceleration": {"sigma_mps2": 0.1, "beta_per_s": 0.2},
               "target_acceleration": {"variance_m2_s4": 0.005, "beta_per_s": 0.1},
               "own_ship_feed": "measurement", "capacity": 50)");
@@ -144,6 +144,8 @@ class TestScenarioJson : public QObject {
     QCOMPARE(s.targets.size(), std::size_t(1));
     QCOMPARE(s.targets[0].id, 7);
     QCOMPARE(s.targets[0].name, std::string("ferry"));
+    QCOMPARE(s.targets[0].appearUs, 10 * kMicrosPerSecond);
+    QCOMPARE(s.targets[0].leaveUs, std::optional<TimeUs>(50 * kMicrosPerSecond));
     RK_COMPARE_NEAR(s.targets[0].motion.randomAcceleration->sigma, 0.1, 1e-12);
     QCOMPARE(s.targets[0].motion.schedule.size(), std::size_t(1));
     RK_COMPARE_NEAR(s.tracker.targetAcceleration.sigma, std::sqrt(0.005), 1e-12);
@@ -206,6 +208,8 @@ class TestScenarioJson : public QObject {
     QTest::addColumn<QString>("expected");
     QTest::newRow("duplicate id") << R"("targets": [{"id": 1}, {"id": 1}],)"
                                   << "targets[1].id: id 1 is used by another target";
+    QTest::newRow("leaves before it appears") << R"("targets": [{"id": 1, "appear_s": 60, "leave_s": 60}],)"
+                                              << "targets[0].leave_s: must be after appear_s";
     QTest::newRow("negative id") << R"("targets": [{"id": -3}],)"
                                  << "targets[0].id: must be a non-negative integer";
     QTest::newRow("unknown target field") << R"("targets": [{"id": 1, "colour": "red"}],)"

@@ -136,6 +136,46 @@ class TestSimulationEngine : public QObject {
     QCOMPARE(gps, 10);
     QCOMPARE(epochs, 200);  // the filter predicts to every measurement's own time
   }
+  void aTargetThatLeavesIsNoLongerSeen() {
+    // ais-harbour: the radar sees every target; the first with a transponder leaves at 600 s: no echo or
+    // AIS message of it after that, and its track and AIS target are dropped.
+    Scenario s = test::builtinScenario("ais-harbour");
+    const TimeUs leave = 600 * kMicrosPerSecond;
+    const auto k =
+        static_cast<std::size_t>(std::find_if(s.targets.begin(), s.targets.end(),
+                                              [](const TargetSpec& t) { return t.ais.has_value(); }) -
+                                 s.targets.begin());
+    QVERIFY(k < s.targets.size());
+    s.targets[k].leaveUs = leave;
+    QVERIFY(checkScenario(s).empty());
+    const int id = s.targets[k].id;
+    const std::uint32_t mmsi = s.targets[k].ais->mmsi;
+    SimulationEngine e(s, 3);
+    int plotsBefore = 0, plotsAfter = 0, aisBefore = 0, aisAfter = 0;
+    bool trackedBefore = false, trackedAtEnd = false, inTableAtEnd = false;
+    while (!e.finished()) {
+      const SimFrame f = e.step();
+      for (std::size_t i = 0; i < f.plots.size(); ++i)
+        if (f.plotSources[i] == id) ++(f.plots[i].timeUs < leave ? plotsBefore : plotsAfter);
+      for (const auto& r : f.aisReceived)
+        if (r.message.mmsi == mmsi) ++(r.rxUs < leave ? aisBefore : aisAfter);
+      QCOMPARE(f.targetPresent[k], std::uint8_t(f.timeUs < leave ? 1 : 0));
+      const bool tracked = std::any_of(f.tracks.begin(), f.tracks.end(), [&](const TrackSnapshot& t) {
+        return t.targetId == id && t.status != track::TrackStatus::Lost;
+      });
+      if (f.timeUs == leave) trackedBefore = tracked;
+      trackedAtEnd = tracked;
+      inTableAtEnd = f.aisTargets && std::any_of(f.aisTargets->begin(), f.aisTargets->end(),
+                                                 [&](const track::AisTarget& a) { return a.mmsi == mmsi; });
+    }
+    QVERIFY2(plotsBefore > 100, qPrintable(QString::number(plotsBefore)));
+    QCOMPARE(plotsAfter, 0);
+    QVERIFY(aisBefore > 20);
+    QCOMPARE(aisAfter, 0);
+    QVERIFY(trackedBefore);
+    QVERIFY(!trackedAtEnd);
+    QVERIFY(!inTableAtEnd);
+  }
   void outageRemovesSamples() {
     SimulationEngine e(test::builtinScenario("table1-test5"), 2);
     while (!e.finished()) {

@@ -131,6 +131,16 @@ void VoyageRecorder::batch(std::span<const InputLine> lines, const LiveBatch& ou
   maybeCommit(streamUtc, wallUtc);
 }
 
+void VoyageRecorder::forgetTracksBefore(std::int64_t minute) {
+  // A track whose last row is from before `minute` has its next row (later) in another minute, and one
+  // not remembered is written as its minute's row too: forgetting it changes nothing, and the map holds
+  // only the tracks of the last minutes instead of every track ever seen (the soak's clutter starts
+  // thousands an hour).
+  if (minute <= forgottenBefore_) return;
+  forgottenBefore_ = minute;
+  std::erase_if(trackMinute_, [minute](const auto& kv) { return kv.second < minute; });
+}
+
 void VoyageRecorder::rows(const LiveBatch& out, std::span<const std::string> targetLabels) {
   for (const sim::ReplayOwnRow& r : out.own) {
     const std::int64_t minute = minuteOf(r.utcUs);
@@ -151,6 +161,7 @@ void VoyageRecorder::rows(const LiveBatch& out, std::span<const std::string> tar
     voyage::bindTrack(st_->track, t, it == trackMinute_.end() || it->second != minute);
     st_->track.run();
     trackMinute_[t.row.trackId] = minute;
+    forgetTracksBefore(minute - 1);
   }
   for (const alerts::AlertLogEntry& e : out.alerts) {
     voyage::bindAlert(st_->alert, recordedAlert(e, out.alertZeroUtc));

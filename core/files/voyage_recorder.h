@@ -77,11 +77,15 @@ class VoyageRecorder {
   [[nodiscard]] std::int64_t commits() const { return commits_; }
   [[nodiscard]] std::int64_t syncs() const { return syncs_; }
   [[nodiscard]] std::int64_t prunedRows() const { return pruned_; }
+  /// Tracks whose latest row's minute is remembered (those of the last minutes; bounded by the tracks
+  /// alive then, not by every track the run has seen).
+  [[nodiscard]] std::size_t rememberedTracks() const { return trackMinute_.size(); }
 
  private:
   struct Statements;
   void begin(UtcUs wallUtc);
   void rows(const LiveBatch& out, std::span<const std::string> targetLabels);
+  void forgetTracksBefore(std::int64_t minute);
   void maybeCommit(std::optional<UtcUs> streamUtc, UtcUs wallUtc);
   void commit(std::optional<UtcUs> streamUtc, UtcUs wallUtc);
   void prune();
@@ -98,7 +102,8 @@ class VoyageRecorder {
   bool unsynced_ = false;
   std::int64_t batch_ = 0, lines_ = 0, committedLines_ = 0, commits_ = 0, syncs_ = 0, pruned_ = 0;
   std::optional<std::int64_t> ownMinute_;
-  std::map<int, std::int64_t> trackMinute_;
+  std::map<int, std::int64_t> trackMinute_;  ///< each recent track's last row's minute
+  std::int64_t forgottenBefore_ = 0;
   std::optional<UtcUs> newestUtc_, lastPruneUtc_;
 };
 

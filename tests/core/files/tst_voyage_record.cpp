@@ -371,6 +371,30 @@ class TestVoyageRecord : public QObject {
           static_cast<long long>(rec.prunedRows()), old.size());
   }
 
+  void theRecorderForgetsTracksGoneAMinute() {
+    // GIVEN a recorder WHEN 30 minutes bring a new track every second (clutter starts thousands an hour),
+    // each with a row a second for 10 s
+    const std::string path = dir_.path().toStdString() + "/many-tracks.sqlite";
+    files::VoyageRecorder rec(path, recorderSettings(sim::LiveOptions{}), kDay);
+    UtcUs t = kDay;
+    std::size_t mostRemembered = 0;
+    for (int k = 0; k < 1800; ++k, t += kMicrosPerSecond) {
+      files::LiveBatch b;
+      b.own.push_back(ownRowAt(t));
+      for (int id = std::max(0, k - 9); id <= k; ++id) {
+        sim::TrackRow row;
+        row.trackId = id + 1;
+        b.tracks.push_back(row);
+        b.trackUtc.push_back(t);
+      }
+      rec.batch(std::vector<files::InputLine>{{"nmea1", "$GPRMC", t, false}}, b, {}, t, kDay + k * 1000);
+      mostRemembered = std::max(mostRemembered, rec.rememberedTracks());
+    }
+    rec.finish({}, {}, kDay + 1800 * 1000);
+    // THEN it remembers the tracks of the last two or three minutes, not all 1800 (the soak's memory)
+    QVERIFY2(mostRemembered <= 190, qPrintable(QString::number(mostRemembered)));
+    QCOMPARE(rec.lines(), std::int64_t{1800});
+  }
   void badFilesAreOneErrorNamingTheFile_data() {
     QTest::addColumn<QString>("kind");
     QTest::addColumn<QString>("expected");

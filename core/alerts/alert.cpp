@@ -10,7 +10,7 @@ namespace {
 // (MSC.232(82) appendix 5), the radar's CPA/TCPA an alarm and lost target a warning (MSC.192(79)),
 // capacity a caution; the route monitoring's crossing of the safety contour and deviation from route
 // alarms, approach to a waypoint a warning (MSC.232(82) appendix 5). docs/alerts.md gives the reasons
-// for the rest.
+// for the rest (the filter resets: warnings that wait for acknowledgement, like a lost target).
 constexpr std::array<AlertKindTraits, kAlertKindCount> kTraits{{
     {"CPA/TCPA", Priority::Alarm, false, false},
     {"GUARD ZONE", Priority::Warning, true, true},
@@ -28,6 +28,8 @@ constexpr std::array<AlertKindTraits, kAlertKindCount> kTraits{{
     {"OFF TRACK", Priority::Alarm, false, false},
     {"WAYPOINT APPROACH", Priority::Warning, false, true},
     {"ARRIVAL", Priority::Warning, false, true},
+    {"DR FILTER RESET", Priority::Warning, false, true},
+    {"TRACK FILTER RESET", Priority::Warning, false, true},
 }};
 
 }  // namespace

@@ -33,8 +33,10 @@ enum class AlertKind {
   WaypointApproach,  ///< the wheel-over point of the next waypoint within the warning time (source: waypoint
                      ///< id)
   Arrival,           ///< own ship has arrived at the route's last waypoint
+  DrFilterReset,     ///< the own-ship filter diverged and is restarted (or was) at a GNSS fix
+  TrackFilterReset,  ///< a track's filter diverged and was restarted on a plot (source: track)
 };
-inline constexpr int kAlertKindCount = 16;
+inline constexpr int kAlertKindCount = 18;
 
 /// Which condition, from which source (a track number, a zone index, a DRKF block; 0 when the kind has
 /// one source only).

@@ -97,6 +97,7 @@ std::string runSummaryJson(const sim::Scenario& s, const sim::RunResult& run,
   w.key("predict_failures").value(static_cast<std::int64_t>(run.counters.predictFailures));
   w.key("stale_samples").value(static_cast<std::int64_t>(run.counters.staleSamples));
   w.key("overflow_samples").value(static_cast<std::int64_t>(run.counters.overflowSamples));
+  writeFilterResets(w, "filter_resets", run.counters.resets);
   if (s.radar.fitted)
     writeTrackingSummary(w, metrics::summariseTracking(run.trackRows, run.targetRows), run.trackCounters);
   w.endObject();

@@ -206,6 +206,7 @@ void writeOwnShipFilter(JsonWriter& w, const sim::ReplayResult& r) {
   writeCount(w, "after_gap", r.stats.restartsAfterGap);
   writeCount(w, "after_failure", r.stats.restartsAfterFailure);
   w.endObject();
+  writeFilterResets(w, "filter_resets", r.drkf.resets);
   if (r.gnssNoiseScale)
     w.key("gnss_noise_scale")
         .beginArray()
@@ -253,6 +254,7 @@ void writeRadarCounts(JsonWriter& w, const sim::ReplayResult& r) {
   writeCount(w, "tracks_started", r.tracking.tracksStarted);
   writeCount(w, "tracks_confirmed", r.tracking.tracksConfirmed);
   writeCount(w, "tracks_lost", r.tracking.tracksLost);
+  writeFilterResets(w, "track_filter_resets", r.tracking.filterResets);
   w.endObject();
 }
 }  // namespace
@@ -283,6 +285,13 @@ std::string replaySummaryJson(const sim::ReplayResult& r, const std::string& nme
   return w.str();
 }
 
+void writeFilterResets(JsonWriter& w, const char* key, const est::DivergenceCounts& c) {
+  w.key(key).beginObject();
+  w.key("covariance").value(static_cast<std::int64_t>(c.covariance));
+  w.key("nis").value(static_cast<std::int64_t>(c.nis));
+  w.endObject();
+}
+
 void writeTrackingSummary(JsonWriter& w, const metrics::TrackingStats& s, const track::TrackCounters& c) {
   const auto number = [&w](const char* k, double v) {
     w.key(k);
@@ -309,6 +318,7 @@ void writeTrackingSummary(JsonWriter& w, const metrics::TrackingStats& s, const 
   w.key("tracks_lost").value(static_cast<std::int64_t>(c.tracksLost));
   w.key("tracks_dropped").value(static_cast<std::int64_t>(c.tracksDropped));
   w.key("largest_cluster").value(static_cast<std::int64_t>(c.largestCluster));
+  writeFilterResets(w, "filter_resets", c.filterResets);
   w.key("targets").beginArray();
   for (const auto& t : s.targets) {
     w.beginObject();

@@ -38,5 +38,7 @@ std::string replayTargetsCsvLine(const sim::TrackRow& r, UtcUs utc,
 
 /// Writes the "tracking" object (key included) of a run summary.
 void writeTrackingSummary(io::JsonWriter& w, const metrics::TrackingStats& s, const track::TrackCounters& c);
+/// "key": {"covariance": n, "nis": m}: filters restarted by their divergence guard, by what tripped it.
+void writeFilterResets(io::JsonWriter& w, const char* key, const est::DivergenceCounts& c);
 
 }  // namespace reckoner::files

@@ -153,7 +153,14 @@ double drkfNees(const State& err, const Covariance& P, const ProcessParams& p) {
 }
 
 Drkf::Drkf(const DrkfConfig& config, const geo::LocalFrame& frame, const Belief& initial, TimeUs t0)
-    : config_(config), frame_(frame), process_(config.process), belief_(initial), timeUs_(t0) {
+    : config_(config),
+      frame_(frame),
+      process_(config.process),
+      belief_(initial),
+      timeUs_(t0),
+      initialP_(initial.P),
+      modelled_(neesStates(config.process)),
+      guard_(config.guard) {
   if (!initial.x.allFinite() || !est::isPositiveDefinite(initial.P)) {
     throw std::invalid_argument("DRKF: initial state must be finite with a positive definite covariance");
   }
@@ -295,6 +302,17 @@ double Drkf::linearisableSpeed(bool overGround) const {
 }
 
 DrkfUpdateReport Drkf::update(TimeUs t, std::span<const sensors::OwnShipSample> samples) {
+  // The guard looks at the covariance before the epoch too (as the last prediction or update left it),
+  // so that a covariance broken since the last epoch restarts at this epoch's own fix.
+  if (!guard_.diverged()) guard_.checkCovariance<kStateDim>(belief_.P, &modelled_);
+  if (guard_.diverged() && t >= timeUs_)
+    if (const sensors::GpsSample* fix = usableFix(t, samples)) return restartAt(t, *fix, samples);
+  DrkfUpdateReport report = updateEpoch(t, samples);
+  watch(report);
+  return report;
+}
+
+DrkfUpdateReport Drkf::updateEpoch(TimeUs t, std::span<const sensors::OwnShipSample> samples) {
   DrkfUpdateReport report;
   report.timeUs = t;
   if (!predictTo(t)) {
@@ -455,18 +473,22 @@ est::UpdateReport<3> Drkf::updateRadarFix(TimeUs t, const est::Vec<3>& z, const 
   }
   const State& x = belief_.x;
   if (std::hypot(x[kVelX], x[kVelY]) >= linearisableSpeed(false)) {
-    return est::update(belief_,
-                       est::drkf::RadarFixModel(sensitivity, assumedMotion, config_.process.ship.enabled), z,
-                       R, gates_[3]);
+    rep = est::update(belief_,
+                      est::drkf::RadarFixModel(sensitivity, assumedMotion, config_.process.ship.enabled), z,
+                      R, gates_[3]);
+  } else {
+    const auto r2 = est::update(belief_,
+                                est::drkf::RadarPositionModel(est::Mat<2>(sensitivity.topLeftCorner<2, 2>()),
+                                                              est::Vec<2>(assumedMotion.head<2>())),
+                                est::Vec<2>(z.head<2>()), est::Mat<2>(R.topLeftCorner<2, 2>()), gates_[2]);
+    rep.dim = r2.dim;
+    rep.status = r2.status;
+    rep.nis = r2.nis;
+    rep.gate = r2.gate;
   }
-  const auto r2 = est::update(belief_,
-                              est::drkf::RadarPositionModel(est::Mat<2>(sensitivity.topLeftCorner<2, 2>()),
-                                                            est::Vec<2>(assumedMotion.head<2>())),
-                              est::Vec<2>(z.head<2>()), est::Mat<2>(R.topLeftCorner<2, 2>()), gates_[2]);
-  rep.dim = r2.dim;
-  rep.status = r2.status;
-  rep.nis = r2.nis;
-  rep.gate = r2.gate;
+  // The guard judges a radar fix as it does an epoch (a filter it marks diverged restarts at a GNSS fix).
+  if (rep.applied() || rep.status == est::UpdateStatus::RejectedGate) guard_.addNis(rep.nis, rep.dim);
+  guard_.checkCovariance<kStateDim>(belief_.P, &modelled_);
   return rep;
 }
 

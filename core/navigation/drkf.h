@@ -7,6 +7,7 @@
 #include <array>
 #include <span>
 
+#include "estimation/divergence_guard.h"
 #include "estimation/measurement_stack.h"
 #include "estimation/models/drkf_process.h"
 #include "estimation/nis_window.h"
@@ -34,6 +35,10 @@ struct DrkfConfig {
   /// with forgetting over about adaptiveWindow fixes. Off: R as the receiver says.
   bool adaptiveGnssNoise = false;
   double adaptiveWindow = 60.0;
+  /// The divergence guard (estimation/divergence_guard.h, docs/consistency.md "Divergence guards"):
+  /// a filter whose covariance loses positive definiteness, or whose NIS stays far above its band,
+  /// restarts at the next GNSS fix.
+  est::DivergenceGuardConfig guard;
 };
 
 /// The adaptive GNSS noise's state: per grid axis, the inverse-gamma (alpha, beta) of the scale on R.
@@ -58,6 +63,11 @@ struct DrkfUpdateReport {
   est::UpdateReport<8> joint;
   std::array<est::BlockReport, kMaxBlocksPerEpoch> blocks{};
   int blockCount = 0;
+  /// The filter restarted at this epoch's GNSS fix, and why it had diverged (None: no restart). The
+  /// fix's blocks then read AcceptedForced with no NIS: they made the new state.
+  est::DivergenceReason reset = est::DivergenceReason::None;
+  /// After this epoch the filter is marked diverged, waiting for a GNSS fix to restart (None: healthy).
+  est::DivergenceReason diverged = est::DivergenceReason::None;
 
   /// The report of a block, or nullptr when this epoch had none.
   [[nodiscard]] const est::BlockReport* block(DrkfBlock b) const;
@@ -73,8 +83,9 @@ void addToNisWindows(const DrkfUpdateReport& r, DrkfNisWindows& windows);
 struct DrkfCounters {
   std::array<std::array<long, 8>, kDrkfBlockCount> byStatus{};  ///< [block][UpdateStatus]
   long predictFailures = 0;
-  long staleSamples = 0;     ///< stamped other than their epoch, or older than the filter
-  long overflowSamples = 0;  ///< beyond an epoch's capacity (kMaxBlocksPerEpoch blocks, 8 rows)
+  long staleSamples = 0;         ///< stamped other than their epoch, or older than the filter
+  long overflowSamples = 0;      ///< beyond an epoch's capacity (kMaxBlocksPerEpoch blocks, 8 rows)
+  est::DivergenceCounts resets;  ///< restarts by the divergence guard, by what tripped it
 };
 
 /// Initial uncertainty: position and velocity from the caller, every Gauss-Markov state at its
@@ -108,6 +119,8 @@ class Drkf {
   bool predictTo(TimeUs t);
 
   /// Predicts to t and applies every sample (all stamped t; others are counted stale and skipped).
+  /// Then the divergence guard judges the result; a filter it marked diverged is restarted instead at
+  /// the first epoch with a usable GNSS fix (restartAt).
   DrkfUpdateReport update(TimeUs t, std::span<const sensors::OwnShipSample> samples);
   /// A radar fix at t (seed 004): position (grid m) and heading (grid, the direction of the velocity
   /// through the water) with their joint covariance, and how the fix moves with the filter's velocity
@@ -125,6 +138,8 @@ class Drkf {
   /// std::invalid_argument for a non-finite belief.
   void setBelief(const drkf::Belief& b, TimeUs t);
   [[nodiscard]] const DrkfCounters& counters() const { return counters_; }
+  /// The divergence guard: diverged() while waiting to restart, its margins for the figures.
+  [[nodiscard]] const est::DivergenceGuard& guard() const { return guard_; }
   /// The adaptive GNSS noise's current scale per axis (1, 1 when not adaptive).
   [[nodiscard]] const GnssNoiseScale& gnssNoiseScale() const { return gnssScale_; }
   [[nodiscard]] const DrkfConfig& config() const { return config_; }
@@ -161,6 +176,21 @@ class Drkf {
                 const est::Mat<Model::kDim>& R);
   /// Counts each block's outcome and starts or stops its gate's re-opening clock.
   void commitOutcomes(const DrkfUpdateReport& report, TimeUs t);
+  /// One epoch: predict, the stacked update, the heading alone, the adaptive noise, the counts.
+  DrkfUpdateReport updateEpoch(TimeUs t, std::span<const sensors::OwnShipSample> samples);
+
+  // ---- The divergence guard (drkf_guard.cpp) ----
+  /// The epoch's first GNSS fix stamped t with a finite position and a positive variance, or null.
+  [[nodiscard]] static const sensors::GpsSample* usableFix(TimeUs t,
+                                                           std::span<const sensors::OwnShipSample> samples);
+  /// The belief a restart at this fix starts from: the initial covariance, position (and velocity when
+  /// the fix has one) from the fix, at least as uncertain as the fix, every other state at its prior.
+  [[nodiscard]] drkf::Belief beliefAtFix(const sensors::GpsSample& fix) const;
+  /// Restarts at the fix (which the restart consumes) and applies the epoch's other samples.
+  DrkfUpdateReport restartAt(TimeUs t, const sensors::GpsSample& fix,
+                             std::span<const sensors::OwnShipSample> samples);
+  /// The guard's verdict on the epoch just made: its blocks' NIS and the covariance.
+  void watch(DrkfUpdateReport& report);
 
   // ---- A heading with no log in its epoch under a ship's motion model (drkf_heading.cpp) ----
   struct HeadingFix {
@@ -201,6 +231,9 @@ class Drkf {
   geo::GridInfo grid_;
   DrkfCounters counters_;
   GnssNoiseScale gnssScale_;
+  drkf::Covariance initialP_;                     ///< the covariance the filter started with
+  std::array<bool, drkf::kStateDim> modelled_{};  ///< the states the guard judges (neesStates)
+  est::DivergenceGuard guard_;
 };
 
 }  // namespace reckoner::nav

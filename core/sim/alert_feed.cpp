@@ -84,6 +84,15 @@ void AlertFeed::feedTracks(const SimFrame& f, alerts::AlertManager& m) {
       m.report(now, {AlertKind::GuardZone, t.trackId}, intruder,
                intruder ? trackText(t.trackId, ": new target in a guard zone") : "");
   }
+  // Filter resets are events: raised in their frame, ended in the next (they wait for acknowledgement).
+  for (const int id : resetTracks_) m.report(now, {AlertKind::TrackFilterReset, id}, false);
+  resetTracks_.clear();
+  for (const track::TrackEvent& e : f.trackEvents) {
+    if (e.kind != track::TrackEvent::Kind::FilterReset) continue;
+    m.report(now, {AlertKind::TrackFilterReset, e.trackId}, true,
+             trackText(e.trackId, ": filter restarted (") + est::divergenceReasonText(e.reason) + ")");
+    resetTracks_.insert(e.trackId);
+  }
   for (const int gone : tracks_) {
     if (present.count(gone) != 0) continue;
     cpa_.forget(gone);
@@ -114,6 +123,21 @@ void AlertFeed::feedOwnShip(const SimFrame& f, alerts::AlertManager& m) const {
         noisy ? std::string(nav::blockName(static_cast<nav::DrkfBlock>(b))) + " larger than configured" : "");
   }
   m.report(now, {AlertKind::Capacity, 0}, f.capacityWarning, "track capacity near its limit");
+  // The DRKF's divergence guard: the condition holds while the filter is marked diverged and in the
+  // frame of its restart; a frame without an epoch leaves it as it was.
+  if (f.updates.empty()) return;
+  est::DivergenceReason restarted = est::DivergenceReason::None;
+  for (const nav::DrkfUpdateReport& u : f.updates)
+    if (u.reset != est::DivergenceReason::None) restarted = u.reset;
+  const est::DivergenceReason diverged = f.updates.back().diverged;
+  std::string text;
+  if (diverged != est::DivergenceReason::None)
+    text = std::string("own-ship filter diverged (") + est::divergenceReasonText(diverged) +
+           "): it restarts at the next GNSS fix";
+  else if (restarted != est::DivergenceReason::None)
+    text =
+        std::string("own-ship filter restarted at a GNSS fix (") + est::divergenceReasonText(restarted) + ")";
+  m.report(now, {AlertKind::DrFilterReset, 0}, !text.empty(), text);
 }
 
 void AlertFeed::feedDiscrepancy(const SimFrame& f, alerts::AlertManager& m) {

@@ -20,6 +20,9 @@
 //   OFF TRACK           while the cross-track distance is beyond the leg's limit (with hysteresis)
 //   WAYPOINT APPROACH   per waypoint, once, when its wheel-over point is within the warning time
 //   ARRIVAL             once, at the route's last waypoint
+//   DR FILTER RESET     while the DRKF's divergence guard has it marked diverged, and in the frame of
+//                       its restart at a GNSS fix (then waiting for acknowledgement)
+//   TRACK FILTER RESET  per track, in the frame its filter was restarted by its divergence guard
 #include <optional>
 #include <set>
 
@@ -89,6 +92,7 @@ class AlertFeed {
   std::optional<TimeUs> contourSinceUs_, dangerSinceUs_;  ///< since when the probability is above
   std::string contourText_, dangerText_, groundedText_;
   std::set<int> routeEvents_;  ///< WAYPOINT APPROACH sources (and ARRIVAL as -1) raised last frame
+  std::set<int> resetTracks_;  ///< TRACK FILTER RESET sources raised last frame
 };
 
 }  // namespace reckoner::sim

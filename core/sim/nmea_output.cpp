@@ -94,6 +94,7 @@ char categoryLetter(alerts::AlertKind k) {
     case alerts::AlertKind::GuardZone:
     case alerts::AlertKind::LostTarget:
     case alerts::AlertKind::LostAisTarget:
+    case alerts::AlertKind::TrackFilterReset:
       return 'A';
     default:
       return 'B';

@@ -249,6 +249,7 @@ void Runner::stop() {
   sum.predictFailures += c.predictFailures;
   sum.staleSamples += c.staleSamples;
   sum.overflowSamples += c.overflowSamples;
+  sum.resets += c.resets;
   drkf_.reset();
   failedEpochs_ = 0;
 }

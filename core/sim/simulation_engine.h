@@ -147,6 +147,10 @@ class SimulationEngine {
   [[nodiscard]] const geo::LocalFrame& frame() const { return frame_; }
   [[nodiscard]] const nav::Drkf& drkf() const { return *drkf_; }
   [[nodiscard]] const track::TrackManager& trackers() const { return *manager_; }
+  /// Test hooks: the filters themselves, for tests that break a covariance on purpose (the divergence
+  /// guards'). Nothing else changes the engine's filters from outside.
+  nav::Drkf& drkfForTest() { return *drkf_; }
+  track::TrackManager& trackersForTest() { return *manager_; }
   /// The AIS transponders, table and fusion (idle when no target carries a transponder).
   [[nodiscard]] const AisTraffic& ais() const { return *ais_; }
   /// The voyage: route monitoring, the autopilot, the look-ahead and grounding (sim/voyage_watch.h).

@@ -10,6 +10,16 @@
 #include "estimation/singer.h"
 
 namespace reckoner::track {
+namespace {
+/// The DRKF the coupled filter runs its own-ship updates through: an update engine on the joint
+/// state's marginal, so without a divergence guard (a restart there would not be an update of the
+/// marginal, and the joint state's conditional transfer would be wrong).
+nav::DrkfConfig withoutGuard(nav::DrkfConfig c) {
+  c.guard.enabled = false;
+  return c;
+}
+}  // namespace
+
 namespace dk = est::drkf;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
@@ -18,7 +28,7 @@ CoupledDrttkf::CoupledDrttkf(const CoupledConfig& c, const geo::LocalFrame& fram
                              TimeUs t0)
     : config_(c),
       frame_(frame),
-      own_(c.own, frame, initial, t0),
+      own_(withoutGuard(c.own), frame, initial, t0),
       ownProcess_(c.own.process),
       radarGate_(c.gateProbability > 0.0 ? est::chiSquareQuantile(c.gateProbability, 2.0) : 0.0),
       x_(initial.x),

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 
+#include "estimation/divergence_guard.h"
 #include "tracking/input_window.h"
 #include "tracking/track_filter.h"
 
@@ -34,6 +35,8 @@ struct Track {
   est::ttkf::Belief lastUpdate;      ///< right after the last radar update: a lost track is shown here
   std::array<int, 10> recentTags{};  ///< tags of the last plots used (ring)
   int tagCount = 0;
+  /// The filter's divergence guard (TrackManager judges every radar update and AIS report with it).
+  est::DivergenceGuard guard;
 
   /// The most frequent tag among the last plots used (-1 if none): the true target in simulation.
   [[nodiscard]] int tag() const;

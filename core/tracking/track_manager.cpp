@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "estimation/chi_square.h"
+#include "estimation/ekf.h"
 #include "tracking/data_associator.h"
 #include "tracking/sweep_history.h"
 #include "tracking/track_predictor.h"
@@ -34,6 +35,8 @@ const char* trackEventName(TrackEvent::Kind k) {
       return "capacity_warning";
     case K::CapacityFull:
       return "capacity_full";
+    case K::FilterReset:
+      return "filter_reset";
   }
   return "?";
 }
@@ -102,8 +105,20 @@ const Track* TrackManager::find(int id) const {
 
 est::UpdateReport<4> TrackManager::fuseTargetState(int trackId, TimeUs t, const est::Vec<4>& z,
                                                    const est::Mat<4>& R, double gate, double adaptNis) {
-  for (auto& tr : tracks_)
-    if (tr.id == trackId && tr.active()) return tr.filter.updateTargetState(t, z, R, gate, adaptNis);
+  for (auto& tr : tracks_) {
+    if (tr.id != trackId || !tr.active()) continue;
+    const est::UpdateReport<4> rep = tr.filter.updateTargetState(t, z, R, gate, adaptNis);
+    if (!rep.applied() || !tr.guard.checkCovariance<est::ttkf::kStateDim>(tr.filter.belief().P)) return rep;
+    // Broken between radar updates: back to the belief right after the last radar update (judged
+    // healthy then), so that the gate can still take the plot the filter restarts on.
+    if (Ttkf* f = tr.filter.ttkf();
+        f && tr.lastUpdate.x.allFinite() && est::isPositiveDefinite(tr.lastUpdate.P)) {
+      Ttkf back(f->context(), tr.lastUpdate, tr.lastPlotUs);
+      if (lastOwn_ && lastOwn_->timeUs >= tr.lastPlotUs) back.feedOwnShip(*lastOwn_);
+      *f = std::move(back);
+    }
+    return rep;
+  }
   return {};
 }
 
@@ -246,6 +261,46 @@ void TrackManager::applyPlot(Track& t, const GridPlot& plot, int tag) {
   const PlotUpdate u = updater_.apply(t, plot, tag);
   if (u.manoeuvreDeclared) event(TrackEvent::Kind::Manoeuvre, plot.timeUs, t.id);
   if (u.applied) ++counters_.plotsAssociated;
+  guardAfterPlot(t, plot, tag);
+}
+
+void TrackManager::guardAfterPlot(Track& t, const GridPlot& plot, int tag) {
+  const est::UpdateReport<2>& r = t.lastRadar;
+  if (r.applied() || r.status == est::UpdateStatus::RejectedGate) t.guard.addNis(r.nis, r.dim);
+  // The IMM's own (combined) covariance: the 12-state belief it shows derives the acceleration from
+  // the turn rate and the velocity, so that one is singular by construction.
+  if (const ImmTrackFilter* imm = t.filter.imm())
+    t.guard.checkCovariance<est::ct::kStateDim>(imm->filter().combined().P);
+  else
+    t.guard.checkCovariance<est::ttkf::kStateDim>(t.filter.belief().P);
+  if (!t.guard.diverged()) return;
+  const est::DivergenceReason why = t.guard.reason();
+  if (!restartFilter(t, plot, tag)) return;
+  t.guard.reset();
+  counters_.filterResets +=
+      why == est::DivergenceReason::Covariance ? est::DivergenceCounts{1, 0} : est::DivergenceCounts{0, 1};
+  events_.push_back({TrackEvent::Kind::FilterReset, plot.timeUs, t.id, why});
+}
+
+bool TrackManager::restartFilter(Track& t, const GridPlot& plot, int tag) {
+  // The plot was associated with the track before its update revealed the divergence: the track's
+  // newest measurement, and the one its new filter starts on (as a new track starts on its first).
+  if (!lastOwn_ || plot.timeUs < lastOwn_->timeUs) return false;
+  std::optional<TrackFilter> f = filters_.start(t.filter.kind(), *lastOwn_, plot);
+  if (!f) return false;
+  t.filter = std::move(*f);
+  if (t.filter.kind() == TrackerKind::EkfInputEstimation)
+    t.inputWindow = InputWindow<est::ttkf::kStateDim>(config_.inputEstimationWindow);
+  t.manoeuvring = false;
+  t.lastRadarUs = t.lastPlotUs = plot.timeUs;
+  t.seenThisSweep = true;
+  t.lastUpdate = t.filter.belief();
+  if (!t.lastRadar.applied()) {  // the plot now counts as used
+    t.recentTags[static_cast<std::size_t>(t.tagCount % static_cast<int>(t.recentTags.size()))] = tag;
+    ++t.tagCount;
+    ++t.radarUpdates;
+  }
+  return true;
 }
 
 std::optional<int> TrackManager::startTrack(const OwnShipInput& own, const GridPlot& plot, int tag,
@@ -259,6 +314,7 @@ std::optional<int> TrackManager::startTrack(const OwnShipInput& own, const GridP
   std::optional<TrackFilter> filter = filters_.start(config_.kind, own, plot);
   if (!filter) return std::nullopt;
   Track t(nextId_++, std::move(*filter));
+  t.guard = est::DivergenceGuard(config_.guard);
   if (config_.kind == TrackerKind::EkfInputEstimation)
     t.inputWindow = InputWindow<est::ttkf::kStateDim>(config_.inputEstimationWindow);
   t.lastRadarUs = plot.timeUs;

@@ -64,6 +64,10 @@ struct TrackManagerConfig {
   double inputEstimationPfa = 1e-4;
   AbgConfig abg{0.1, true};
   ImmConfig imm;
+  /// Every track's divergence guard (estimation/divergence_guard.h, docs/consistency.md "Divergence
+  /// guards"): a filter whose covariance loses positive definiteness, or whose NIS stays far above its
+  /// band, restarts on an associated plot, keeping its track number.
+  est::DivergenceGuardConfig guard;
   /// Empty if valid, else the first problem.
   [[nodiscard]] std::string check() const;
 };
@@ -80,10 +84,12 @@ struct TrackEvent {
     Manoeuvre,        ///< a manoeuvre was declared (rising edge of the flag: ekf-ie and imm)
     CapacityWarning,  ///< the number of tracks reached the warning level (rising edge)
     CapacityFull,     ///< a plot was not acquired because the bank is full (once per sweep)
+    FilterReset,      ///< the divergence guard restarted the track's filter on a plot (reason says why)
   };
   Kind kind;
   TimeUs timeUs = 0;
   int trackId = 0;
+  est::DivergenceReason reason = est::DivergenceReason::None;  ///< FilterReset: what tripped the guard
 };
 const char* trackEventName(TrackEvent::Kind k);
 
@@ -97,7 +103,8 @@ struct TrackCounters {
   long tracksConfirmed = 0;
   long tracksLost = 0;
   long tracksDropped = 0;
-  std::size_t largestCluster = 0;  ///< largest association cluster solved (tracks + plots)
+  std::size_t largestCluster = 0;      ///< largest association cluster solved (tracks + plots)
+  est::DivergenceCounts filterResets;  ///< track filters restarted by their divergence guard
 };
 
 class TrackManager {
@@ -178,6 +185,11 @@ class TrackManager {
   void initiateFromUnassociated(const std::vector<char>& taken);
   void associateKnown(const GridPlot& plot, int tag);
   void applyPlot(Track& t, const GridPlot& plot, int tag);
+  /// The guard's verdict on the radar update just made with `plot`; a diverged filter restarts on it.
+  void guardAfterPlot(Track& t, const GridPlot& plot, int tag);
+  /// A new filter of the track's kind started on the plot (same track number); false when the plot
+  /// cannot start one (the guard stays tripped: the next associated plot is tried).
+  bool restartFilter(Track& t, const GridPlot& plot, int tag);
   std::optional<int> startTrack(const OwnShipInput& own, const GridPlot& plot, int tag, bool manual);
   void judgeTentative(Track& t, TimeUs now);
   void loseTrack(Track& t, TimeUs now);

@@ -95,6 +95,7 @@ class Ttkf {
                                          double adaptNis = 0.0);
   /// The context (process model) from now on: a track fused with AIS runs a quieter target model.
   void setContext(std::shared_ptr<const TtkfContext> ctx) { ctx_ = std::move(ctx); }
+  [[nodiscard]] const std::shared_ptr<const TtkfContext>& context() const { return ctx_; }
   /// Restarts the target's acceleration estimate: 0 with the context's stationary variance, no
   /// correlation with the rest (on association with AIS: the radar-only estimate of the acceleration
   /// is the noisiest part of the state, and the quieter model would keep its error for long).

@@ -33,7 +33,9 @@ constexpr AlertKind kAllKinds[] = {AlertKind::CpaTcpa,
                                    AlertKind::Grounded,
                                    AlertKind::OffTrack,
                                    AlertKind::WaypointApproach,
-                                   AlertKind::Arrival};
+                                   AlertKind::Arrival,
+                                   AlertKind::DrFilterReset,
+                                   AlertKind::TrackFilterReset};
 
 track::Cpa cpaAt(double cpaM, double tcpaS) {
   track::Cpa c;

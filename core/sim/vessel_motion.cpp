@@ -258,6 +258,12 @@ void VesselMotionModel::runAground() {
 bool VesselMotionModel::overrideFrom(const KinematicEvent& e) {
   if (e.timeUs <= committed_.timeUs) return false;
   auto& events = spec_.schedule;
+  // Events before the committed one are spent (their effect is in committed_, a view starts from it):
+  // drop them once there are many, so that an autopilot's orders over days do not pile up.
+  if (committed_.nextEvent >= kSpentEventsKept) {
+    events.erase(events.begin(), events.begin() + static_cast<std::ptrdiff_t>(committed_.nextEvent));
+    committed_.nextEvent = 0;
+  }
   while (events.size() > committed_.nextEvent && events.back().timeUs >= e.timeUs) events.pop_back();
   events.push_back(e);
   return true;

@@ -42,7 +42,8 @@ class VesselMotionModel {
   [[nodiscard]] const std::optional<HelmOrder>& order() const { return order_; }
 
   /// An operator's event (time after every committed one): drops the scheduled events at or after its
-  /// time and appends it, so the schedule records what happened. Returns false if the time is too early.
+  /// time and appends it. Returns false if the time is too early. (The model keeps only the events
+  /// still to come and the last few spent; the engine's scenario is the record of what happened.)
   bool overrideFrom(const KinematicEvent& e);
 
   /// The vessel runs aground at its position at the last time asked for: from then on it stays there,
@@ -51,6 +52,8 @@ class VesselMotionModel {
   [[nodiscard]] bool aground() const { return aground_.has_value(); }
 
   static constexpr TimeUs kGridUs = 100'000;
+  /// Spent events are dropped once this many have piled up.
+  static constexpr std::size_t kSpentEventsKept = 256;
 
  private:
   /// Everything that evolves, so that a copy can be propagated to an off-grid time.

@@ -93,6 +93,36 @@ class TestVesselTruth : public QObject {
     RK_COMPARE_NEAR(m.state().waterVxMps, 8.0, 1e-9);
     QCOMPARE(m.state().accelXMps2, 0.0);
   }
+  void thousandsOfOrdersMoveTheShipAsTheSameScheduleGivenAhead() {
+    // GIVEN a ship with a random acceleration WHEN an autopilot orders a new heading every 2 s for
+    // 6000 s (3000 orders: the model drops spent ones as it goes) THEN it is where the same ship with the
+    // same 3000 orders in its schedule from the start is, bit for bit.
+    VesselMotionSpec spec;
+    spec.initialVelocityMps = {0.0, 5.0};
+    spec.maxAccelerationMps2 = 0.05;
+    spec.maxTurnRateRadPerS = degToRad(0.5);
+    spec.randomAcceleration = est::GaussMarkov{0.01, 0.05};
+    std::vector<KinematicEvent> orders;
+    for (int k = 1; k <= 3000; ++k) {
+      KinematicEvent e;
+      e.timeUs = k * 2 * kMicrosPerSecond + 1;
+      e.order = HelmOrder{degToRad(std::fmod(7.0 * k, 360.0)), 4.0 + (k % 5)};
+      orders.push_back(e);
+    }
+    VesselMotionSpec ahead = spec;
+    ahead.schedule = orders;
+    VesselMotionModel a(ahead, kNoCurrent, Rng(3, kStreamTruth));
+    VesselMotionModel b(spec, kNoCurrent, Rng(3, kStreamTruth));
+    for (const KinematicEvent& e : orders) {
+      b.advanceTo(e.timeUs - 1);
+      QVERIFY(b.overrideFrom(e));
+    }
+    a.advanceTo(6010 * kMicrosPerSecond);
+    b.advanceTo(6010 * kMicrosPerSecond);
+    QCOMPARE(b.state().position.xM, a.state().position.xM);
+    QCOMPARE(b.state().position.yM, a.state().position.yM);
+    QCOMPARE(b.state().headingRad, a.state().headingRad);
+  }
   void helmOrderTakesTheShorterWayRound() {
     // 350 -> 010 turns starboard through north (the 359 -> 1 degree crossing).
     VesselMotionSpec spec;

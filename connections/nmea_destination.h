@@ -44,7 +44,7 @@ struct DestinationCounters {
 class NmeaDestination : public QObject {
   Q_OBJECT
  public:
-  static constexpr qint64 kDefaultClientBufferBytes = 256 * 1024;
+  static constexpr qint64 kDefaultClientBufferBytes = qint64{256} * 1024;
   /// Opens the destination. Throws std::runtime_error naming the file, address or port on failure.
   explicit NmeaDestination(const DestinationSpec& spec, QObject* parent = nullptr,
                            qint64 maxClientBufferBytes = kDefaultClientBufferBytes);

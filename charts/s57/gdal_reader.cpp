@@ -106,7 +106,7 @@ MemoryFiles::~MemoryFiles() {
 }
 
 std::string MemoryFiles::add(const std::string& name, const std::string& bytes, const std::string& file) {
-  const std::string path = dir_ + name;
+  std::string path = dir_ + name;
   VSILFILE* fp = VSIFileFromMemBuffer(path.c_str(), reinterpret_cast<GByte*>(const_cast<char*>(bytes.data())),
                                       static_cast<vsi_l_offset>(bytes.size()), FALSE);
   if (!fp) throw ChartLoadError(file, "cannot be handed to GDAL in memory");

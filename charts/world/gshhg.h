@@ -60,7 +60,8 @@ class Shoreline {
   /// Row by row from the north (row 0: 90°N down to 90° - bin size), each row from 0°E eastwards.
   [[nodiscard]] const std::vector<ShoreBin>& bins() const { return bins_; }
   [[nodiscard]] const ShoreBin& bin(int row, int column) const {
-    return bins_[static_cast<std::size_t>(row * columns_ + column)];
+    return bins_[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
+                 static_cast<std::size_t>(column)];
   }
   /// The bin holding a point (any longitude; latitude clamped to the grid).
   [[nodiscard]] const ShoreBin& binAt(const LatLon& p) const;

@@ -8,6 +8,13 @@
 namespace reckoner::est {
 namespace {
 
+// log Gamma(a), a > 0, through lgamma_r: std::lgamma writes the global signgam, a data race when two
+// threads set up filters at once (the workers run theirs off the GUI thread; concurrency-mt-unsafe).
+double logGamma(double a) {
+  int sign = 0;
+  return ::lgamma_r(a, &sign);
+}
+
 // Series P(a, x) = e^-x x^a / Gamma(a + 1) * sum_n x^n / ((a + 1) ... (a + n)); converges for x < a + 1.
 double gammaPSeries(double a, double x) {
   double term = 1.0 / a;
@@ -17,7 +24,7 @@ double gammaPSeries(double a, double x) {
     sum += term;
     if (std::abs(term) < std::abs(sum) * 1e-16) break;
   }
-  return sum * std::exp(-x + a * std::log(x) - std::lgamma(a));
+  return sum * std::exp(-x + a * std::log(x) - logGamma(a));
 }
 
 // Continued fraction for Q(a, x) = 1 - P(a, x), modified Lentz; converges for x >= a + 1.
@@ -39,7 +46,7 @@ double gammaQContinuedFraction(double a, double x) {
     h *= delta;
     if (std::abs(delta - 1.0) < 1e-16) break;
   }
-  return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
+  return std::exp(-x + a * std::log(x) - logGamma(a)) * h;
 }
 
 }  // namespace
@@ -64,7 +71,7 @@ double chiSquareQuantile(double p, double dof) {
   double x = dof;  // the mean; a fine start for all but tiny dof
   if (x <= lo || x >= hi) x = 0.5 * (lo + hi);
   const double a = 0.5 * dof;
-  const double logNorm = -a * std::log(2.0) - std::lgamma(a);
+  const double logNorm = -a * std::log(2.0) - logGamma(a);
   for (int it = 0; it < 200; ++it) {
     const double f = chiSquareCdf(x, dof) - p;
     if (f > 0.0)

@@ -63,8 +63,8 @@ class SparseTransition {
  private:
   Mat<N> dense_ = Mat<N>::Identity();
   std::array<int, N + 1> rowStart_{};
-  std::array<std::uint8_t, N * N> cols_{};
-  std::array<double, N * N> vals_{};
+  std::array<std::uint8_t, static_cast<std::size_t>(N) * N> cols_{};
+  std::array<double, static_cast<std::size_t>(N) * N> vals_{};
   int count_ = 0;
 };
 

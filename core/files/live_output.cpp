@@ -14,7 +14,7 @@ namespace reckoner::files {
 
 LiveOutputWriter::File LiveOutputWriter::open(const std::string& path, const std::string& header) {
   File file{path, std::fopen(path.c_str(), "wb")};
-  if (!file.f) throw io::InputError(path, 0, "", std::string("cannot write: ") + std::strerror(errno));
+  if (!file.f) throw io::InputError(path, 0, "", std::string("cannot write: ") + io::errnoText(errno));
   put(file, header);
   flush(file);
   return file;
@@ -23,12 +23,12 @@ LiveOutputWriter::File LiveOutputWriter::open(const std::string& path, const std
 void LiveOutputWriter::put(File& file, const std::string& line) {
   if (!file.f) return;
   if (std::fwrite(line.data(), 1, line.size(), file.f) != line.size() || std::fputc('\n', file.f) == EOF)
-    throw io::InputError(file.path, 0, "", std::string("write failed: ") + std::strerror(errno));
+    throw io::InputError(file.path, 0, "", std::string("write failed: ") + io::errnoText(errno));
 }
 
 void LiveOutputWriter::flush(File& file) {
   if (file.f && std::fflush(file.f) != 0)
-    throw io::InputError(file.path, 0, "", std::string("write failed: ") + std::strerror(errno));
+    throw io::InputError(file.path, 0, "", std::string("write failed: ") + io::errnoText(errno));
 }
 
 LiveOutputWriter::LiveOutputWriter(const std::string& dir, bool radar)

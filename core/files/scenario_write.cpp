@@ -376,13 +376,13 @@ void saveScenarioFile(const sim::Scenario& s, const std::string& path) {
   const std::string tmp = path + ".part";
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path, 0, "", std::string("cannot write: ") + std::strerror(errno));
+    if (!out) throw InputError(path, 0, "", std::string("cannot write: ") + errnoText(errno));
     out << text;
     out.flush();
-    if (!out) throw InputError(path, 0, "", std::string("write error: ") + std::strerror(errno));
+    if (!out) throw InputError(path, 0, "", std::string("write error: ") + errnoText(errno));
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
+    const std::string why = errnoText(errno);
     std::remove(tmp.c_str());
     throw InputError(path, 0, "", "cannot replace the file: " + why);
   }

@@ -38,7 +38,7 @@ std::optional<UtcUs> parseIso8601(std::string_view s) {
       *mi > 59 || *sec < 0.0 || *sec >= 61.0)
     return std::nullopt;
   return io::daysFromCivil(*y, *mo, *d) * kUsPerDay +
-         (static_cast<std::int64_t>(*h) * 3600 + *mi * 60) * 1000000LL +
+         (static_cast<std::int64_t>(*h) * 3600 + static_cast<std::int64_t>(*mi) * 60) * 1000000LL +
          static_cast<std::int64_t>(std::llround(*sec * 1e6));
 }
 

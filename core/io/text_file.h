@@ -17,4 +17,8 @@ std::string readTextFile(const std::string& path);
 /// Writes text to path (truncating). Throws InputError naming the file when it cannot.
 void writeTextFile(const std::string& path, const std::string& text);
 
+/// The C library's text for an errno value, as std::strerror gives it but safe from any thread
+/// (strerror_r; std::strerror may share one buffer between threads).
+std::string errnoText(int error);
+
 }  // namespace reckoner::io

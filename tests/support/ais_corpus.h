@@ -19,7 +19,8 @@ struct PayloadBuilder {
   }
   PayloadBuilder& text(const std::string& s, int chars) {
     for (int i = 0; i < chars; ++i) {
-      const int c = i < static_cast<int>(s.size()) ? s[static_cast<std::size_t>(i)] : '@';
+      const int c =
+          i < static_cast<int>(s.size()) ? static_cast<unsigned char>(s[static_cast<std::size_t>(i)]) : '@';
       put(c >= 64 ? c - 64 : c, 6);
     }
     return *this;

@@ -23,7 +23,7 @@ inline std::vector<std::vector<files::InputLine>> simulatedBatches(int seconds, 
                                                                    const std::string& aisPath) {
   sim::Scenario s = builtinScenario("ttkf-matched");
   s.durationUs = seconds * kMicrosPerSecond;
-  const sim::ExportedRun e = sim::exportRun(s, 3, day + 10 * 3600 * kMicrosPerSecond);
+  const sim::ExportedRun e = sim::exportRun(s, 3, day + UtcUs{10} * 3600 * kMicrosPerSecond);
   const auto radar = splitLines(e.radarCsv, EmptyLines::Drop);
   std::vector<std::string> ais;
   for (auto& l : splitLines(io::readTextFile(aisPath)))

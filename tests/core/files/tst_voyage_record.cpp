@@ -328,7 +328,7 @@ class TestVoyageRecord : public QObject {
     QCOMPARE(committed(), std::int64_t{2});
     // WHEN a recording is played 100 times faster than real time (10 s of stream per 0.1 s of wall)
     for (int k = 1; k <= 100; ++k) {
-      const UtcUs stream = kDay + 500 * ms + k * 100 * ms, wall = kDay + 500 * ms + k * ms;
+      const UtcUs stream = kDay + 500 * ms + UtcUs{k} * 100 * ms, wall = kDay + 500 * ms + k * ms;
       rec.batch(line(wall), {}, {}, stream, wall);
       // THEN at most a second of stream time is ever pending
       QVERIFY(rec.lines() - committed() <= 10);
@@ -352,9 +352,10 @@ class TestVoyageRecord : public QObject {
     for (int k = 0; k < 1800; ++k, t += kMicrosPerSecond) {
       files::LiveBatch b;
       b.own.push_back(ownRowAt(t));
-      rec.batch(std::vector<files::InputLine>{{"nmea1", "$GPRMC", t, false}}, b, {}, t, kDay + k * 1000);
+      rec.batch(std::vector<files::InputLine>{{"nmea1", "$GPRMC", t, false}}, b, {}, t,
+                kDay + UtcUs{k} * 1000);
     }
-    rec.finish({}, {}, kDay + 1800 * 1000);
+    rec.finish({}, {}, kDay + UtcUs{1800} * 1000);
     // THEN the last 6 minutes are at full rate (pruning runs once a stream minute, so up to a minute more)
     const files::VoyageRecord r(path);
     const UtcUs newest = t - kMicrosPerSecond, cut = newest - 360 * kMicrosPerSecond;

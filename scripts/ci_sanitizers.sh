@@ -5,7 +5,7 @@
 #   scripts/ci_sanitizers.sh [asan|tsan|all]   # default: all
 #
 #   asan  preset asan-ci: ctest label "asan" (the core and chart tests) under ASan+UBSan (and LeakSanitizer)
-#   tsan  preset tsan:    ctest label "tsan" (the tests that drive our threads) under ThreadSanitizer
+#   tsan  preset tsan:    ctest label "tsan" (the Monte Carlo thread pool; not yet the Qt threads, see the docs)
 #
 # The sanitizer options (fatal reports, the suppression files of tests/sanitizers/) are the test presets'
 # environment in CMakePresets.json, so `ctest --preset asan-ci -L asan` by hand runs the same way.

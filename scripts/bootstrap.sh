@@ -6,6 +6,8 @@
 #   scripts/bootstrap.sh deps   # only install the Debian packages
 #   scripts/bootstrap.sh build  # install and build
 #   scripts/bootstrap.sh fuzz   # install clang and libFuzzer, build the fuzz targets (docs/robustness.md)
+#   scripts/bootstrap.sh release [STEP...]  # after test, the release checks (docs/robustness.md): soak (the
+#                                 # 1-hour soak), tidy, sanitizers (ASan+UBSan, TSan), fuzz (a minute a target)
 #
 # Environment: RECKONER_PRESET (default: ci = Release with warnings as errors), RECKONER_JOBS.
 set -euo pipefail
@@ -39,6 +41,8 @@ command -v node >/dev/null || packages+=(nodejs npm)
 # The fuzz targets only: clang's libFuzzer runtime is in libclang-rt-14-dev, which clang merely
 # recommends, so it is named.
 fuzz_packages=(clang libclang-rt-14-dev)
+# The release checks: clang-tidy (scripts/tidy.sh) and the sanitizer builds (clang, scripts/ci_sanitizers.sh).
+release_packages=(clang-tidy "${fuzz_packages[@]}")
 
 install_deps() {
   local missing=() p
@@ -82,5 +86,26 @@ case "$action" in
     cmake --preset fuzz >/dev/null
     cmake --build --preset fuzz -j "$jobs"
     ;;
-  *) echo "usage: scripts/bootstrap.sh run|test|deps|build|fuzz" >&2; exit 2 ;;
+  release)
+    # The release checks after `test`, each or all: soak (the 1-hour soak), tidy (clang-tidy on the files
+    # changed since RECKONER_TIDY_BASE), sanitizers (scripts/ci_sanitizers.sh), fuzz (a minute a target).
+    steps=("${@:2}")
+    [ ${#steps[@]} -gt 0 ] || steps=(soak tidy sanitizers fuzz)
+    extra=()  # clang and clang-tidy only for the steps that use them
+    for step in "${steps[@]}"; do [ "$step" = soak ] || extra=("${release_packages[@]}"); done
+    install_deps "${extra[@]}"
+    build
+    for step in "${steps[@]}"; do
+      t0=$SECONDS
+      case "$step" in
+        soak) "build/$preset/tests/reckoner-soak" --hours 1 --out "$here/out/soak" ;;
+        tidy) RECKONER_BUILD_DIR="build/$preset" scripts/tidy.sh --base "${RECKONER_TIDY_BASE:-HEAD~1}" ;;
+        sanitizers) RECKONER_JOBS=$jobs scripts/ci_sanitizers.sh all ;;
+        fuzz) scripts/fuzz_smoke.sh 60 ;;
+        *) echo "bootstrap: unknown release step $step (soak, tidy, sanitizers, fuzz)" >&2; exit 2 ;;
+      esac
+      echo "bootstrap: release step $step took $((SECONDS - t0)) s"
+    done
+    ;;
+  *) echo "usage: scripts/bootstrap.sh run|test|deps|build|fuzz|release" >&2; exit 2 ;;
 esac

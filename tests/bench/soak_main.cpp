@@ -8,6 +8,7 @@
 //   reckoner-soak --hours 24 --out /tmp/soak      (the soak; --hours 1 is CI's)
 #include <unistd.h>
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -128,6 +129,7 @@ int run(const Options& o) {
   soak::Samples samples;
   const auto start = std::chrono::steady_clock::now();
   TimeUs nextSampleUs = 0;
+  std::size_t peakAlerts = 0;
   while (!engine.finished()) {
     const sim::SimFrame f = engine.step();
     checker.check(f);
@@ -139,6 +141,13 @@ int run(const Options& o) {
     for (const auto& r : f.aisReceived) in.lines.push_back({"ais", aisSentence(r.message), rx, false});
     recorder.batch(in.lines, batchOf(f, engine.frame(), utc0, alerts), labels, utc0 + f.timeUs, wallNow());
     if (f.timeUs >= nextSampleUs) {
+      // The officer of the watch acknowledges what is on the list once a minute (BAM keeps a rectified
+      // alarm until it is acknowledged: an unattended run would pile them up).
+      peakAlerts = std::max(peakAlerts, alerts.alerts().size());
+      for (const alerts::Alert& a : alerts.alerts())
+        if (a.state == alerts::AlertState::Unacknowledged || a.state == alerts::AlertState::Silenced ||
+            a.state == alerts::AlertState::Rectified)
+          alerts.acknowledge(f.timeUs, a.id);
       const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       samples.add({toSeconds(f.timeUs), wallS, rssMb(), fileMb(recordPath), static_cast<int>(f.tracks.size()),
                    f.aisTargets ? static_cast<int>(f.aisTargets->size()) : 0});
@@ -156,6 +165,7 @@ int run(const Options& o) {
   const soak::Verdict v = soak::verdict(plan, checker.result(), samples, record);
   soak::writeReport(o.out + "/soak.json", plan, o.seed, checker.result(), samples, record, engine, v);
   soak::printSummary(checker.result(), samples, record, engine, v);
+  std::printf("alerts on the list: at most %zu (acknowledged once a minute)\n", peakAlerts);
   return v.pass ? 0 : 1;
 }
 

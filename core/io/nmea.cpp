@@ -405,9 +405,10 @@ ParseResult parse(std::string_view line) {
     sum = static_cast<unsigned char>(sum ^ static_cast<unsigned char>(line[i]));
   if (hi < 0 || lo < 0 || sum != hi * 16 + lo) {
     r.error = Error::BadChecksum;
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "checksum %02X, sentence says %.2s", sum, line.data() + star + 1);
-    r.reason = buf;
+    // The two characters after '*' are input: quoted, so that a reason stays one line whatever they are.
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "checksum %02X, sentence says ", sum);
+    r.reason = buf + quoted(line.substr(star + 1, 2), 8);
     return r;
   }
   const std::string_view body = line.substr(1, star - 1);

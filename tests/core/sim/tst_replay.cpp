@@ -72,6 +72,15 @@ class TestReplay : public QObject {
     QCOMPARE(nm::parse("").error, nm::Error::Empty);
     QCOMPARE(nm::parse("garbage").error, nm::Error::Malformed);
   }
+  void badChecksumReasonIsOneLine() {
+    // GIVEN a line whose two checksum characters are a line break and a control byte (found by
+    // fuzz_nmea: the reason quoted them raw). WHEN parsed THEN the reason quotes them, on one line.
+    const auto r = nm::parse(std::string("$GPHDT,274.07,T*\n\x01", 18));
+    QCOMPARE(r.error, nm::Error::BadChecksum);
+    QVERIFY2(r.reason.find_first_of("\r\n") == std::string::npos, r.reason.c_str());
+    QVERIFY2(r.reason.find("'\\n\\x01'") != std::string::npos, r.reason.c_str());
+    QVERIFY(nm::parse("$GPHDT,274.07,T*00").reason.ends_with("sentence says '00'"));
+  }
   void utcArithmetic() {
     QCOMPARE(io::daysFromCivil(1970, 1, 1), std::int64_t(0));
     QCOMPARE(io::daysFromCivil(2000, 3, 1), std::int64_t(11017));

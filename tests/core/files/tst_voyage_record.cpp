@@ -66,6 +66,13 @@ std::string errorOf(const std::string& path) {
     (void)rec.estimates(INT64_MIN, INT64_MAX);
     (void)rec.tracks(INT64_MIN, INT64_MAX);
     (void)rec.alerts();
+    if (rec.inputCount() > 0) {  // played through to its end: no more batches than inputs
+      const auto most = static_cast<std::size_t>(rec.inputCount()) + 1;
+      files::RecordPlayback play(path);
+      if (play.feedTo(
+              INT64_MAX, [](std::int64_t, std::span<const files::InputLine>) {}, most) == most)
+        return "played on and on";
+    }
     return {};
   } catch (const io::InputError& e) {
     return e.what();
@@ -406,6 +413,10 @@ class TestVoyageRecord : public QObject {
                              << "meta.settings.max_gap_s: not a number: 'nan'";
     QTest::newRow("infinite horizon") << "meta:live.reorder_horizon_s=inf"
                                       << "meta.live.reorder_horizon_s: not a number: 'inf'";
+    // Found by reading for fuzz_voyage_record: a playback pages on seq, and a seq that does not rise
+    // gave the same page for ever.
+    QTest::newRow("text seq") << "text-seq"
+                              << "inputs.seq: not a rising whole number: 'x1'";
     QTest::newRow("bad scenario") << "scenario"
                                   << "meta.settings.scenario: scenario:";
     QTest::newRow("truncated") << "truncated"
@@ -426,14 +437,19 @@ class TestVoyageRecord : public QObject {
     if (k == "empty") io::writeTextFile(path, "");
     if (k == "other") sql(path, "CREATE TABLE t(x); INSERT INTO t VALUES(1)");
     const bool copy = k == "version" || k == "no-version" || k == "table" || k == "column" ||
-                      k == "setting" || k.starts_with("meta:") || k == "scenario" || k == "truncated" ||
-                      k == "overwritten";
+                      k == "setting" || k.starts_with("meta:") || k == "text-seq" || k == "scenario" ||
+                      k == "truncated" || k == "overwritten";
     if (copy) copyFile(good_, path);
     if (k == "version") sql(path, "UPDATE meta SET value = '2' WHERE key = 'schema_version'");
     if (k == "no-version") sql(path, "DELETE FROM meta WHERE key = 'schema_version'");
     if (k == "table") sql(path, "DROP TABLE tracks");
     if (k == "column") sql(path, "ALTER TABLE ownship DROP COLUMN sd_x_m");
     if (k == "setting") sql(path, "UPDATE meta SET value = 'soon' WHERE key = 'settings.max_gap_s'");
+    if (k == "text-seq")
+      sql(path,
+          "ALTER TABLE inputs RENAME TO old_inputs; CREATE TABLE inputs(seq TEXT, batch INTEGER, rx_utc_us "
+          "INTEGER, source INTEGER, line TEXT); INSERT INTO inputs SELECT 'x' || seq, batch, rx_utc_us, "
+          "source, line FROM old_inputs; DROP TABLE old_inputs");
     if (k.starts_with("meta:")) {  // meta:KEY=VALUE
       const std::size_t eq = k.find('=');
       sql(path,

@@ -12,7 +12,8 @@ if(NOT TARGET reckoner::GeographicLib)
     INTERFACE_LINK_LIBRARIES "${GeographicLib_LIBRARIES}")
 endif()
 
-if(RECKONER_FUZZ)  # core/ alone: no Qt, no GDAL
+if(RECKONER_FUZZ)  # core/ and the S-57 loader: GDAL, no Qt
+  find_package(GDAL 3.6 REQUIRED)
   return()
 endif()
 

@@ -5,6 +5,7 @@
 #include "files/sqlite_db.h"
 #include "files/voyage_rows.h"
 #include "files/voyage_schema.h"
+#include "io/error_line.h"
 #include "io/input_error.h"
 #include "io/iso8601.h"
 
@@ -103,9 +104,15 @@ std::vector<RecordedInput> VoyageRecord::inputs(std::int64_t afterSeq, std::size
   sqlite::Statement q(
       *db_, "SELECT seq, batch, rx_utc_us, source, line FROM inputs WHERE seq > ?1 ORDER BY seq LIMIT ?2");
   q.bindAll(afterSeq, static_cast<std::int64_t>(std::min<std::size_t>(max, INT64_MAX)));
+  std::int64_t previous = afterSeq;
   while (q.step()) {
     RecordedInput in;
     in.seq = q.integer(0);
+    // A playback pages on seq: one that does not rise (a table of another making, with seq as text or
+    // a fraction) would give the same page again and again.
+    if (in.seq <= previous || q.text(0) != std::to_string(in.seq))
+      throw io::InputError(path(), 0, "inputs.seq", "not a rising whole number: " + io::quoted(q.text(0)));
+    previous = in.seq;
     in.batch = q.integer(1);
     in.receivedUtc = q.integer(2);
     if (const auto it = names.find(q.integer(3)); it != names.end()) {

@@ -1,6 +1,7 @@
 #include "files/voyage_schema.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -142,8 +143,28 @@ double number(const std::map<std::string, std::string>& m, const std::string& ke
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(t.c_str(), &end);
-  if (t.empty() || errno != 0 || *end != '\0') bad(path, "meta." + key, "not a number: " + io::quoted(t));
+  if (t.empty() || errno != 0 || *end != '\0' || !std::isfinite(v))
+    bad(path, "meta." + key, "not a number: " + io::quoted(t));
   return v;
+}
+
+/// A number of the meta table within [lo, hi] (a record's options come back into a run: a value no
+/// program writes, such as a window of 1e300 timestamps, is refused rather than cast or allocated).
+double number(const std::map<std::string, std::string>& m, const std::string& key, const std::string& path,
+              double lo, double hi) {
+  const double v = number(m, key, path);
+  if (v < lo || v > hi)
+    bad(path, "meta." + key,
+        io::quoted(m.at(key)) + " is outside [" + exactText(lo) + ", " + exactText(hi) + "]");
+  return v;
+}
+
+/// A whole number of the meta table within [lo, hi].
+std::int64_t integer(const std::map<std::string, std::string>& m, const std::string& key,
+                     const std::string& path, double lo, double hi) {
+  const double v = number(m, key, path, lo, hi);
+  if (v != std::floor(v)) bad(path, "meta." + key, "not a whole number: " + io::quoted(m.at(key)));
+  return static_cast<std::int64_t>(v);
 }
 
 bool flag(const std::map<std::string, std::string>& m, const std::string& key, const std::string& path) {
@@ -230,11 +251,11 @@ sim::LiveOptions optionsFromMeta(const std::map<std::string, std::string>& m, co
   r.settingsName = need(m, "settings.name", path);
   r.originFromSettings = flag(m, "settings.origin_from_settings", path);
   r.assumeAssociation = flag(m, "settings.assume_association", path);
-  r.maxGapS = number(m, "settings.max_gap_s", path);
-  r.time.isolatedJumpUs = static_cast<std::int64_t>(number(m, "settings.isolated_jump_us", path));
-  r.time.window = static_cast<int>(number(m, "settings.time_window", path));
-  r.magneticHeadingSdDeg = number(m, "settings.magnetic_heading_sd_deg", path);
-  r.sourceHoldS = number(m, "settings.source_hold_s", path);
+  r.maxGapS = number(m, "settings.max_gap_s", path, 0.0, 1e7);
+  r.time.isolatedJumpUs = integer(m, "settings.isolated_jump_us", path, 0.0, 1e12);
+  r.time.window = static_cast<int>(integer(m, "settings.time_window", path, 1.0, 1000.0));
+  r.magneticHeadingSdDeg = number(m, "settings.magnetic_heading_sd_deg", path, 0.0, 180.0);
+  r.sourceHoldS = number(m, "settings.source_hold_s", path, 0.0, 1e7);
   r.sweepFromPlots = flag(m, "settings.sweep_from_plots", path);
   if (m.contains("settings.date")) {
     const std::string& d = m.at("settings.date");
@@ -243,9 +264,10 @@ sim::LiveOptions optionsFromMeta(const std::map<std::string, std::string>& m, co
       bad(path, "meta.settings.date", "expected YYYY-MM-DD, got " + io::quoted(d));
     r.date = std::array<int, 3>{y, mo, day};
   }
-  if (m.contains("settings.variation_deg")) r.variationDeg = number(m, "settings.variation_deg", path);
+  if (m.contains("settings.variation_deg"))
+    r.variationDeg = number(m, "settings.variation_deg", path, -180.0, 180.0);
   o.name = need(m, "live.name", path);
-  o.reorderHorizonS = number(m, "live.reorder_horizon_s", path);
+  o.reorderHorizonS = number(m, "live.reorder_horizon_s", path, 0.0, 60.0);
   o.radar = flag(m, "live.radar", path);
   o.frames = flag(m, "live.frames", path);
   return o;

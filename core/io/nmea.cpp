@@ -143,7 +143,8 @@ Body parseRmc(const Fields& f) {
     r.lonDeg = angle(f, 5, 3, 'E', 'W', "RMC longitude");
   }
   r.sogKn = optionalNumber(f, 7, "RMC speed");
-  r.cogTrueDeg = optionalNumber(f, 8, "RMC course");
+  if (r.sogKn && *r.sogKn < 0.0) throw Bad{"RMC speed: negative"};
+  r.cogTrueDeg = heading(f, 8, "RMC course");
   if (!f[9].empty()) r.date = rmcDate(f[9]);
   if (f.size() > 11) r.variationDeg = eastWest(f, 10, "RMC magnetic variation");
   r.mode = modeIndicator(f, 12, "RMC mode");
@@ -166,7 +167,7 @@ Body parseGga(const Fields& f) {
 Body parseVtg(const Fields& f) {
   Vtg v;
   if (f.size() < 8) throw Bad{"VTG: needs at least 7 fields"};
-  v.cogTrueDeg = optionalNumber(f, 1, "VTG course");
+  v.cogTrueDeg = heading(f, 1, "VTG course");
   v.sogKn = required(f, 5, "VTG speed");
   if (v.sogKn < 0.0) throw Bad{"VTG speed: negative"};
   v.mode = modeIndicator(f, 9, "VTG mode");
@@ -272,10 +273,12 @@ Body parseGns(const Fields& f) {
   return g;
 }
 
-/// An optional standard deviation field (not negative).
+/// An optional standard deviation field, in metres: not negative, and below 1e7 m (beyond the size of
+/// the Earth it says nothing, and its square, the variance a filter is given, must stay finite).
 std::optional<double> sdField(const Fields& f, std::size_t i, const char* what) {
   const auto v = optionalNumber(f, i, what);
   if (v && *v < 0.0) throw Bad{std::string(what) + ": negative"};
+  if (v && *v > 1e7) throw Bad{std::string(what) + ": out of range " + quoted(f[i], 40)};
   return v;
 }
 
@@ -405,9 +408,10 @@ ParseResult parse(std::string_view line) {
     sum = static_cast<unsigned char>(sum ^ static_cast<unsigned char>(line[i]));
   if (hi < 0 || lo < 0 || sum != hi * 16 + lo) {
     r.error = Error::BadChecksum;
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "checksum %02X, sentence says %.2s", sum, line.data() + star + 1);
-    r.reason = buf;
+    // The two characters after '*' are input: quoted, so that a reason stays one line whatever they are.
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "checksum %02X, sentence says ", sum);
+    r.reason = buf + quoted(line.substr(star + 1, 2), 8);
     return r;
   }
   const std::string_view body = line.substr(1, star - 1);

@@ -66,6 +66,13 @@ std::string errorOf(const std::string& path) {
     (void)rec.estimates(INT64_MIN, INT64_MAX);
     (void)rec.tracks(INT64_MIN, INT64_MAX);
     (void)rec.alerts();
+    if (rec.inputCount() > 0) {  // played through to its end: no more batches than inputs
+      const auto most = static_cast<std::size_t>(rec.inputCount()) + 1;
+      files::RecordPlayback play(path);
+      if (play.feedTo(
+              INT64_MAX, [](std::int64_t, std::span<const files::InputLine>) {}, most) == most)
+        return "played on and on";
+    }
     return {};
   } catch (const io::InputError& e) {
     return e.what();
@@ -419,6 +426,22 @@ class TestVoyageRecord : public QObject {
                                     << "ownship: missing column 'sd_x_m'";
     QTest::newRow("bad setting") << "setting"
                                  << "meta.settings.max_gap_s: not a number: 'soon'";
+    // Found by reading for fuzz_voyage_record: these were cast to integers unchecked (undefined
+    // behaviour) or let through as NaN, infinity or a window of 1e300 timestamps.
+    QTest::newRow("huge window") << "meta:settings.time_window=1e300"
+                                 << "meta.settings.time_window: '1e300' is outside [1, 1000]";
+    QTest::newRow("fractional window") << "meta:settings.time_window=2.5"
+                                       << "meta.settings.time_window: not a whole number: '2.5'";
+    QTest::newRow("negative jump") << "meta:settings.isolated_jump_us=-1e19"
+                                   << "meta.settings.isolated_jump_us: '-1e19' is outside [0, 1000000000000]";
+    QTest::newRow("nan gap") << "meta:settings.max_gap_s=nan"
+                             << "meta.settings.max_gap_s: not a number: 'nan'";
+    QTest::newRow("infinite horizon") << "meta:live.reorder_horizon_s=inf"
+                                      << "meta.live.reorder_horizon_s: not a number: 'inf'";
+    // Found by reading for fuzz_voyage_record: a playback pages on seq, and a seq that does not rise
+    // gave the same page for ever.
+    QTest::newRow("text seq") << "text-seq"
+                              << "inputs.seq: not a rising whole number: 'x1'";
     QTest::newRow("bad scenario") << "scenario"
                                   << "meta.settings.scenario: scenario:";
     QTest::newRow("truncated") << "truncated"
@@ -430,20 +453,33 @@ class TestVoyageRecord : public QObject {
     QFETCH(QString, kind);
     QFETCH(QString, expected);
     if (good_.empty()) QSKIP("needs the record of the first test");
-    const std::string d = dir_.path().toStdString(), path = d + "/bad-" + kind.toStdString() + ".sqlite";
+    const std::string d = dir_.path().toStdString(),
+                      path = d + "/bad-" + QString(QTest::currentDataTag()).replace(' ', '-').toStdString() +
+                             ".sqlite";
     const std::string k = kind.toStdString();
     if (k == "folder") std::filesystem::create_directory(path);
     if (k == "text") io::writeTextFile(path, "$GPRMC,not,a,database\n");
     if (k == "empty") io::writeTextFile(path, "");
     if (k == "other") sql(path, "CREATE TABLE t(x); INSERT INTO t VALUES(1)");
     const bool copy = k == "version" || k == "no-version" || k == "table" || k == "column" ||
-                      k == "setting" || k == "scenario" || k == "truncated" || k == "overwritten";
+                      k == "setting" || k.starts_with("meta:") || k == "text-seq" || k == "scenario" ||
+                      k == "truncated" || k == "overwritten";
     if (copy) copyFile(good_, path);
     if (k == "version") sql(path, "UPDATE meta SET value = '2' WHERE key = 'schema_version'");
     if (k == "no-version") sql(path, "DELETE FROM meta WHERE key = 'schema_version'");
     if (k == "table") sql(path, "DROP TABLE tracks");
     if (k == "column") sql(path, "ALTER TABLE ownship DROP COLUMN sd_x_m");
     if (k == "setting") sql(path, "UPDATE meta SET value = 'soon' WHERE key = 'settings.max_gap_s'");
+    if (k == "text-seq")
+      sql(path,
+          "ALTER TABLE inputs RENAME TO old_inputs; CREATE TABLE inputs(seq TEXT, batch INTEGER, rx_utc_us "
+          "INTEGER, source INTEGER, line TEXT); INSERT INTO inputs SELECT 'x' || seq, batch, rx_utc_us, "
+          "source, line FROM old_inputs; DROP TABLE old_inputs");
+    if (k.starts_with("meta:")) {  // meta:KEY=VALUE
+      const std::size_t eq = k.find('=');
+      sql(path,
+          "UPDATE meta SET value = '" + k.substr(eq + 1) + "' WHERE key = '" + k.substr(5, eq - 5) + "'");
+    }
     if (k == "scenario")
       sql(path, "UPDATE meta SET value = '{\"format\": 1}' WHERE key = 'settings.scenario'");
     if (k == "truncated") std::filesystem::resize_file(path, std::filesystem::file_size(path) / 3);

@@ -72,6 +72,34 @@ class TestReplay : public QObject {
     QCOMPARE(nm::parse("").error, nm::Error::Empty);
     QCOMPARE(nm::parse("garbage").error, nm::Error::Malformed);
   }
+  void badChecksumReasonIsOneLine() {
+    // GIVEN a line whose two checksum characters are a line break and a control byte (found by
+    // fuzz_nmea: the reason quoted them raw). WHEN parsed THEN the reason quotes them, on one line.
+    const auto r = nm::parse(std::string("$GPHDT,274.07,T*\n\x01", 18));
+    QCOMPARE(r.error, nm::Error::BadChecksum);
+    QVERIFY2(r.reason.find_first_of("\r\n") == std::string::npos, r.reason.c_str());
+    QVERIFY2(r.reason.find("'\\n\\x01'") != std::string::npos, r.reason.c_str());
+    QVERIFY(nm::parse("$GPHDT,274.07,T*00").reason.ends_with("sentence says '00'"));
+  }
+  void outOfRangeSpeedCourseAndSdAreMalformed() {
+    // GIVEN sentences with a negative RMC speed, a course of 1e300, a GST sd of 1e200 (squared to
+    // infinity for the filter) — found by reading for fuzz_nmea_epochs: they reached the epochs.
+    // WHEN parsed THEN each is Malformed with the field in its reason; in-range ones still parse.
+    const std::pair<const char*, const char*> bad[] = {
+        {"GPRMC,123519.50,A,4807.038,N,01131.000,W,-5.0,084.4,230394,,", "RMC speed: negative"},
+        {"GPRMC,123519.50,A,4807.038,N,01131.000,W,5.0,1e300,230394,,", "RMC course: out of range"},
+        {"GPVTG,361.0,T,,M,005.5,N,010.2,K", "VTG course: out of range"},
+        {"GPGST,123519.50,1.0,2.0,1.0,45.0,1e200,1.5,3.0", "GST latitude sd: out of range"},
+    };
+    for (const auto& [body, reason] : bad) {
+      const auto r = nm::parse(nm::withChecksum(body));
+      QCOMPARE(r.error, nm::Error::Malformed);
+      QVERIFY2(r.reason.find(reason) != std::string::npos, r.reason.c_str());
+    }
+    QVERIFY(
+        nm::parse(nm::withChecksum("GPRMC,123519.50,A,4807.038,N,01131.000,W,0.0,360.0,230394,,")).sentence);
+    QVERIFY(nm::parse(nm::withChecksum("GPGST,123519.50,1.0,2.0,1.0,45.0,1.2,1.5,3.0")).sentence);
+  }
   void utcArithmetic() {
     QCOMPARE(io::daysFromCivil(1970, 1, 1), std::int64_t(0));
     QCOMPARE(io::daysFromCivil(2000, 3, 1), std::int64_t(11017));

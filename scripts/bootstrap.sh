@@ -33,6 +33,7 @@ packages=(
   gpsd  # a real gpsd reads Reckoner's NMEA output in tests/connections/tst_nmea_destination.cpp
   socat  # pseudo-terminal pairs: serial lines to and from Reckoner in the connection tests (issue 19)
   iproute2  # ip: the multicast test's network namespace with a multicast loopback (tests/connections/multicast_netns.sh)
+  help2man  # the man pages of reckoner and reckoner-cli, made from their --help at build time (cmake/ReckonerPackaging.cmake)
 )
 # Node.js and npm run the Signal K project's NMEA 0183 parser on Reckoner's output (tests/connections/
 # tst_nmea_signalk.cpp, its package pinned in tests/support/signalk/); Debian's only where no node is.

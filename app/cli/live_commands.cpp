@@ -27,6 +27,7 @@
 #include "files/live_run.h"
 #include "files/voyage_recorder.h"
 #include "io/input_error.h"
+#include "reckoner_version.h"
 #include "sim/live_session.h"
 #include "sim/live_watch.h"
 #include "sim/nmea_output.h"

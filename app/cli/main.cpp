@@ -29,6 +29,7 @@
 #include "common/library_versions.h"
 #include "io/error_line.h"
 #include "io/input_error.h"
+#include "reckoner_version.h"
 
 namespace {
 
@@ -114,10 +115,10 @@ int run(int argc, char** argv) {
   CLI::App root("reckoner-cli: headless runs of the Reckoner engine", "reckoner-cli");
   root.formatter(std::make_shared<HelpFormatter>());
   root.require_subcommand(1);
+  // GNU style: the program's version alone on the first line (help2man takes it for the man page).
   root.set_version_flag("--version",
-                        std::string("reckoner-cli ") + RECKONER_VERSION + " (Eigen " + eigenVersion() +
-                            ", GeographicLib " + geographicLibVersion() + ", GDAL " + charts::gdalVersion() +
-                            ")",
+                        std::string("reckoner-cli ") + RECKONER_VERSION + "\nEigen " + eigenVersion() +
+                            ", GeographicLib " + geographicLibVersion() + ", GDAL " + charts::gdalVersion(),
                         "Print the version of reckoner-cli and of the libraries it runs on, and exit");
   Commands commands;
   for (const auto add : {addRunCommands, addReplayCommands, addStudyCommands, addImoCommand, addFusionCommand,

@@ -11,7 +11,7 @@
 #                          then copied for every run, so each run starts from a root nothing was installed in
 #   RECKONER_MIRROR        the Debian mirror (default: this machine's deb.debian.org, else the official one)
 #
-# Steps: debootstrap the base once; copy it to the root; mount /proc, /sys and /dev; copy the .deb in;
+# Steps: debootstrap the base once; copy it to the root; bind /proc, /sys, /dev and /dev/pts; copy the .deb in;
 # `apt-get update`; `apt-get install -y ./reckoner_*.deb` (Recommends included, as a user's apt does);
 # then in the root, with no display: reckoner-cli --version, reckoner --version, reckoner-cli run
 # builtin:default --out /tmp/out, and the window on the offscreen platform for 10 s.
@@ -22,7 +22,8 @@ deb=${1:-$(ls -t "$here"/build/ci/reckoner_*.deb 2>/dev/null | head -1)}
 [ "$(id -u)" -eq 0 ] || { echo "check_deb_in_chroot: needs root (debootstrap, chroot, mount)" >&2; exit 2; }
 root=${RECKONER_CHROOT:-/tmp/reckoner-bare}
 base=${RECKONER_CHROOT_BASE:-/tmp/reckoner-bare-base}
-mirror=${RECKONER_MIRROR:-$(grep -rhoE 'https?://[^ ]*deb\.debian\.org/debian/?( |$)' /etc/apt/sources.list /etc/apt/sources.list.d/ 2>/dev/null | head -1 | tr -d ' ')}
+mirror=${RECKONER_MIRROR:-$( (grep -rhoE 'https?://[^ ]*deb\.debian\.org/debian/?( |$)' /etc/apt/sources.list \
+  /etc/apt/sources.list.d/ 2>/dev/null || true) | head -1 | tr -d ' ')}
 mirror=${mirror:-http://deb.debian.org/debian}
 
 command -v debootstrap >/dev/null || { apt-get update -qq; apt-get install -y -qq debootstrap; }
@@ -42,7 +43,7 @@ echo "== fresh root $root from $base"
 for m in $(findmnt -rn -o TARGET | grep "^$root/" | sort -r); do umount -l "$m"; done
 rm -rf --one-file-system "$root"
 cp -a "$base" "$root"
-for fs in proc sys dev; do
+for fs in proc sys dev dev/pts; do
   mount --bind "/$fs" "$root/$fs" && mounted+=("$root/$fs")
 done
 cp /etc/resolv.conf "$root/etc/resolv.conf"

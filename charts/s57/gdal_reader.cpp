@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -272,6 +274,25 @@ ChartFeature readFeature(OGRFeatureH f, OGRFeatureDefnH defn, int nFields, const
   return cf;
 }
 
+/// Every coordinate of a feature finite and on the Earth, every depth finite: a corrupt cell (a
+/// coordinate multiplication factor of 1, say, or mangled coordinates) is refused, not drawn at
+/// latitude 5e8 (found by fuzz_s57).
+void checkCoordinates(const ChartFeature& cf, const std::string& path) {
+  for (const auto& part : cf.geometry.parts)
+    for (const LatLon& p : part)
+      if (!std::isfinite(p.latDeg) || !std::isfinite(p.lonDeg) || std::abs(p.latDeg) > 90.0 ||
+          std::abs(p.lonDeg) > 180.0) {
+        char ll[80];
+        std::snprintf(ll, sizeof ll, "(%.9g, %.9g)", p.latDeg, p.lonDeg);
+        throw ChartLoadError(path,
+                             "a " + cf.objectClass + " feature has a coordinate off the Earth, " + ll +
+                                 " (latitude, longitude): corrupt coordinates or multiplication factor");
+      }
+  for (const double d : cf.geometry.depthsM)
+    if (!std::isfinite(d))
+      throw ChartLoadError(path, "a " + cf.objectClass + " sounding has no finite depth");
+}
+
 }  // namespace
 
 CellPtr readCell(const std::string& path, const std::string& gdalPath, const std::string& memDir,
@@ -310,6 +331,8 @@ CellPtr readCell(const std::string& path, const std::string& gdalPath, const std
   if (!errors.firstError().empty())
     throw ChartLoadError(path,
                          "damaged (GDAL's S-57 reader: " + errors.firstErrorLine(memDir, realDir) + ")");
+  // After GDAL's own complaint, which names the cause when there is one.
+  for (const ChartFeature& cf : features) checkCoordinates(cf, path);
   if (info.edition.empty())
     throw ChartLoadError(path, "no data set identification (DSID): not an S-57 base cell");
   info.updatesApplied = std::move(updatesApplied);

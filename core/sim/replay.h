@@ -98,7 +98,7 @@ struct ReplayStats {
   long radarLines = 0, radarPlots = 0, radarBad = 0, radarDuplicates = 0, radarTimeJumps = 0,
        radarReordered = 0, radarBeforeFix = 0;
   long radarLate = 0;  ///< live: plots decided after the epoch that followed them had run (skipped)
-  long late = 0;       ///< live: timed sentences older than an epoch already given to the filters (skipped)
+  long late = 0;  ///< live: sentences of a time older than an epoch already given to the filters (skipped)
   long restartsAfterGap = 0;      ///< DRKF restarted at a fix after more than maxGapS without data
   long restartsAfterFailure = 0;  ///< DRKF restarted after updates failed numerically epoch after epoch
   [[nodiscard]] long nmeaSkipped() const {

@@ -131,7 +131,8 @@ void NmeaStream::decide(bool atEnd) {
 void NmeaStream::keep(Group g) {
   if (released_ && g.utc < *released_) {
     // Older than an epoch already sent on: too late for the filters (a file replay would sort it in).
-    ++st_.late;
+    // Every sentence of the group is skipped, its untimed followers with it: each counts as late.
+    st_.late += static_cast<long>(g.sentences.size());
     return;
   }
   if (newestKept_ && g.utc < *newestKept_) ++st_.reordered;

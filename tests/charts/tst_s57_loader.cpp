@@ -520,6 +520,18 @@ class TestS57Loader : public QObject {
     QVERIFY2(f->reason.rfind("is a FIFO (named pipe), not a chart file", 0) == 0, f->reason.c_str());
   }
 
+  void givenACellWithCoordinatesOffTheEarth_whenLoaded_thenItIsRefusedNamingTheFeature() {
+    // GIVEN tests/charts/data/OFFEARTH.000: fuzz_s57's mutation of its seed area.000 (written from scratch
+    // by s57_seeds), four bytes of its DDR changed; GDAL gives its points at latitude 495,250,000
+    const QString cell = QStringLiteral(RECKONER_CHART_TEST_DATA "/OFFEARTH.000");
+    // WHEN loaded THEN one error naming the cell and the coordinate, never a cell drawn off the Earth
+    const auto [file, what] = loadError(cell);
+    qInfo("%s", what.c_str());
+    QCOMPARE(file, cell.toStdString());
+    QVERIFY2(contains(what, "feature has a coordinate off the Earth, (495250000, -294750000)"), what.c_str());
+    QVERIFY(what.find('\n') == std::string::npos);
+  }
+
   void givenAMultiLineGdalError_whenTheCellFails_thenTheReasonIsOneLine() {
     if (!haveEnc()) QSKIP("../shared/data/enc is absent");
     // GIVEN a cell whose DDR gives DSPM a field control byte 0xFF: the ISO 8211 structure is whole,

@@ -32,16 +32,19 @@ void check(bool ok) {
   if (!ok) std::abort();
 }
 
-/// A scratch folder of this process, removed at exit.
+/// A scratch folder of this process, removed at exit. The path is never destroyed: the exit handler
+/// runs after static destructors registered before it (a static std::string here was read after its
+/// destruction: heap-use-after-free at exit, found by the first fuzz_smoke.sh run).
 const std::string& scratchFile() {
-  static const std::string path = [] {
+  static const std::string* const path = [] {
     const fs::path base = fs::is_directory("/dev/shm") ? fs::path("/dev/shm") : fs::temp_directory_path();
     const fs::path dir = base / ("reckoner-fuzz-record-" + std::to_string(::getpid()));
     fs::create_directories(dir);
+    auto* p = new std::string((dir / "voyage.db").string());
     std::atexit([] { fs::remove_all(fs::path(scratchFile()).parent_path()); });
-    return (dir / "voyage.db").string();
+    return p;
   }();
-  return path;
+  return *path;
 }
 
 void clear(const std::string& path) {

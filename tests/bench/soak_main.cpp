@@ -172,20 +172,23 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"reckoner-soak: hours of the engine at full speed, every frame checked (docs/robustness.md)"};
-  Options o;
-  app.add_option("--hours", o.hours, "simulated hours (the issue's soak: 24; CI: 1)")
-      ->check(CLI::Range(0.25, 720.0));
-  app.add_option("--seed", o.seed, "random seed of the traffic and the sensors");
-  app.add_option("--out", o.out, "folder for soak.rkrec (the voyage record) and soak.json (the figures)");
-  app.add_option("--record-max-hours", o.recordHours,
-                 "the recorder's full-rate window (older rows: one a minute)")
-      ->check(CLI::Range(0.01, 720.0));
-  CLI11_PARSE(app, argc, argv);
   try {
+    CLI::App app{
+        "reckoner-soak: hours of the engine at full speed, every frame checked (docs/robustness.md)"};
+    Options o;
+    app.add_option("--hours", o.hours, "simulated hours (the issue's soak: 24; CI: 1)")
+        ->check(CLI::Range(0.25, 720.0));
+    app.add_option("--seed", o.seed, "random seed of the traffic and the sensors");
+    app.add_option("--out", o.out, "folder for soak.rkrec (the voyage record) and soak.json (the figures)");
+    app.add_option("--record-max-hours", o.recordHours,
+                   "the recorder's full-rate window (older rows: one a minute)")
+        ->check(CLI::Range(0.01, 720.0));
+    CLI11_PARSE(app, argc, argv);
     return run(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "reckoner-soak: %s\n", e.what());
-    return 2;
+  } catch (...) {
+    std::fprintf(stderr, "reckoner-soak: an unknown error\n");
   }
+  return 2;
 }

@@ -172,7 +172,7 @@ void printSummary(const FrameChecks& c, const Samples& s, const RecordFigures& r
       "beyond the window\n",
       r.sizeMb, static_cast<long long>(r.lines), static_cast<long long>(r.ownRows),
       static_cast<long long>(r.trackRows), static_cast<long long>(r.prunedRows),
-      static_cast<long long>(r.ownRowsBeyondWindow + r.trackRowsBeyondWindow));
+      static_cast<long long>(r.ownRowsBeyondWindow) + static_cast<long long>(r.trackRowsBeyondWindow));
   std::printf("%s\n", v.pass ? "PASS" : "FAIL");
   for (const std::string& f : v.failures) std::printf("  %s\n", f.c_str());
 }

@@ -46,22 +46,26 @@ void FrameChecker::problem(const sim::SimFrame& f, const std::string& what) {
 
 template <int N>
 void FrameChecker::covariance(const est::Mat<N>& P, const est::Vec<N>& x, const sim::SimFrame& f,
-                              const char* what) {
+                              int trackId) {
+  // (the label is made only for a problem: this runs for every track of every frame)
+  const auto what = [trackId] {
+    return trackId < 0 ? std::string("own ship") : "track " + std::to_string(trackId);
+  };
   ++r_.covariancesChecked;
   if (!P.allFinite() || !x.allFinite()) {
     ++r_.nonFinite;
-    problem(f, std::string(what) + ": a NaN or infinity");
+    problem(f, what() + ": a NaN or infinity");
     return;
   }
   const double scale = std::max(1.0, P.cwiseAbs().maxCoeff());
   if ((P - P.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) {
     ++r_.asymmetric;
-    problem(f, std::string(what) + ": covariance not symmetric");
+    problem(f, what() + ": covariance not symmetric");
   }
   const Eigen::LLT<est::Mat<N>> llt(P);
   if (llt.info() != Eigen::Success) {
     ++r_.notPositiveDefinite;
-    problem(f, std::string(what) + ": covariance not positive definite");
+    problem(f, what() + ": covariance not positive definite");
   }
 }
 
@@ -81,10 +85,9 @@ void FrameChecker::sweeps(const sim::SimFrame& f) {
 
 void FrameChecker::check(const sim::SimFrame& f) {
   ++r_.frames;
-  covariance<est::drkf::kStateDim>(f.estimate.P, f.estimate.x, f, "own ship");
+  covariance<est::drkf::kStateDim>(f.estimate.P, f.estimate.x, f, -1);
   for (const sim::TrackSnapshot& t : f.tracks)
-    covariance<est::ttkf::kStateDim>(t.estimate.P, t.estimate.x, f,
-                                     ("track " + std::to_string(t.trackId)).c_str());
+    covariance<est::ttkf::kStateDim>(t.estimate.P, t.estimate.x, f, t.trackId);
   if (f.hasTruth) {
     const double nees = nav::drkfNees(f.trueState - f.estimate.x, f.estimate.P, process_);
     if (std::isfinite(nees)) r_.own.add(nees, toSeconds(f.timeUs) / 3600.0, ownQ99_);

@@ -47,7 +47,8 @@ class FrameChecker {
 
  private:
   template <int N>
-  void covariance(const est::Mat<N>& P, const est::Vec<N>& x, const sim::SimFrame& f, const char* what);
+  /// trackId -1: own ship's.
+  void covariance(const est::Mat<N>& P, const est::Vec<N>& x, const sim::SimFrame& f, int trackId);
   void problem(const sim::SimFrame& f, const std::string& what);
   void sweeps(const sim::SimFrame& f);
 

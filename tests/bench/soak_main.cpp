@@ -6,6 +6,7 @@
 // fails, 2 for a usage error.
 //
 //   reckoner-soak --hours 24 --out /tmp/soak      (the soak; --hours 1 is CI's)
+#include <malloc.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -41,6 +42,13 @@ double rssMb() {
   long pages = 0, resident = 0;
   statm >> pages >> resident;
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+/// The heap in use (glibc's count of allocated bytes, small and mmapped): what the program holds, apart
+/// from the allocator keeping freed pages (RSS counts those too).
+double heapMb() {
+  const struct mallinfo2 m = mallinfo2();
+  return static_cast<double>(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
 }
 
 double fileMb(const std::string& path) {
@@ -149,15 +157,17 @@ int run(const Options& o) {
             a.state == alerts::AlertState::Rectified)
           alerts.acknowledge(f.timeUs, a.id);
       const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      samples.add({toSeconds(f.timeUs), wallS, rssMb(), fileMb(recordPath), static_cast<int>(f.tracks.size()),
-                   f.aisTargets ? static_cast<int>(f.aisTargets->size()) : 0});
+      samples.add({toSeconds(f.timeUs), wallS, rssMb(), heapMb(), fileMb(recordPath),
+                   static_cast<int>(f.tracks.size()),
+                   f.aisTargets ? static_cast<int>(f.aisTargets->size()) : 0,
+                   static_cast<int>(alerts.history().size())});
       if (f.timeUs % (3600 * kMicrosPerSecond) == 0) samples.printHour(checker.result());
       nextSampleUs += 60 * kMicrosPerSecond;
     }
   }
   recorder.finish({}, labels, wallNow());
   const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  samples.add({toSeconds(engine.timeUs()), wallS, rssMb(), fileMb(recordPath), 0, 0});
+  samples.add({toSeconds(engine.timeUs()), wallS, rssMb(), heapMb(), fileMb(recordPath), 0, 0, 0});
 
   soak::RecordFigures record = soak::recordFigures(recordPath, o.recordHours, utc0 + engine.timeUs());
   record.lines = recorder.lines();

@@ -30,21 +30,32 @@ void Samples::printHour(const FrameChecks& c) const {
   const double own = h > 0 && h - 1 < c.own.hours.size() ? c.own.hours[h - 1].mean() : 0.0;
   const double trk = h > 0 && h - 1 < c.tracks.hours.size() ? c.tracks.hours[h - 1].mean() : 0.0;
   std::printf(
-      "hour %3zu  wall %7.1f s  RSS %7.1f MB  record %7.1f MB  tracks %3d  AIS %4d  NEES own %.2f  tracks "
+      "hour %3zu  wall %7.1f s  RSS %7.2f MB  heap %6.2f MB  record %7.1f MB  tracks %3d  AIS %4d  NEES own "
+      "%.2f  tracks "
       "%.2f%s\n",
-      h, s.wallS, s.rssMb, s.recordMb, s.tracks, s.aisTargets, own, trk, c.clean() ? "" : "  PROBLEMS");
+      h, s.wallS, s.rssMb, s.heapMb, s.recordMb, s.tracks, s.aisTargets, own, trk,
+      c.clean() ? "" : "  PROBLEMS");
   std::fflush(stdout);
 }
 
-double Samples::meanRss(double fromS, double toS) const {
+namespace {
+double meanOf(const std::vector<Sample>& all, double fromS, double toS, double Sample::*field) {
   double sum = 0.0;
   int n = 0;
   for (const Sample& x : all)
     if (x.simS >= fromS && x.simS < toS) {
-      sum += x.rssMb;
+      sum += x.*field;
       ++n;
     }
   return n > 0 ? sum / n : 0.0;
+}
+}  // namespace
+
+double Samples::meanRss(double fromS, double toS) const {
+  return meanOf(all, fromS, toS, &Sample::rssMb);
+}
+double Samples::meanHeap(double fromS, double toS) const {
+  return meanOf(all, fromS, toS, &Sample::heapMb);
 }
 
 const Sample& Samples::at(double simS) const {
@@ -122,9 +133,13 @@ void writeReport(const std::string& path, const SoakPlan& plan, std::uint64_t se
       << "],\n  \"rss_second_window_mean_mb\": " << s.meanRss(v.baselineS, 2.0 * v.baselineS)
       << ",\n  \"rss_end_mb\": " << s.all.back().rssMb
       << ",\n  \"rss_peak_after_first_window_mb\": " << v.rssPeakMb
-      << ",\n  \"rss_growth_percent\": " << v.rssGrowthPercent << ",\n  \"record_mb\": " << r.sizeMb
-      << ",\n  \"record_lines\": " << r.lines << ",\n  \"record_own_rows\": " << r.ownRows
-      << ",\n  \"record_track_rows\": " << r.trackRows << ",\n  \"record_pruned_rows\": " << r.prunedRows
+      << ",\n  \"rss_growth_percent\": " << v.rssGrowthPercent
+      << ",\n  \"heap_second_window_mean_mb\": " << s.meanHeap(v.baselineS, 2.0 * v.baselineS)
+      << ",\n  \"heap_last_window_mean_mb\": "
+      << s.meanHeap(s.all.back().simS - v.baselineS, s.all.back().simS + 1.0)
+      << ",\n  \"record_mb\": " << r.sizeMb << ",\n  \"record_lines\": " << r.lines
+      << ",\n  \"record_own_rows\": " << r.ownRows << ",\n  \"record_track_rows\": " << r.trackRows
+      << ",\n  \"record_pruned_rows\": " << r.prunedRows
       << ",\n  \"record_rows_beyond_window\": " << r.ownRowsBeyondWindow + r.trackRowsBeyondWindow
       << ",\n  \"pass\": " << (v.pass ? "true" : "false") << ",\n  \"hourly\": [";
   for (std::size_t i = 0; i < s.all.size(); ++i) {
@@ -132,8 +147,9 @@ void writeReport(const std::string& path, const SoakPlan& plan, std::uint64_t se
     if (i % 60 != 0 && i + 1 != s.all.size()) continue;
     const std::size_t h = static_cast<std::size_t>(x.simS / 3600.0);
     out << (i ? ",\n    " : "\n    ") << "{\"sim_s\": " << x.simS << ", \"wall_s\": " << x.wallS
-        << ", \"rss_mb\": " << x.rssMb << ", \"record_mb\": " << x.recordMb << ", \"tracks\": " << x.tracks
-        << ", \"ais_targets\": " << x.aisTargets
+        << ", \"rss_mb\": " << x.rssMb << ", \"heap_mb\": " << x.heapMb << ", \"record_mb\": " << x.recordMb
+        << ", \"tracks\": " << x.tracks << ", \"ais_targets\": " << x.aisTargets
+        << ", \"alert_history\": " << x.alertHistory
         << ", \"own_nees_hour_mean\": " << (h < c.own.hours.size() ? c.own.hours[h].mean() : 0.0)
         << ", \"track_nees4_hour_mean\": " << (h < c.tracks.hours.size() ? c.tracks.hours[h].mean() : 0.0)
         << "}";
@@ -167,6 +183,9 @@ void printSummary(const FrameChecks& c, const Samples& s, const RecordFigures& r
       s.meanRss(v.baselineS, 2.0 * v.baselineS), v.baselineS, 2.0 * v.baselineS,
       s.meanRss(s.all.back().simS - v.baselineS, s.all.back().simS + 1.0), v.baselineS, v.rssGrowthPercent,
       v.rssPeakMb);
+  std::printf("heap in use: mean %.2f MB over %.0f-%.0f s, %.2f MB over the last %.0f s\n",
+              s.meanHeap(v.baselineS, 2.0 * v.baselineS), v.baselineS, 2.0 * v.baselineS,
+              s.meanHeap(s.all.back().simS - v.baselineS, s.all.back().simS + 1.0), v.baselineS);
   std::printf(
       "record %.1f MB: %lld lines, %lld own-ship rows, %lld track rows (%lld pruned), %lld full-rate rows "
       "beyond the window\n",

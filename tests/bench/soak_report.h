@@ -13,8 +13,8 @@ namespace reckoner::soak {
 
 struct Sample {
   double simS = 0.0, wallS = 0.0;
-  double rssMb = 0.0, recordMb = 0.0;
-  int tracks = 0, aisTargets = 0;
+  double rssMb = 0.0, heapMb = 0.0, recordMb = 0.0;
+  int tracks = 0, aisTargets = 0, alertHistory = 0;
 };
 
 struct Samples {
@@ -24,6 +24,8 @@ struct Samples {
   void printHour(const FrameChecks& c) const;
   /// Mean RSS of the samples in [fromS, toS) of simulated time (0 when none).
   [[nodiscard]] double meanRss(double fromS, double toS) const;
+  /// Mean heap in use of the samples in [fromS, toS) (0 when none).
+  [[nodiscard]] double meanHeap(double fromS, double toS) const;
   /// The first sample at or after t (the last when none).
   [[nodiscard]] const Sample& at(double simS) const;
 };

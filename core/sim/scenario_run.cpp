@@ -1,11 +1,7 @@
 #include "sim/scenario_run.h"
 
-#include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <exception>
 #include <stdexcept>
-#include <thread>
 
 #include "io/error_line.h"
 
@@ -41,27 +37,6 @@ RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameO
   result.deadReckoning = engine.deadReckoning().intervals();
   result.wallTimeS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
-}
-
-void parallelRuns(int runs, int threads, const std::function<void(int)>& fn) {
-  if (runs <= 0) return;
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(runs));
-  std::atomic<int> next{0};
-  auto worker = [&] {
-    for (int i = next++; i < runs; i = next++) {
-      try {
-        fn(i);
-      } catch (...) {
-        errors[static_cast<std::size_t>(i)] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < std::min(threads, runs); ++k) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
 }
 
 std::vector<RunResult> runMonteCarlo(const Scenario& scenario, int runs, int threads,

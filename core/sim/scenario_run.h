@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "common/parallel_runs.h"
 #include "navigation/dead_reckoning_monitor.h"
 #include "navigation/drkf.h"
 #include "sim/run_rows.h"
@@ -37,10 +38,6 @@ RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameO
 /// The same with the charts' answers (the look-ahead and grounding; sim/chart_guard.h); null: none.
 RunResult runScenario(const Scenario& scenario, std::uint64_t seed, const FrameObserver& observer,
                       std::shared_ptr<const ChartGuard> guard);
-
-/// Calls fn(i) for i in [0, runs) on `threads` worker threads (>= 1); rethrows the first exception
-/// (by index) after all have finished.
-void parallelRuns(int runs, int threads, const std::function<void(int)>& fn);
 
 /// Runs seeds baseSeed, baseSeed + 1, ... on `threads` worker threads (>= 1). Results are in seed order
 /// and identical whatever the thread count.

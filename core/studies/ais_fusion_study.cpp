@@ -233,7 +233,7 @@ FusionStudyResult evaluateFusion(const sim::Scenario& scenario, const FusionStud
   sim::Scenario radarOnly = scenario;
   radarOnly.tracker.aisAssociation.fuse = false;
   std::vector<RunOut> fusedRuns(static_cast<std::size_t>(o.runs)), radarRuns(fusedRuns.size());
-  sim::parallelRuns(2 * o.runs, o.threads, [&](int k) {
+  parallelRuns(2 * o.runs, o.threads, [&](int k) {
     const auto i = static_cast<std::size_t>(k / 2);
     const std::uint64_t seed = o.seed + i;
     if (k % 2 == 0)

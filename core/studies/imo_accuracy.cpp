@@ -102,7 +102,7 @@ ImoResult evaluateImo(const sim::Scenario& scenario, int runs, int threads, std:
     throw std::invalid_argument("IMO accuracy test: runs and threads must be positive");
   const int targetId = scenario.targets.front().id;
   std::vector<RunSample> samples(static_cast<std::size_t>(runs));
-  sim::parallelRuns(runs, threads, [&](int i) {
+  parallelRuns(runs, threads, [&](int i) {
     sim::SimulationEngine engine(scenario, seed + static_cast<std::uint64_t>(i));
     RunSample& out = samples[static_cast<std::size_t>(i)];
     int trackId = -1;

@@ -268,7 +268,7 @@ class TestDrkfGuard : public QObject {
     std::mutex mu;
     double peakOwn = 0.0, pivotOwn = 1.0, peakTracks = 0.0, pivotTracks = 1.0;
     long resetsOwn = 0, resetsTracks = 0;
-    sim::parallelRuns(runs, 2, [&](int i) {
+    parallelRuns(runs, 2, [&](int i) {
       sim::SimulationEngine e(s, 1 + static_cast<std::uint64_t>(i));
       double pt = 0.0, qt = 1.0;
       while (!e.finished()) {

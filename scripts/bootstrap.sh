@@ -7,7 +7,8 @@
 #   scripts/bootstrap.sh build  # install and build
 #   scripts/bootstrap.sh fuzz   # install clang and libFuzzer, build the fuzz targets (docs/robustness.md)
 #   scripts/bootstrap.sh release [STEP...]  # after test, the release checks (docs/robustness.md): soak (the
-#                                 # 1-hour soak), tidy, sanitizers (ASan+UBSan, TSan), fuzz (a minute a target)
+#                                 # 1-hour soak), tidy, sanitizers (ASan+UBSan, TSan: CI's subsets), fuzz (a
+#                                 # minute a target: CI's), sanitizers-full and fuzz-full (by hand: longer)
 #
 # Environment: RECKONER_PRESET (default: ci = Release with warnings as errors), RECKONER_JOBS.
 set -euo pipefail
@@ -89,7 +90,9 @@ case "$action" in
     ;;
   release)
     # The release checks after `test`, each or all: soak (the 1-hour soak), tidy (clang-tidy on the files
-    # changed since RECKONER_TIDY_BASE), sanitizers (scripts/ci_sanitizers.sh), fuzz (a minute a target).
+    # changed since RECKONER_TIDY_BASE), sanitizers (scripts/ci_sanitizers.sh ci: the light libraries'
+    # tests), fuzz (a minute for each target of the light libraries); by hand, sanitizers-full (the engine
+    # and the charts too) and fuzz-full (every target). CI runs soak, sanitizers, fuzz and tidy.
     steps=("${@:2}")
     [ ${#steps[@]} -gt 0 ] || steps=(soak tidy sanitizers fuzz)
     extra=()  # clang and clang-tidy only for the steps that use them
@@ -101,9 +104,12 @@ case "$action" in
       case "$step" in
         soak) "build/$preset/tests/reckoner-soak" --hours 1 --out "$here/out/soak" ;;
         tidy) RECKONER_BUILD_DIR="build/$preset" scripts/tidy.sh --base "${RECKONER_TIDY_BASE:-HEAD~1}" ;;
-        sanitizers) RECKONER_JOBS=$jobs scripts/ci_sanitizers.sh all ;;
-        fuzz) scripts/fuzz_smoke.sh 60 ;;
-        *) echo "bootstrap: unknown release step $step (soak, tidy, sanitizers, fuzz)" >&2; exit 2 ;;
+        sanitizers) RECKONER_JOBS=$jobs scripts/ci_sanitizers.sh ci ;;
+        sanitizers-full) RECKONER_JOBS=$jobs scripts/ci_sanitizers.sh full ;;
+        fuzz) scripts/fuzz_smoke.sh 60 ais line_framer route nmea ;;
+        fuzz-full) scripts/fuzz_smoke.sh 60 ;;
+        *) echo "bootstrap: unknown release step $step (soak, tidy, sanitizers, fuzz, sanitizers-full, fuzz-full)" >&2
+           exit 2 ;;
       esac
       echo "bootstrap: release step $step took $((SECONDS - t0)) s"
     done

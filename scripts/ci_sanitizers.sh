@@ -2,10 +2,14 @@
 # The sanitizer jobs of CI (docs/robustness.md, "Sanitizers"): configure, build only the tests of the
 # subset, run them; any sanitizer report fails the test and so the job.
 #
-#   scripts/ci_sanitizers.sh [asan|tsan|all]   # default: all
+#   scripts/ci_sanitizers.sh [ci|full|asan|tsan|asan-full|tsan-full]   # default: ci
 #
-#   asan  preset asan-ci: ctest label "asan" (the core and chart tests) under ASan+UBSan (and LeakSanitizer)
-#   tsan  preset tsan:    ctest label "tsan" (the Monte Carlo thread pool; not yet the Qt threads, see the docs)
+#   ci         asan and tsan: what CI runs (the light libraries; a cold build inside CI's budget)
+#   full       asan-full and tsan-full: the release run by hand (the engine too; longer than CI allows)
+#   asan       preset asan-ci, label "asan": the light libraries' tests under ASan+UBSan (and LeakSanitizer)
+#   tsan       preset tsan, label "tsan": the Monte Carlo pool with the light libraries on four threads
+#   asan-full  preset asan-ci, label "asan-full": every core test and the chart tests
+#   tsan-full  preset tsan, label "tsan-full": the pool and tst_simulation_engine (not the Qt threads: docs)
 #
 # The sanitizer options (fatal reports, the suppression files of tests/sanitizers/) are the test presets'
 # environment in CMakePresets.json, so `ctest --preset asan-ci -L asan` by hand runs the same way.
@@ -14,7 +18,7 @@ set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$here"
-what=${1:-all}
+what=${1:-ci}
 jobs=${RECKONER_JOBS:-$(nproc 2>/dev/null || echo 2)}
 
 # The same options as the test presets' environment, for the programs the build runs (reckoner-chartgen
@@ -43,6 +47,9 @@ job() {
 case "$what" in
   asan) job asan-ci asan ;;
   tsan) job tsan tsan ;;
-  all) job asan-ci asan; job tsan tsan ;;
-  *) echo "usage: scripts/ci_sanitizers.sh [asan|tsan|all]" >&2; exit 2 ;;
+  asan-full) job asan-ci asan-full ;;
+  tsan-full) job tsan tsan-full ;;
+  ci) job asan-ci asan; job tsan tsan ;;
+  full) job asan-ci asan-full; job tsan tsan-full ;;
+  *) echo "usage: scripts/ci_sanitizers.sh [ci|full|asan|tsan|asan-full|tsan-full]" >&2; exit 2 ;;
 esac

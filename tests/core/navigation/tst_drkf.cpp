@@ -34,6 +34,8 @@ Drkf makeFilter(double vx, double vy, double lonDeg = -123.0) {
 const est::BlockReport* blockOf(const DrkfUpdateReport& r, DrkfBlock b) {
   return r.block(b);
 }
+// A pointer into a temporary report dangles at the end of its statement (ASan's stack-use-after-scope).
+const est::BlockReport* blockOf(DrkfUpdateReport&& r, DrkfBlock b) = delete;
 }  // namespace
 
 class TestDrkf : public QObject {
@@ -61,7 +63,8 @@ class TestDrkf : public QObject {
         QVERIFY(f.predictTo(t));
         const double speed = std::hypot(f.belief().x[kVelX], f.belief().x[kVelY]);
         const std::vector<OwnShipSample> s{GyroSample{t, degToRad(10.0), 1e-6}};
-        const auto* g = blockOf(f.update(t, s), kGyro);
+        const DrkfUpdateReport r = f.update(t, s);
+        const auto* g = blockOf(r, kGyro);
         QVERIFY(g && g->status == est::UpdateStatus::AcceptedForced);
         const State& x = f.belief().x;
         RK_COMPARE_NEAR(std::hypot(x[kVelX], x[kVelY]), speed, 1e-9);

@@ -7,13 +7,13 @@
 //
 //   reckoner-soak --hours 24 --out /tmp/soak      (the soak; --hours 1 is CI's)
 #include <malloc.h>
-#include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include "alerts/alert_manager.h"
@@ -37,11 +37,26 @@ UtcUs wallNow() {
       .count();
 }
 
-double rssMb() {
-  std::ifstream statm("/proc/self/statm");
-  long pages = 0, resident = 0;
-  statm >> pages >> resident;
-  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+/// The process's resident memory from /proc/self/status, MB: all of it (VmRSS), its anonymous part (the
+/// heap, stacks: what the program allocated) and its file-backed part (pages of the program and its
+/// libraries' code and data, mapped as they are first touched).
+struct Resident {
+  double totalMb = 0.0, anonMb = 0.0, fileMb = 0.0;
+};
+Resident resident() {
+  std::ifstream status("/proc/self/status");
+  Resident r;
+  std::string key;
+  double kb = 0.0;
+  std::string unit;
+  while (status >> key) {
+    if (key == "VmRSS:" || key == "RssAnon:" || key == "RssFile:") {
+      status >> kb >> unit;
+      (key == "VmRSS:" ? r.totalMb : key == "RssAnon:" ? r.anonMb : r.fileMb) = kb / 1024.0;
+    }
+    status.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  return r;
 }
 
 /// The heap in use (glibc's count of allocated bytes, small and mmapped): what the program holds, apart
@@ -157,8 +172,9 @@ int run(const Options& o) {
             a.state == alerts::AlertState::Rectified)
           alerts.acknowledge(f.timeUs, a.id);
       const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      samples.add({toSeconds(f.timeUs), wallS, rssMb(), heapMb(), fileMb(recordPath),
-                   static_cast<int>(f.tracks.size()),
+      const Resident mem = resident();
+      samples.add({toSeconds(f.timeUs), wallS, mem.totalMb, mem.anonMb, mem.fileMb, heapMb(),
+                   fileMb(recordPath), static_cast<int>(f.tracks.size()),
                    f.aisTargets ? static_cast<int>(f.aisTargets->size()) : 0,
                    static_cast<int>(alerts.history().size())});
       if (f.timeUs % (3600 * kMicrosPerSecond) == 0) samples.printHour(checker.result());
@@ -167,7 +183,9 @@ int run(const Options& o) {
   }
   recorder.finish({}, labels, wallNow());
   const double wallS = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  samples.add({toSeconds(engine.timeUs()), wallS, rssMb(), heapMb(), fileMb(recordPath), 0, 0, 0});
+  const Resident mem = resident();
+  samples.add({toSeconds(engine.timeUs()), wallS, mem.totalMb, mem.anonMb, mem.fileMb, heapMb(),
+               fileMb(recordPath), 0, 0, 0});
 
   soak::RecordFigures record = soak::recordFigures(recordPath, o.recordHours, utc0 + engine.timeUs());
   record.lines = recorder.lines();

@@ -30,10 +30,11 @@ void Samples::printHour(const FrameChecks& c) const {
   const double own = h > 0 && h - 1 < c.own.hours.size() ? c.own.hours[h - 1].mean() : 0.0;
   const double trk = h > 0 && h - 1 < c.tracks.hours.size() ? c.tracks.hours[h - 1].mean() : 0.0;
   std::printf(
-      "hour %3zu  wall %7.1f s  RSS %7.2f MB  heap %6.2f MB  record %7.1f MB  tracks %3d  AIS %4d  NEES own "
+      "hour %3zu  wall %7.1f s  RSS %7.2f MB (anon %6.2f, file %5.2f)  heap %6.2f MB  record %7.1f MB  "
+      "tracks %3d  AIS %4d  NEES own "
       "%.2f  tracks "
       "%.2f%s\n",
-      h, s.wallS, s.rssMb, s.heapMb, s.recordMb, s.tracks, s.aisTargets, own, trk,
+      h, s.wallS, s.rssMb, s.anonMb, s.fileBackedMb, s.heapMb, s.recordMb, s.tracks, s.aisTargets, own, trk,
       c.clean() ? "" : "  PROBLEMS");
   std::fflush(stdout);
 }
@@ -147,9 +148,10 @@ void writeReport(const std::string& path, const SoakPlan& plan, std::uint64_t se
     if (i % 60 != 0 && i + 1 != s.all.size()) continue;
     const std::size_t h = static_cast<std::size_t>(x.simS / 3600.0);
     out << (i ? ",\n    " : "\n    ") << "{\"sim_s\": " << x.simS << ", \"wall_s\": " << x.wallS
-        << ", \"rss_mb\": " << x.rssMb << ", \"heap_mb\": " << x.heapMb << ", \"record_mb\": " << x.recordMb
-        << ", \"tracks\": " << x.tracks << ", \"ais_targets\": " << x.aisTargets
-        << ", \"alert_history\": " << x.alertHistory
+        << ", \"rss_mb\": " << x.rssMb << ", \"rss_anon_mb\": " << x.anonMb
+        << ", \"rss_file_mb\": " << x.fileBackedMb << ", \"heap_mb\": " << x.heapMb
+        << ", \"record_mb\": " << x.recordMb << ", \"tracks\": " << x.tracks
+        << ", \"ais_targets\": " << x.aisTargets << ", \"alert_history\": " << x.alertHistory
         << ", \"own_nees_hour_mean\": " << (h < c.own.hours.size() ? c.own.hours[h].mean() : 0.0)
         << ", \"track_nees4_hour_mean\": " << (h < c.tracks.hours.size() ? c.tracks.hours[h].mean() : 0.0)
         << "}";

@@ -158,8 +158,12 @@ void readRings(OGRGeometryH g, Geometry& out) {
     out.parts.push_back(std::move(pts));
   };
   if (t == wkbPolygon) {
+    // An empty polygon (GDAL gives one for an area whose edges a corrupt cell or update has lost) has no
+    // ring for its start to point at: it adds nothing (fuzz_s57's finding, docs/robustness.md).
+    const int rings = OGR_G_GetGeometryCount(g);
+    if (rings == 0) return;
     out.polygonStarts.push_back(out.parts.size());
-    for (int r = 0; r < OGR_G_GetGeometryCount(g); ++r) addRing(OGR_G_GetGeometryRef(g, r));
+    for (int r = 0; r < rings; ++r) addRing(OGR_G_GetGeometryRef(g, r));
   } else if (t == wkbLineString) {
     addRing(g);
   } else if (t == wkbMultiPolygon || t == wkbMultiLineString || t == wkbGeometryCollection) {

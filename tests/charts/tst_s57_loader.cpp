@@ -532,6 +532,24 @@ class TestS57Loader : public QObject {
     QVERIFY(what.find('\n') == std::string::npos);
   }
 
+  void givenAnUpdateThatLeavesAnAreaWithoutRings_whenLoaded_thenEveryPolygonStartNamesARing() {
+    // GIVEN tests/charts/data/EMPTYPLY.000 and .001: fuzz_s57's mutation of its seeds area.000 and its
+    // update (written from scratch by s57_seeds); GDAL gives one area an empty polygon
+    const QString cellDir = QStringLiteral(RECKONER_CHART_TEST_DATA);
+    const LoadResult r = loadCharts({(cellDir + "/EMPTYPLY.000").toStdString()});
+    // WHEN loaded with its update THEN the cell loads, and every polygon's first ring exists (the empty
+    // polygon used to leave a start one past the last ring)
+    QCOMPARE(r.cells.size(), std::size_t(1));
+    std::size_t areas = 0;
+    for (const ChartFeature& f : r.cells[0]->features()) {
+      if (f.geometry.primitive != Primitive::Area) continue;
+      ++areas;
+      for (const std::size_t s : f.geometry.polygonStarts)
+        QVERIFY2(s < f.geometry.parts.size(), f.objectClass.c_str());
+    }
+    QVERIFY(areas > 0);
+  }
+
   void givenAMultiLineGdalError_whenTheCellFails_thenTheReasonIsOneLine() {
     if (!haveEnc()) QSKIP("../shared/data/enc is absent");
     // GIVEN a cell whose DDR gives DSPM a field control byte 0xFF: the ISO 8211 structure is whole,

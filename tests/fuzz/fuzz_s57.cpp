@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -27,19 +28,23 @@ namespace {
 namespace fs = std::filesystem;
 using namespace reckoner::charts;
 
-void check(bool ok) {
-  if (!ok) std::abort();
+void check(bool ok, int line = __builtin_LINE()) {
+  if (ok) return;
+  std::fprintf(stderr, "fuzz_s57: check failed at line %d\n", line);
+  std::abort();
 }
 
+// Allocated once and never destroyed: the exit handler that removes the folder runs after the static
+// objects are destroyed (it is registered before this one is constructed), so it must not read one.
 const fs::path& scratchDir() {
-  static const fs::path dir = [] {
+  static const fs::path* dir = [] {
     const fs::path base = fs::is_directory("/dev/shm") ? fs::path("/dev/shm") : fs::temp_directory_path();
-    const fs::path d = base / ("reckoner-fuzz-s57-" + std::to_string(::getpid())) / "FZ5CELL0";
-    fs::create_directories(d);
+    auto* d = new fs::path(base / ("reckoner-fuzz-s57-" + std::to_string(::getpid())) / "FZ5CELL0");
+    fs::create_directories(*d);
     std::atexit([] { fs::remove_all(scratchDir().parent_path()); });
     return d;
   }();
-  return dir;
+  return *dir;
 }
 
 void write(const fs::path& p, std::string_view bytes) {

@@ -69,7 +69,7 @@ double boxShare(const charts::Viewport& v, const charts::Bounds& b) {
 /// Waits until a frame newer than `sequence` has arrived and the window shows it (its repaint tick
 /// has run: following own ship would have moved the view then).
 void waitForNextFrame(MainWindow& w, quint64 sequence) {
-  QTRY_VERIFY_WITH_TIMEOUT(w.history().latest().sequence > sequence && !w.refreshPending(), kTimeoutMs);
+  RK_WAIT_VERIFY(w.history().latest().sequence > sequence && !w.refreshPending());
 }
 
 QAction* actionNamed(QWidget& w, const char* name) {
@@ -247,7 +247,7 @@ class TestChartManagement : public QObject {
     MainWindow w(freshOptions());
     showAndWait(w);
     openFromTheFileMenu(w, cellFolder("US5WA22M"));
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     // The outline's magenta, counted on the chart with outlines on and off.
     const charts::Rgb m = charts::defaultColours().colour(charts::Palette::Day, "CHMGD");
     const auto magenta = [&] {
@@ -310,7 +310,7 @@ class TestChartManagement : public QObject {
     wheel(*w.chart(), mid, 40);
     // THEN it stops at 1:15 000 / 8, where the render says "OVERSCALE x8.0"
     RK_COMPARE_NEAR(w.chart()->viewport().scaleDenominator(), 15000.0 / charts::kMaxOverscale, 1e-9);
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     RK_COMPARE_NEAR(w.chart()->lastRenderStats().overscale, charts::kMaxOverscale, 1e-9);
     QVERIFY(!w.chart()->lastRenderStats().overscaleNote.isEmpty());
     // AND zooming out works again from there, and panning keeps the scale
@@ -339,10 +339,8 @@ class TestChartManagement : public QObject {
     showAndWait(w);
     openFromTheFileMenu(w, cellFolder("US4MD81M"));
     w.loadScenario(s, QStringLiteral("chesapeake"));
-    QTRY_VERIFY_WITH_TIMEOUT(!w.history().empty() && w.chart()->frame() &&
-                                 std::abs(w.chart()->frame()->origin().latDeg - 38.7) < 1e-9 &&
-                                 !w.refreshPending(),
-                             kTimeoutMs);
+    RK_WAIT_VERIFY(!w.history().empty() && w.chart()->frame() &&
+                   std::abs(w.chart()->frame()->origin().latDeg - 38.7) < 1e-9 && !w.refreshPending());
     // WHEN the shortest range is chosen THEN the chart stops at 1:10 000 (a longer range shows)
     w.chart()->setRangeNm(0.25);
     RK_COMPARE_NEAR(w.chart()->viewport().scaleDenominator(), 80000.0 / charts::kMaxOverscale, 1e-9);
@@ -367,7 +365,7 @@ class TestChartManagement : public QObject {
         ->findChild<QAction*>(QStringLiteral("eblVrm"))
         ->trigger();
     moveMouse(*chart, QPointF(60, 40));
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     // THEN the render notes the overscale, below the readout box and clear of it
     const charts::RenderStats& st = chart->lastRenderStats();
     RK_COMPARE_NEAR(st.overscale, 4.0, 1e-9);

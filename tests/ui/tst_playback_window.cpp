@@ -93,7 +93,7 @@ class TestPlaybackWindow : public QObject {
     speed->setCurrentIndex(speed->count() - 1);  // max
     child<QToolButton>(w, "playbackPlay")->click();
     QTRY_VERIFY_WITH_TIMEOUT(playback(w).atEnd && w.history().latest().frame.timeUs > 0, kTimeoutMs);
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     const sim::ReplayOwnRow& last = recorded.back();
     const LiveFrame& end = w.history().latest();
     QCOMPARE(end.liveUtc0 + end.frame.timeUs, last.utcUs);
@@ -124,7 +124,7 @@ class TestPlaybackWindow : public QObject {
 
     // The next alert: the clock on its mark, the alert raised in the list
     // (the bar shows the clock the window shows: after its repaint tick)
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     const auto next = std::upper_bound(marks.begin(), marks.end(), playback(w).clock);
     if (next != marks.end()) {
       child<QToolButton>(w, "playbackNextAlert")->click();
@@ -132,13 +132,13 @@ class TestPlaybackWindow : public QObject {
       QVERIFY(w.history().alertHistoryCount() > 0);
     }
     // The previous alert: back (a seek back) to the mark before the clock
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     const auto previous = std::lower_bound(marks.begin(), marks.end(), playback(w).clock);
     if (previous != marks.begin()) {
       child<QToolButton>(w, "playbackPreviousAlert")->click();
       QTRY_VERIFY_WITH_TIMEOUT(playback(w).clock == *std::prev(previous), kTimeoutMs);
     }
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     saveWindowShot(w, QStringLiteral("playback"));
 
     // Ending it goes back to the simulation

@@ -79,7 +79,7 @@ class TestVoyageWindow : public QObject {
              qPrintable(w.voyagePanel()->routeText()));
     // Through the turn at B onto the second leg; the ship keeps to the track.
     runUntil(w, 420.0);
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     const auto& status = w.history().latest().frame.route;
     QVERIFY(status.has_value());
     QCOMPARE(status->to, std::size_t(2));
@@ -118,7 +118,7 @@ class TestVoyageWindow : public QObject {
       runUntil(w, t);
       if (alertS < 0.0 && alerting(w, alerts::AlertKind::SafetyContourAhead)) {
         alertS = simTime(w);
-        QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+        RK_WAIT_VERIFY(settled(w));
         QVERIFY2(w.voyagePanel()->lookAheadText().contains(QStringLiteral("%")),
                  qPrintable(w.voyagePanel()->lookAheadText()));
         raiseDock(w, "voyageDock");
@@ -134,7 +134,7 @@ class TestVoyageWindow : public QObject {
     // the look-ahead time (6 min) before the contour, so well over 6 min before the grounding.
     QVERIFY2(groundedS - alertS >= 360.0, qPrintable(QString("%1 s").arg(groundedS - alertS)));
     QTRY_VERIFY_WITH_TIMEOUT(alerting(w, alerts::AlertKind::Grounded), kTimeoutMs);
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     QVERIFY2(w.voyagePanel()->groundingText().startsWith(QStringLiteral("AGROUND")),
              qPrintable(w.voyagePanel()->groundingText()));
     // The ship stays where she grounded.

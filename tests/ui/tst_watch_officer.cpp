@@ -60,7 +60,7 @@ class TestWatchOfficer : public QObject {
     for (const QSize size : {QSize(1024, 768), QSize(1920, 1080)}) {
       MainWindow w(freshOptions());
       showAndWait(w, size);
-      QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+      RK_WAIT_VERIFY(settled(w));
       // THEN the window fits the screen, the chart has at least 60% of it
       const QSize least = w.minimumSizeHint().expandedTo(w.minimumSize());
       QVERIFY2(least.width() <= 1024 && least.height() <= 768,
@@ -107,7 +107,7 @@ class TestWatchOfficer : public QObject {
     const QPointF own = w.chart()->gridToWidget(x[est::drkf::kPosX], x[est::drkf::kPosY]);
     RK_COMPARE_NEAR(own.x(), w.chart()->width() / 2.0, 1.0);
     RK_COMPARE_NEAR(own.y(), w.chart()->height() / 2.0, 1.0);
-    QTRY_VERIFY_WITH_TIMEOUT(settled(w), kTimeoutMs);
+    RK_WAIT_VERIFY(settled(w));
     saveWindowShot(w, QStringLiteral("range-3nm"));
     // AND '+' halves it, '-' twice goes to 6 NM, and the box follows
     w.chart()->setFocus();

@@ -174,10 +174,7 @@ int AlertManager::raisedCount(AlertKind kind) const {
 }
 
 void AlertManager::log(AlertLogEntry::Event e, TimeUs now, const Alert& a) {
-  const AlertLogEntry entry{e, now, a.id, a.priority, a.text};
-  history_.push_back(entry);
-  if (history_.size() > config_.historyLimit) history_.pop_front();
-  untaken_.push_back(entry);
+  untaken_.push_back({e, now, a.id, a.priority, a.text});
   if (untaken_.size() > config_.historyLimit) {  // nobody is taking the log: keep it bounded, count it
     untaken_.pop_front();
     ++dropped_;

@@ -25,9 +25,10 @@
 namespace reckoner::alerts {
 
 struct AlertConfig {
-  double silenceS = 30.0;           ///< MSC.302(87) 7.3.5: the audible signal starts again after 30 s
-  double escalateAfterS = 60.0;     ///< an escalating warning unacknowledged this long becomes an alarm
-  std::size_t historyLimit = 2000;  ///< log entries kept in memory (oldest dropped first, counted)
+  double silenceS = 30.0;        ///< MSC.302(87) 7.3.5: the audible signal starts again after 30 s
+  double escalateAfterS = 60.0;  ///< an escalating warning unacknowledged this long becomes an alarm
+  /// Log entries kept for whoever writes the log when nobody takes them (oldest dropped first, counted).
+  std::size_t historyLimit = 2000;
 };
 /// Throws std::invalid_argument naming the field when a time is not finite and positive or the
 /// history limit is 0.
@@ -58,10 +59,11 @@ class AlertManager {
   /// The most urgent audible priority (meaningful when audible()).
   [[nodiscard]] Priority audiblePriority() const;
 
-  /// Log entries since the previous call, oldest first (for a log file).
+  /// Log entries since the previous call, oldest first (for a log file, the record and the window's
+  /// history, which each keep what they need: the manager keeps none once taken).
   std::vector<AlertLogEntry> takeLog();
-  /// The latest historyLimit entries, oldest first.
-  [[nodiscard]] const std::deque<AlertLogEntry>& history() const { return history_; }
+  /// Entries not taken yet (at most historyLimit).
+  [[nodiscard]] std::size_t untakenLogEntries() const { return untaken_.size(); }
   /// Entries dropped from the untaken log (takeLog not called for historyLimit entries).
   [[nodiscard]] std::size_t droppedLogEntries() const { return dropped_; }
   /// How many times alerts of `kind` were raised (each occurrence, re-raises included).
@@ -78,7 +80,7 @@ class AlertManager {
   AlertConfig config_;
   std::map<AlertId, Alert> alerts_;
   std::set<AlertId> holds_;  ///< the conditions that hold now
-  std::deque<AlertLogEntry> history_, untaken_;
+  std::deque<AlertLogEntry> untaken_;
   std::size_t dropped_ = 0;
   std::map<AlertKind, int> raised_;
 };

@@ -166,7 +166,8 @@ int run(const Options& o) {
     if (f.timeUs >= nextSampleUs) {
       // The officer of the watch acknowledges what is on the list once a minute (BAM keeps a rectified
       // alarm until it is acknowledged: an unattended run would pile them up).
-      peakAlerts = std::max(peakAlerts, alerts.alerts().size());
+      const std::size_t shown = alerts.alerts().size();
+      peakAlerts = std::max(peakAlerts, shown);
       for (const alerts::Alert& a : alerts.alerts())
         if (a.state == alerts::AlertState::Unacknowledged || a.state == alerts::AlertState::Silenced ||
             a.state == alerts::AlertState::Rectified)
@@ -175,8 +176,7 @@ int run(const Options& o) {
       const Resident mem = resident();
       samples.add({toSeconds(f.timeUs), wallS, mem.totalMb, mem.anonMb, mem.fileMb, heapMb(),
                    fileMb(recordPath), static_cast<int>(f.tracks.size()),
-                   f.aisTargets ? static_cast<int>(f.aisTargets->size()) : 0,
-                   static_cast<int>(alerts.history().size())});
+                   f.aisTargets ? static_cast<int>(f.aisTargets->size()) : 0, static_cast<int>(shown)});
       if (f.timeUs % (3600 * kMicrosPerSecond) == 0) samples.printHour(checker.result());
       nextSampleUs += 60 * kMicrosPerSecond;
     }

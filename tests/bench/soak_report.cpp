@@ -151,7 +151,7 @@ void writeReport(const std::string& path, const SoakPlan& plan, std::uint64_t se
         << ", \"rss_mb\": " << x.rssMb << ", \"rss_anon_mb\": " << x.anonMb
         << ", \"rss_file_mb\": " << x.fileBackedMb << ", \"heap_mb\": " << x.heapMb
         << ", \"record_mb\": " << x.recordMb << ", \"tracks\": " << x.tracks
-        << ", \"ais_targets\": " << x.aisTargets << ", \"alert_history\": " << x.alertHistory
+        << ", \"ais_targets\": " << x.aisTargets << ", \"alerts_shown\": " << x.alertsShown
         << ", \"own_nees_hour_mean\": " << (h < c.own.hours.size() ? c.own.hours[h].mean() : 0.0)
         << ", \"track_nees4_hour_mean\": " << (h < c.tracks.hours.size() ? c.tracks.hours[h].mean() : 0.0)
         << "}";

@@ -15,7 +15,8 @@ struct Sample {
   double simS = 0.0, wallS = 0.0;
   double rssMb = 0.0, anonMb = 0.0, fileBackedMb = 0.0;  ///< RSS and its anonymous and file-backed parts
   double heapMb = 0.0, recordMb = 0.0;
-  int tracks = 0, aisTargets = 0, alertHistory = 0;
+  int tracks = 0, aisTargets = 0,
+      alertsShown = 0;  ///< alertsShown: on the list before the minute's acknowledgement
 };
 
 struct Samples {

@@ -207,8 +207,12 @@ class TestAlertManager : public QObject {
     QCOMPARE(log[3].timeUs, sec(4));
     QVERIFY(m.takeLog().empty());
     for (int k = 0; k < 100; ++k) m.report(sec(10 + k), {AlertKind::LostTarget, k}, true);
-    QCOMPARE(m.history().size(), std::size_t{10});
-    QCOMPARE(m.takeLog().size(), std::size_t{10});
+    QCOMPARE(m.untakenLogEntries(), std::size_t{10});
+    const std::vector<AlertLogEntry> kept = m.takeLog();
+    QCOMPARE(kept.size(), std::size_t{10});
+    QCOMPARE(kept.front().id, (AlertId{AlertKind::LostTarget, 90}));  // the newest ten
+    QCOMPARE(kept.back().id, (AlertId{AlertKind::LostTarget, 99}));
+    QCOMPARE(m.untakenLogEntries(), std::size_t{0});
     QCOMPARE(m.droppedLogEntries(), std::size_t{90});
   }
 

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "common/committed_allocator.h"
 #include "radar/land_mask.h"
 #include "tracking/cpa.h"
 #include "tracking/deleter.h"
@@ -154,7 +155,8 @@ class TrackManager {
   void setFused(int trackId, bool fused);
   /// The track's belief predicted to t (not changing the track); lost tracks keep their last one.
   [[nodiscard]] est::ttkf::Belief beliefAt(const Track& t, TimeUs time) const;
-  [[nodiscard]] const std::vector<Track>& tracks() const { return tracks_; }
+  using TrackTable = std::vector<Track, CommittedAllocator<Track>>;
+  [[nodiscard]] const TrackTable& tracks() const { return tracks_; }
   [[nodiscard]] const Track* find(int trackId) const;
   [[nodiscard]] std::size_t activeCount() const;
   [[nodiscard]] bool capacityWarning() const { return capacityWarning_; }
@@ -207,7 +209,7 @@ class TrackManager {
   CancelledTracks cancelled_;
   HitsInWindowDeleter deleter_;
   TrackUpdater updater_;
-  std::vector<Track> tracks_;
+  TrackTable tracks_;  ///< reserved for the capacity (up to 4096) and committed at construction
   std::vector<Pending> pending_;
   std::vector<FreePlot> free_;
   std::optional<OwnShipInput> lastOwn_;

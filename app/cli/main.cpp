@@ -26,6 +26,7 @@
 #include "charts/s57/s57_loader.h"
 #include "cli/cli_options.h"
 #include "cli/commands.h"
+#include "common/allocator_settings.h"
 #include "common/library_versions.h"
 #include "io/error_line.h"
 #include "io/input_error.h"
@@ -153,6 +154,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  reckoner::applyAllocatorSettings();
   try {
     return run(argc, argv);
   } catch (const UsageError& e) {

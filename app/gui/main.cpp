@@ -9,6 +9,7 @@
 #include <QIcon>
 #include <QStringList>
 
+#include "common/allocator_settings.h"
 #include "reckoner_version.h"
 #include "ui/main_window.h"
 
@@ -50,6 +51,7 @@ bool asksOnlyForHelpOrVersion(int argc, char** argv, const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  reckoner::applyAllocatorSettings();
   QCoreApplication::setOrganizationName(QStringLiteral("Reckoner"));
   QCoreApplication::setApplicationName(QStringLiteral("reckoner"));
   QCoreApplication::setApplicationVersion(QStringLiteral(RECKONER_VERSION));

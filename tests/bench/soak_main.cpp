@@ -17,6 +17,7 @@
 #include <string>
 
 #include "alerts/alert_manager.h"
+#include "common/allocator_settings.h"
 #include "files/sqlite_db.h"
 #include "files/voyage_recorder.h"
 #include "sim/alert_feed.h"
@@ -200,6 +201,7 @@ int run(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  applyAllocatorSettings();  // as reckoner and reckoner-cli
   try {
     CLI::App app{
         "reckoner-soak: hours of the engine at full speed, every frame checked (docs/robustness.md)"};

@@ -49,26 +49,26 @@ Pass drawPass(Rng& rng, const Crossing& c, double done) {
   return p;
 }
 
-double meanLifetimeS(const Crossing& c, std::uint64_t seed) {
-  Rng rng(seed, 99);
-  double sum = 0.0;
-  constexpr int kDraws = 4000;
-  for (int i = 0; i < kDraws; ++i) sum += drawPass(rng, c, 0.0).lifetimeS;
-  return sum / kDraws;
-}
-
 class Traffic {
  public:
   Traffic(sim::Scenario& s, std::uint64_t seed) : s_(s), rng_(seed, 7) {}
 
-  /// `count` vessels of crossing c present on average: as many at the start, part way along their
-  /// passes, then arrivals at the rate that keeps the count.
-  void populate(const Crossing& c, int count, double aisShare, std::uint64_t seed) {
+  /// `count` vessels of crossing c present at every moment: `count` lanes, each starting with a vessel
+  /// part way along its pass, and each vessel that leaves the circle followed at once by a new one
+  /// entering it. The load is the same in every hour of the run, so the memory of hour 2 and of hour 24
+  /// are comparable (with arrivals drawn at random the count wanders by its square root, and the
+  /// memory in use with it).
+  void populate(const Crossing& c, int count, double aisShare) {
     const double durationS = toSeconds(s_.durationUs);
-    for (int i = 0; i < count; ++i) add(drawPass(rng_, c, rng_.uniform()), 0.0, durationS, aisShare);
-    const double rate = count / meanLifetimeS(c, seed);
-    for (double t = -std::log(rng_.uniform()) / rate; t < durationS; t += -std::log(rng_.uniform()) / rate)
-      add(drawPass(rng_, c, 0.0), t, durationS, aisShare);
+    for (int lane = 0; lane < count; ++lane) {
+      Pass p = drawPass(rng_, c, rng_.uniform());
+      for (double t = 0.0;;) {
+        add(p, t, durationS, aisShare);
+        t += p.lifetimeS;
+        if (t >= durationS) break;
+        p = drawPass(rng_, c, 0.0);
+      }
+    }
   }
 
  private:
@@ -164,10 +164,10 @@ sim::Scenario soakScenario(const SoakPlan& plan, std::uint64_t seed) {
   Traffic traffic(s, seed);
   const double r = nmToMetres(plan.radarCircleNm);
   traffic.populate({r, 0.0, 0.85 * r, knotsToMps(5.0), knotsToMps(20.0)}, plan.radarTargets,
-                   plan.radarAisShare, seed);
+                   plan.radarAisShare);
   traffic.populate({nmToMetres(plan.aisRingOuterNm), nmToMetres(plan.aisRingInnerNm),
                     0.95 * nmToMetres(plan.aisRingOuterNm), knotsToMps(5.0), knotsToMps(20.0)},
-                   plan.aisTargets, 1.0, seed + 1);
+                   plan.aisTargets, 1.0);
   return s;
 }
 

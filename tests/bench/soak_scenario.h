@@ -1,7 +1,8 @@
 #pragma once
 // The soak's scenario (docs/robustness.md, "Soak"): own ship following a square route round and round
 // for the whole run, vessels crossing the radar picture and a ring of AIS traffic beyond it, entering
-// and leaving all the time (appear_s, leave_s), sea clutter, and a GPS and a gyro drop-out every hour.
+// and leaving all the time (appear_s, leave_s: each one leaving is replaced at once, so the counts stay
+// as planned), sea clutter, and a GPS and a gyro drop-out every hour.
 // Built from the busy AIS harbour's sensors, filter and tracker (resources/scenarios/ais-harbour.json).
 #include <cstdint>
 
@@ -11,8 +12,8 @@ namespace reckoner::soak {
 
 struct SoakPlan {
   double hours = 24.0;
-  int radarTargets = 40;        ///< vessels inside the radar circle at any time (on average)
-  int aisTargets = 200;         ///< AIS stations in the ring beyond it at any time (on average)
+  int radarTargets = 40;        ///< vessels inside the radar circle at every moment
+  int aisTargets = 200;         ///< AIS stations in the ring beyond it at every moment
   double radarCircleNm = 12.0;  ///< radar vessels cross this circle round the route's centre
   double radarRangeNm = 16.5;   ///< the circle and own ship's greatest distance from the centre
   double aisRingInnerNm = 22.0, aisRingOuterNm = 36.0;  ///< closest approach to the centre of AIS vessels

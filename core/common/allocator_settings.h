@@ -14,9 +14,12 @@
 
 namespace reckoner {
 
+/// Call first thing in main, before any thread exists.
 inline void applyAllocatorSettings() {
 #if defined(__GLIBC__)
-  mallopt(M_MMAP_THRESHOLD, 128 * 1024);  // glibc's default, kept: no longer raised by frees
+  // glibc's default, kept: no longer raised by frees. mallopt is not thread-safe; every program calls
+  // this first thing in main, before any thread is started.
+  mallopt(M_MMAP_THRESHOLD, 128 * 1024);  // NOLINT(concurrency-mt-unsafe)
 #endif
 }
 

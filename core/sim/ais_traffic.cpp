@@ -27,7 +27,11 @@ AisTraffic::AisTraffic(const Scenario& scenario, std::uint64_t seed)
 }
 
 void AisTraffic::addTarget(std::size_t index, const TargetSpec& target, TimeUs startUs) {
-  if (transmitters_.size() <= index) transmitters_.resize(index + 1);
+  if (transmitters_.size() <= index) {
+    transmitters_.resize(index + 1);
+    leaveUs_.resize(index + 1);
+  }
+  leaveUs_[index] = target.leaveUs;
   if (!target.ais) return;
   transmitters_[index].emplace(*target.ais, target.id, Rng(seed_, kStreamAisBase + index), startUs);
   any_ = true;
@@ -37,9 +41,12 @@ AisCycle AisTraffic::step(TimeUs end, const std::vector<VesselMotionModel>& targ
                           const std::vector<std::uint8_t>& present, const geo::LocalFrame& frame,
                           track::TrackManager& bank, const track::OwnShipInput& own) {
   AisCycle c;
-  for (std::size_t i = 0; i < transmitters_.size() && i < targets.size(); ++i)
-    if (transmitters_[i] && i < present.size() && present[i])
+  for (std::size_t i = 0; i < transmitters_.size() && i < targets.size(); ++i) {
+    if (!transmitters_[i]) continue;
+    if (i < present.size() && present[i])
       transmitters_[i]->advance(hullOf(targets[i].state()), frame, c.received);
+    if (leaveUs_[i] && end >= *leaveUs_[i]) transmitters_[i].reset();  // gone for good: nothing in flight
+  }
   std::stable_sort(c.received.begin(), c.received.end(),
                    [](const auto& a, const auto& b) { return a.rxUs < b.rxUs; });
   for (const auto& r : c.received) {
@@ -54,6 +61,11 @@ AisCycle AisTraffic::step(TimeUs end, const std::vector<VesselMotionModel>& targ
   c.associations = fusion_.associations();
   c.events = fusion_.takeEvents();
   return c;
+}
+
+std::size_t AisTraffic::transponders() const {
+  return static_cast<std::size_t>(
+      std::count_if(transmitters_.begin(), transmitters_.end(), [](const auto& t) { return t.has_value(); }));
 }
 
 }  // namespace reckoner::sim

@@ -35,6 +35,10 @@ class AisTraffic {
   void addTarget(std::size_t index, const TargetSpec& target, TimeUs startUs);
   /// No transponder anywhere: nothing to do.
   [[nodiscard]] bool idle() const { return !any_; }
+  /// Transponders held: one per AIS vessel that has not left yet (a vessel's leave_s is final, so its
+  /// transponder and the hull history it keeps are released when it leaves, and a run of thousands of
+  /// passing vessels holds only those still to come or present).
+  [[nodiscard]] std::size_t transponders() const;
 
   /// The end of a cycle at `end`: the transponders' messages up to then (targets: their truths, in
   /// scenario order; present: appeared), the table advanced with own ship, association and fusion.
@@ -48,6 +52,7 @@ class AisTraffic {
  private:
   std::uint64_t seed_;
   std::vector<std::optional<sensors::AisTransmitter>> transmitters_;  ///< per target index
+  std::vector<std::optional<TimeUs>> leaveUs_;                        ///< per target index
   track::AisTargetTable table_;
   track::AisRadarFusion fusion_;
   bool any_ = false;

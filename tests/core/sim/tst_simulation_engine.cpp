@@ -138,7 +138,7 @@ class TestSimulationEngine : public QObject {
   }
   void aTargetThatLeavesIsNoLongerSeen() {
     // ais-harbour: the radar sees every target; the first with a transponder leaves at 600 s: no echo or
-    // AIS message of it after that, and its track and AIS target are dropped.
+    // AIS message of it after that, its track and AIS target are dropped, and its transponder released.
     Scenario s = test::builtinScenario("ais-harbour");
     const TimeUs leave = 600 * kMicrosPerSecond;
     const auto k =
@@ -151,6 +151,10 @@ class TestSimulationEngine : public QObject {
     const int id = s.targets[k].id;
     const std::uint32_t mmsi = s.targets[k].ais->mmsi;
     SimulationEngine e(s, 3);
+    const std::size_t transponders = e.ais().transponders();
+    QCOMPARE(transponders,
+             static_cast<std::size_t>(std::count_if(s.targets.begin(), s.targets.end(),
+                                                    [](const TargetSpec& t) { return t.ais.has_value(); })));
     int plotsBefore = 0, plotsAfter = 0, aisBefore = 0, aisAfter = 0;
     bool trackedBefore = false, trackedAtEnd = false, inTableAtEnd = false;
     while (!e.finished()) {
@@ -160,6 +164,8 @@ class TestSimulationEngine : public QObject {
       for (const auto& r : f.aisReceived)
         if (r.message.mmsi == mmsi) ++(r.rxUs < leave ? aisBefore : aisAfter);
       QCOMPARE(f.targetPresent[k], std::uint8_t(f.timeUs < leave ? 1 : 0));
+      // AND its transponder (and the hull history it keeps) is released when it leaves, not before
+      QCOMPARE(e.ais().transponders(), f.timeUs < leave ? transponders : transponders - 1);
       const bool tracked = std::any_of(f.tracks.begin(), f.tracks.end(), [&](const TrackSnapshot& t) {
         return t.targetId == id && t.status != track::TrackStatus::Lost;
       });

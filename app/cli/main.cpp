@@ -56,9 +56,13 @@ constexpr const char* kFooter =
 
 /// "run", "chart render".
 std::string commandPath(const CLI::App* app) {
+  std::vector<std::string> names;  // innermost first
+  for (; app && app->get_parent(); app = app->get_parent()) names.push_back(app->get_name());
   std::string path;
-  for (; app && app->get_parent(); app = app->get_parent())
-    path = app->get_name() + (path.empty() ? "" : " " + path);
+  for (auto it = names.rbegin(); it != names.rend(); ++it) {
+    if (!path.empty()) path += ' ';
+    path += *it;
+  }
   return path;
 }
 

@@ -16,12 +16,14 @@ namespace {
 
 /// The share of the pages of [p, p + bytes) that are resident (mincore).
 double residentShare(const void* p, std::size_t bytes) {
-  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-  const std::uintptr_t first = reinterpret_cast<std::uintptr_t>(p) / page * page;
-  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(p) + bytes;
-  const std::size_t pages = (end - first + page - 1) / page;
+  const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  const auto* bytesAt = static_cast<const unsigned char*>(p);
+  const std::size_t offset = reinterpret_cast<std::uintptr_t>(p) % page;  // into its first page
+  const std::size_t span = offset + bytes;
+  const std::size_t pages = (span + page - 1) / page;
   std::vector<unsigned char> in(pages);
-  if (mincore(reinterpret_cast<void*>(first), end - first, in.data()) != 0) return -1.0;
+  // mincore takes a void* to the page (and writes nothing there)
+  if (mincore(const_cast<unsigned char*>(bytesAt - offset), span, in.data()) != 0) return -1.0;
   std::size_t n = 0;
   for (const unsigned char c : in) n += (c & 1U) ? 1 : 0;
   return static_cast<double>(n) / static_cast<double>(pages);
@@ -39,7 +41,7 @@ class TestCommittedAllocator : public QObject {
  private slots:
   void aReservedTableIsResidentAtOnce() {
     // 8 MiB: above glibc's mmap threshold, so both reserves get fresh pages from the kernel
-    constexpr std::size_t kSlots = 8u * 1024u * 1024u / sizeof(Slot);
+    constexpr std::size_t kSlots = std::size_t{8} * 1024 * 1024 / sizeof(Slot);
     std::vector<Slot, CommittedAllocator<Slot>> committed;
     committed.reserve(kSlots);
     std::vector<Slot> plain;

@@ -36,7 +36,7 @@ radar::Coastline radarContours(const std::vector<CellPtr>& cells, const geo::Loc
       }
     }
   }
-  return radar::Coastline(std::move(segments));
+  return radar::Coastline(segments);
 }
 
 radar::LandMask landMask(const std::vector<CellPtr>& cells, const geo::LocalFrame& frame,

@@ -14,7 +14,7 @@ namespace {
 
 /// SQLite's message, with what it means for a user where SQLite's own words are terse.
 std::string explain(sqlite3* db, int code) {
-  const std::string said = db ? sqlite3_errmsg(db) : sqlite3_errstr(code);
+  std::string said = db ? sqlite3_errmsg(db) : sqlite3_errstr(code);  // not const: returned by move
   switch (code & 0xff) {
     case SQLITE_NOTADB:
       return "not a SQLite database (" + said + ")";

@@ -73,7 +73,7 @@ std::optional<double> optionalNumber(const Fields& f, std::size_t i, const char*
 
 /// ddmm.mmmm / dddmm.mmmm with hemisphere.
 double angle(const Fields& f, std::size_t i, int degreeDigits, char pos, char neg, const char* what) {
-  if (i + 1 >= f.size() || f[i].size() < static_cast<std::size_t>(degreeDigits + 2))
+  if (i + 1 >= f.size() || f[i].size() < static_cast<std::size_t>(degreeDigits) + 2)
     throw Bad{std::string(what) + ": missing or too short"};
   const auto deg = number(f[i].substr(0, static_cast<std::size_t>(degreeDigits)));
   const auto min = number(f[i].substr(static_cast<std::size_t>(degreeDigits)));

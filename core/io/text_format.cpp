@@ -32,7 +32,7 @@ std::string degMinSec(double v, char pos, char neg) {
     std::snprintf(buf, sizeof buf, "%02ld\"", seconds % 60);
     s += buf;
   }
-  if (seconds != 0 && seconds != 180 * 3600) s.push_back(v < 0 ? neg : pos);
+  if (seconds != 0 && seconds != 180L * 3600) s.push_back(v < 0 ? neg : pos);
   return s;
 }
 }  // namespace

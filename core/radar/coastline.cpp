@@ -27,9 +27,9 @@ std::optional<double> rayHit(const est::Vec<2>& o, const est::Vec<2>& u, const e
 }
 }  // namespace
 
-Coastline::Coastline(std::vector<CoastSegment> segments, double cellM) : cellM_(cellM) {
+Coastline::Coastline(const std::vector<CoastSegment>& segments, double cellM) : cellM_(cellM) {
   if (!(cellM > 0.0)) throw std::invalid_argument("coastline: cell size must be positive");
-  for (auto& s : segments)
+  for (const auto& s : segments)
     if (s.a.allFinite() && s.b.allFinite() && (s.b - s.a).norm() > 1e-3 && s.sdM > 0.0)
       segments_.push_back(s);
   // Each segment goes into every cell its bounding box touches (segments are short against cells).

@@ -20,7 +20,7 @@ struct CoastSegment {
 class Coastline {
  public:
   /// Segments shorter than 1 mm or not finite are dropped. cellM: the index's cell size.
-  explicit Coastline(std::vector<CoastSegment> segments, double cellM = 100.0);
+  explicit Coastline(const std::vector<CoastSegment>& segments, double cellM = 100.0);
 
   struct Nearest {
     est::Vec<2> point;   ///< on the contour

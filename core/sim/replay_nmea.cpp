@@ -65,9 +65,8 @@ std::optional<double> timeOfDayOf(const nm::Sentence& s) {
       [&](const auto& b) {
         using T = std::decay_t<decltype(b)>;
         if constexpr (std::is_same_v<T, nm::Rmc> || std::is_same_v<T, nm::Gga> ||
-                      std::is_same_v<T, nm::Zda> || std::is_same_v<T, nm::Gns> || std::is_same_v<T, nm::Gst>)
-          tod = b.timeOfDayS;
-        else if constexpr (std::is_same_v<T, nm::Gll>)
+                      std::is_same_v<T, nm::Zda> || std::is_same_v<T, nm::Gns> ||
+                      std::is_same_v<T, nm::Gst> || std::is_same_v<T, nm::Gll>)
           tod = b.timeOfDayS;
       },
       s.body);

@@ -256,7 +256,7 @@ std::vector<ComparisonRow> compareCoupled(const Scenario& s, const std::vector<i
     // Run 0 alone, so that its timings are not disturbed by the other threads.
     outs[0] = runOnce(sn, seed, true);
     parallelRuns(runs - 1, threads, [&](int i) {
-      outs[static_cast<std::size_t>(i + 1)] = runOnce(sn, seed + static_cast<std::uint64_t>(i + 1), false);
+      outs[static_cast<std::size_t>(i) + 1] = runOnce(sn, seed + static_cast<std::uint64_t>(i + 1), false);
     });
     Sums dec, cpl;
     for (const auto& o : outs) {

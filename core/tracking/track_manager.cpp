@@ -107,7 +107,7 @@ est::UpdateReport<4> TrackManager::fuseTargetState(int trackId, TimeUs t, const 
                                                    const est::Mat<4>& R, double gate, double adaptNis) {
   for (auto& tr : tracks_) {
     if (tr.id != trackId || !tr.active()) continue;
-    const est::UpdateReport<4> rep = tr.filter.updateTargetState(t, z, R, gate, adaptNis);
+    est::UpdateReport<4> rep = tr.filter.updateTargetState(t, z, R, gate, adaptNis);  // returned: moved
     if (!rep.applied() || !tr.guard.checkCovariance<est::ttkf::kStateDim>(tr.filter.belief().P)) return rep;
     // Broken between radar updates: back to the belief right after the last radar update (judged
     // healthy then), so that the gate can still take the plot the filter restarts on.

@@ -26,7 +26,7 @@ radar::Coastline syntheticHarbour() {
   for (std::size_t i = 0; i + 1 < shore.size(); ++i) s.push_back({shore[i], shore[i + 1], 5.0});
   addRing(s, {{-900, -1200}, {-600, -1100}, {-500, -1400}, {-850, -1500}});
   addRing(s, {{1100, -900}, {1400, -800}, {1500, -1150}, {1150, -1250}, {1000, -1050}});
-  return radar::Coastline(std::move(s));
+  return radar::Coastline(s);
 }
 
 radar::SweepPose harbourPose() {

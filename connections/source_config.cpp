@@ -107,7 +107,7 @@ std::string rateText(const FileRate& r) {
 }
 
 std::string defaultName(const SourceConfig& c) {
-  const std::string k = kindName(c.kind);
+  std::string k = kindName(c.kind);  // not const: the last return moves it
   switch (c.kind) {
     case Kind::Udp:
       return k + ":" + (c.host.empty() ? "" : hostText(c.host) + ":") + std::to_string(c.port);

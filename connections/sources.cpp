@@ -19,9 +19,9 @@ namespace reckoner::conn::detail {
 
 namespace {
 
-constexpr qint64 kReadChunk = 64 * 1024;
+constexpr qint64 kReadChunk = qint64{64} * 1024;
 /// Qt's own buffer of a TCP socket: beyond it the kernel's window holds the peer back.
-constexpr qint64 kSocketBuffer = 1024 * 1024;
+constexpr qint64 kSocketBuffer = qint64{1024} * 1024;
 
 QString qs(const std::string& s) {
   return QString::fromStdString(s);

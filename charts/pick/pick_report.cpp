@@ -211,7 +211,7 @@ std::vector<PickedFeature> pickFeatures(const std::vector<CellPtr>& cells, const
       const int rank = static_cast<int>(ci) * 3 + (g.primitive == Primitive::Point  ? 0
                                                    : g.primitive == Primitive::Line ? 1
                                                                                     : 2);
-      found.push_back({{rank, dist}, std::move(p)});
+      found.emplace_back(std::pair<int, double>{rank, dist}, std::move(p));
     }
   }
   std::stable_sort(found.begin(), found.end(),

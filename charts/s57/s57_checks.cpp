@@ -259,22 +259,22 @@ std::string summarise(std::string_view bytes, const ObjectClassKinds& kinds, Dat
   std::string problem;
   bool first = true;
   Indices frid, vrid;
-  const auto fail = [&](const iso8211::Record& r, std::string what) {
+  const auto fail = [&](const iso8211::Record& r, const std::string& what) {
     problem = "record " + withSeparators(r.number) + " at byte " + withSeparators(r.offset) + ": " + what;
     return false;
   };
   const iso8211::WalkResult walked = iso8211::walk(bytes, [&](const iso8211::Record& r) {
     if (first) {
       first = false;
-      std::string why = readDataSetIdentification(r, out);
-      return why.empty() || fail(r, std::move(why));
+      const std::string why = readDataSetIdentification(r, out);
+      return why.empty() || fail(r, why);
     }
     const iso8211::Field* key = r.key();
     if (!key) return true;
     const bool feature = key->tag == "FRID";
     if (!feature && key->tag != "VRID") return true;  // DSPM and other data set records
-    std::string why = countRecord(r, *key, feature, feature ? frid : vrid, kinds, keepRecords, out);
-    return why.empty() || fail(r, std::move(why));
+    const std::string why = countRecord(r, *key, feature, feature ? frid : vrid, kinds, keepRecords, out);
+    return why.empty() || fail(r, why);
   });
   if (walked.problem) return iso8211::describe(*walked.problem);
   if (!problem.empty()) return problem;
@@ -351,16 +351,24 @@ std::string RecordIndex::apply(const DataSetSummary& update) {
     const std::string what = recordName(r.rcnm) + " " + std::to_string(r.rcid);
     switch (r.ruin) {
       case 1:
-        if (held >= 0) return where(r) + " inserts " + what + ", which the cell already holds" + why;
+        if (held >= 0)
+          return where(r).append(" inserts ").append(what).append(", which the cell already holds") + why;
         held = r.rver;
         break;
       case 2:
       case 3: {
         const char* verb = r.ruin == 2 ? " deletes " : " modifies ";
-        if (held < 0) return where(r) + verb + what + ", which the cell does not hold" + why;
+        if (held < 0)
+          return where(r).append(verb).append(what).append(", which the cell does not hold") + why;
         if (held + 1 != r.rver)
-          return where(r) + verb + what + " to version " + std::to_string(r.rver) +
-                 ", the cell holds version " + std::to_string(held) + why;
+          return where(r)
+                     .append(verb)
+                     .append(what)
+                     .append(" to version ")
+                     .append(std::to_string(r.rver))
+                     .append(", the cell holds version ")
+                     .append(std::to_string(held)) +
+                 why;
         held = r.ruin == 2 ? -1 : r.rver;
         break;
       }

@@ -240,8 +240,10 @@ std::vector<std::pair<int, std::vector<Rel>>> assembleCrossing(std::vector<Segme
 ShoreBin decodeBin(const Layout& l, std::size_t b, const std::string& file) {
   ShoreBin bin;
   const double size = l.binMinutes / 60.0;
-  bin.westDeg = static_cast<double>(b % static_cast<std::size_t>(l.columns)) * size;
-  bin.southDeg = 90.0 - static_cast<double>(b / static_cast<std::size_t>(l.columns) + 1) * size;
+  const auto columns = static_cast<std::size_t>(l.columns);
+  const std::size_t row = b / columns, column = b % columns;  // the bins run west to east, north to south
+  bin.westDeg = static_cast<double>(column) * size;
+  bin.southDeg = 90.0 - static_cast<double>(row + 1) * size;
   const std::int64_t first = (*l.firstSegment)[b], end = first + (*l.segmentsInBin)[b];
   if (first < 0 || end < first || end > static_cast<std::int64_t>(l.segmentInfo->size()))
     fail(file, kFirstSegment,

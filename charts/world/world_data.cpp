@@ -37,9 +37,9 @@ Entry entryFor(ShoreResolution r) {
 }  // namespace
 
 std::string gshhgDirectory() {
-  // NOLINTNEXTLINE(concurrency-mt-unsafe): only setenv races getenv, and nothing sets the environment once
-  // threads run (the CLI's qputenv comes before the application starts).
-  const char* dir = std::getenv("RECKONER_GSHHG_DIR");
+  // getenv races only setenv, and nothing sets the environment once threads run (the CLI's qputenv
+  // comes before the application starts).
+  const char* dir = std::getenv("RECKONER_GSHHG_DIR");  // NOLINT(concurrency-mt-unsafe)
   return dir && *dir ? std::string(dir) : std::string("/usr/share/gmt-gshhg");
 }
 

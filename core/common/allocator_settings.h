@@ -17,8 +17,7 @@ namespace reckoner {
 /// Call first thing in main, before any thread exists.
 inline void applyAllocatorSettings() {
 #if defined(__GLIBC__)
-  // glibc's default, kept: no longer raised by frees. mallopt is not thread-safe; every program calls
-  // this first thing in main, before any thread is started.
+  // glibc's default, kept: no longer raised by frees. Not thread-safe, hence "before any thread".
   mallopt(M_MMAP_THRESHOLD, 128 * 1024);  // NOLINT(concurrency-mt-unsafe)
 #endif
 }

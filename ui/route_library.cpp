@@ -161,8 +161,8 @@ QString RouteLibrary::freePath(const geo::Route& route) const {
   if (stem.isEmpty()) stem = QStringLiteral("route");
   const QDir dir(directory_);
   for (int n = 1;; ++n) {
-    const QString path = dir.absoluteFilePath(n == 1 ? stem + QStringLiteral(".rtz")
-                                                     : QStringLiteral("%1 (%2).rtz").arg(stem).arg(n));
+    QString path = dir.absoluteFilePath(n == 1 ? stem + QStringLiteral(".rtz")
+                                               : QStringLiteral("%1 (%2).rtz").arg(stem).arg(n));
     const bool held =
         std::any_of(routes_.begin(), routes_.end(), [&](const LibraryRoute& r) { return r.path == path; });
     if (!held && !QFileInfo::exists(path)) return path;

@@ -67,8 +67,8 @@ std::string choiceList(const std::vector<std::string>& choices) {
 }
 
 CLI::Option* addValue(CLI::App& app, const std::string& name, const std::string& meta,
-                      const std::string& help, std::function<void(const std::string&)> set) {
-  return app.add_option_function<std::string>("--" + name, std::move(set), help)->type_name(meta);
+                      const std::string& help, const std::function<void(const std::string&)>& set) {
+  return app.add_option_function<std::string>("--" + name, set, help)->type_name(meta);
 }
 
 CLI::Option* addFlag(CLI::App& app, const std::string& name, bool& target, const std::string& help) {

@@ -37,7 +37,7 @@ std::string choiceList(const std::vector<std::string>& choices);
 // ---- options (names without the dashes; `meta` is the value's name in --help, its unit) ----------
 /// --NAME META: text handed to set, which throws UsageError when the value is bad.
 CLI::Option* addValue(CLI::App& app, const std::string& name, const std::string& meta,
-                      const std::string& help, std::function<void(const std::string&)> set);
+                      const std::string& help, const std::function<void(const std::string&)>& set);
 /// --NAME: a flag.
 CLI::Option* addFlag(CLI::App& app, const std::string& name, bool& target, const std::string& help);
 /// --NAME META: any text (a file, a folder, a scenario).

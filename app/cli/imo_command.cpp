@@ -43,6 +43,7 @@ int imoCommand(const ImoArgs& a) {
   std::vector<std::string> specs = a.scenarios;
   if (specs.empty()) specs = {"builtin:imo-1", "builtin:imo-2", "builtin:imo-3", "builtin:imo-4"};
   std::vector<sim::Scenario> scenarios;
+  scenarios.reserve(specs.size());
   for (const auto& spec : specs) scenarios.push_back(loadScenario(spec));
   bool all = true;
   std::printf("ARPA accuracy (IMO MSC.192(79)): 95th percentile of the error over %d runs\n", a.mc.runs);

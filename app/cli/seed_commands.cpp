@@ -1,6 +1,7 @@
 // seed001 and seed003: the papers' own experiments, Monte Carlo tables on stdout. seed001: the
 // input-estimation EKF with range and bearing (docs/manoeuvres.md); seed003: the alpha-beta-gamma
 // tracker's 2drms.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <map>
@@ -56,6 +57,7 @@ int seed001Command(const Seed001Args& a) {
   studies::Seed001Scenario sc;
   if (a.turn) sc.turn = studies::Seed001Scenario::Turn{};
   std::vector<std::vector<studies::Seed001Sample>> all;
+  all.reserve(static_cast<std::size_t>(std::max(a.runs, 0)));
   for (int r = 0; r < a.runs; ++r)
     all.push_back(studies::runSeed001(sc, cfg, a.seed + static_cast<std::uint64_t>(r)));
   printSeed001(a, cfg, studies::summariseSeed001(all));

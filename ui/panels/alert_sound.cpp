@@ -3,6 +3,7 @@
 #include <QtEndian>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 
 #if RECKONER_HAVE_MULTIMEDIA
@@ -44,7 +45,7 @@ QByteArray renderAlertBurst(AlertSoundPattern p, int sampleRate) {
   const int gapSamples = t.gapMs * sampleRate / 1000;
   const int ramp = std::max(1, 5 * sampleRate / 1000);
   const int total = t.tones * toneSamples + (t.tones - 1) * gapSamples;
-  QByteArray pcm(2 * total, '\0');
+  QByteArray pcm(2 * static_cast<qsizetype>(total), '\0');
   auto* out = reinterpret_cast<uchar*>(pcm.data());
   const double w = 2.0 * std::numbers::pi * t.frequencyHz / sampleRate;
   for (int k = 0; k < t.tones; ++k) {
@@ -52,7 +53,7 @@ QByteArray renderAlertBurst(AlertSoundPattern p, int sampleRate) {
     for (int i = 0; i < toneSamples; ++i) {
       const double envelope = std::min({1.0, double(i) / ramp, double(toneSamples - 1 - i) / ramp});
       const auto v = static_cast<qint16>(std::lround(0.5 * 32767.0 * envelope * std::sin(w * i)));
-      qToLittleEndian(v, out + 2 * (start + i));
+      qToLittleEndian(v, out + 2 * static_cast<std::ptrdiff_t>(start + i));
     }
   }
   return pcm;

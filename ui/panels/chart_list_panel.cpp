@@ -73,7 +73,7 @@ QString ChartListPanel::scaleText(int compilationScale) {
 }
 
 QString ChartListPanel::dateText(const std::string& yyyymmdd) {
-  const QString d = QString::fromStdString(yyyymmdd);
+  QString d = QString::fromStdString(yyyymmdd);
   if (d.size() != 8 ||
       !std::all_of(yyyymmdd.begin(), yyyymmdd.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return d;

@@ -98,7 +98,7 @@ std::optional<conn::SourceConfig> sourceFromForm(const QString& spec, const QStr
 }
 
 QString formSpec(const conn::SourceConfig& c) {
-  const QString full = QString::fromStdString(conn::toSpec(c));
+  QString full = QString::fromStdString(conn::toSpec(c));
   const qsizetype q = full.indexOf('?');
   if (q < 0) return full;
   QStringList kept;

@@ -111,6 +111,8 @@ struct Feature {
   std::vector<std::pair<P, double>> soundings;
 };
 
+class S57Writer;
+
 class Chart {
  public:
   int node(const P& p) {
@@ -160,6 +162,7 @@ class Chart {
   void write(const std::string& path) const;
 
  private:
+  void writeTopology(const S57Writer& w) const;
   std::map<std::pair<long, long>, std::pair<int, P>> nodes_;
   std::vector<Edge> edges_;
   std::deque<Feature> features_;  // add() hands out references: they must survive later add()s
@@ -190,20 +193,48 @@ void check(OGRErr err, const std::string& what) {
   if (err != OGRERR_NONE) throw std::runtime_error("GDAL could not write " + what);
 }
 
-void Chart::write(const std::string& path) const {
+/// GDAL's S-57 writer: its layers and fields by name, each missing one an error that names it.
+class S57Writer {
+ public:
+  explicit S57Writer(GDALDatasetH ds) : ds_(ds) {}
+  [[nodiscard]] OGRLayerH layer(const char* name) const {
+    OGRLayerH l = GDALDatasetGetLayerByName(ds_, name);
+    if (!l) throw std::runtime_error(std::string("the S57 writer has no layer ") + name);
+    return l;
+  }
+  static void setInt(OGRFeatureH f, const char* field, int v) {
+    OGR_F_SetFieldInteger(f, fieldIndex(f, field), v);
+  }
+  static void setList(OGRFeatureH f, const char* field, const std::vector<int>& v) {
+    OGR_F_SetFieldIntegerList(f, fieldIndex(f, field), static_cast<int>(v.size()), v.data());
+  }
+
+ private:
+  static int fieldIndex(OGRFeatureH f, const char* field) {
+    const int i = OGR_F_GetFieldIndex(f, field);
+    if (i < 0) throw std::runtime_error(std::string("the S57 writer has no field ") + field);
+    return i;
+  }
+  GDALDatasetH ds_;
+};
+
+/// The pointers of a feature to its spatial records (FSPT): NAME_RCNM, NAME_RCID, ORNT, USAG, MASK.
+struct SpatialPointers {
+  std::vector<int> rcnm, ids, ornt, usag, mask;
+};
+
+/// The dataset's general information (DSID, DSSI): edition, scale, comment and the record counts.
+GDALDatasetH createCell(const std::string& path, int isolatedNodes, std::size_t connectedNodes,
+                        std::size_t edges, int metaFeatures, std::size_t features) {
   GDALAllRegister();
   GDALDriverH driver = GDALGetDriverByName("S57");
   if (!driver) throw std::runtime_error("GDAL has no S57 driver");
-  int nodesIsolated = 0;
-  for (const auto& f : features_) nodesIsolated += f.prim == 1 ? 1 : 0;
-  const std::string noin = cat("S57_NOIN=", std::to_string(nodesIsolated));
-  const std::string nocn = cat("S57_NOCN=", std::to_string(nodes_.size()));
-  const std::string noed = cat("S57_NOED=", std::to_string(edges_.size()));
-  int meta = 0;
-  for (const auto& f : features_) meta += f.cls.rfind("M_", 0) == 0 ? 1 : 0;
-  const std::string nomr = cat("S57_NOMR=", std::to_string(meta));
+  const std::string noin = cat("S57_NOIN=", std::to_string(isolatedNodes));
+  const std::string nocn = cat("S57_NOCN=", std::to_string(connectedNodes));
+  const std::string noed = cat("S57_NOED=", std::to_string(edges));
+  const std::string nomr = cat("S57_NOMR=", std::to_string(metaFeatures));
   const std::string nogr =
-      cat("S57_NOGR=", std::to_string(features_.size() - static_cast<std::size_t>(meta)));
+      cat("S57_NOGR=", std::to_string(features - static_cast<std::size_t>(metaFeatures)));
   const char* options[] = {
       "S57_EXPP=1",
       "S57_INTU=5",
@@ -222,126 +253,134 @@ void Chart::write(const std::string& path) const {
       nullptr};
   GDALDatasetH ds = GDALCreate(driver, path.c_str(), 0, 0, 0, GDT_Unknown, const_cast<char**>(options));
   if (!ds) throw std::runtime_error("GDAL could not create " + path);
-  const auto layer = [&](const char* name) {
-    OGRLayerH l = GDALDatasetGetLayerByName(ds, name);
-    if (!l) throw std::runtime_error(std::string("the S57 writer has no layer ") + name);
-    return l;
-  };
-  const auto setInt = [](OGRFeatureH f, const char* field, int v) {
-    const int i = OGR_F_GetFieldIndex(f, field);
-    if (i < 0) throw std::runtime_error(std::string("the S57 writer has no field ") + field);
-    OGR_F_SetFieldInteger(f, i, v);
-  };
-  const auto setList = [](OGRFeatureH f, const char* field, const std::vector<int>& v) {
-    const int i = OGR_F_GetFieldIndex(f, field);
-    if (i < 0) throw std::runtime_error(std::string("the S57 writer has no field ") + field);
-    OGR_F_SetFieldIntegerList(f, i, static_cast<int>(v.size()), v.data());
-  };
+  return ds;
+}
 
-  // Connected nodes, then edges (interior vertices only: the end points are their nodes).
-  OGRLayerH vc = layer("ConnectedNode");
+/// Connected nodes, then edges (interior vertices only: the end points are their nodes).
+void Chart::writeTopology(const S57Writer& w) const {
+  OGRLayerH vc = w.layer("ConnectedNode");
   for (const auto& [key, idp] : nodes_) {
     OGRFeatureH f = OGR_F_Create(OGR_L_GetLayerDefn(vc));
-    setInt(f, "RCNM", 120);
-    setInt(f, "RCID", idp.first);
+    S57Writer::setInt(f, "RCNM", 120);
+    S57Writer::setInt(f, "RCID", idp.first);
     OGRGeometryH g = OGR_G_CreateGeometry(wkbPoint);
     OGR_G_SetPoint_2D(g, 0, lonOf(idp.second), latOf(idp.second));
     OGR_F_SetGeometryDirectly(f, g);
     check(OGR_L_CreateFeature(vc, f), "a connected node");
     OGR_F_Destroy(f);
   }
-  OGRLayerH ve = layer("Edge");
+  OGRLayerH ve = w.layer("Edge");
   for (const auto& e : edges_) {
     OGRFeatureH f = OGR_F_Create(OGR_L_GetLayerDefn(ve));
-    setInt(f, "RCNM", 130);
-    setInt(f, "RCID", e.id);
+    S57Writer::setInt(f, "RCNM", 130);
+    S57Writer::setInt(f, "RCID", e.id);
     OGRGeometryH g = OGR_G_CreateGeometry(wkbLineString);
     for (std::size_t i = 1; i + 1 < e.pts.size(); ++i) OGR_G_AddPoint_2D(g, lonOf(e.pts[i]), latOf(e.pts[i]));
     OGR_F_SetGeometryDirectly(f, g);
     for (int k = 0; k < 2; ++k) {
       const std::string s = cat("_", std::to_string(k));
-      setInt(f, cat("NAME_RCNM", s).c_str(), 120);
-      setInt(f, cat("NAME_RCID", s).c_str(), k == 0 ? e.beginNode : e.endNode);
-      setInt(f, cat("ORNT", s).c_str(), 255);
-      setInt(f, cat("USAG", s).c_str(), 255);
-      setInt(f, cat("TOPI", s).c_str(), k == 0 ? 1 : 2);
-      setInt(f, cat("MASK", s).c_str(), 255);
+      S57Writer::setInt(f, cat("NAME_RCNM", s).c_str(), 120);
+      S57Writer::setInt(f, cat("NAME_RCID", s).c_str(), k == 0 ? e.beginNode : e.endNode);
+      S57Writer::setInt(f, cat("ORNT", s).c_str(), 255);
+      S57Writer::setInt(f, cat("USAG", s).c_str(), 255);
+      S57Writer::setInt(f, cat("TOPI", s).c_str(), k == 0 ? 1 : 2);
+      S57Writer::setInt(f, cat("MASK", s).c_str(), 255);
     }
     check(OGR_L_CreateFeature(ve, f), "an edge");
     OGR_F_Destroy(f);
   }
+}
 
-  // Isolated nodes for the point features and the soundings, then the features.
+/// A point feature's isolated node (a point, or the sounding array as one 3-D multipoint) with the
+/// given id; the feature's pointer to it.
+SpatialPointers writeIsolatedNode(const S57Writer& w, const Feature& feat, int id) {
+  OGRLayerH vi = w.layer("IsolatedNode");
+  OGRFeatureH n = OGR_F_Create(OGR_L_GetLayerDefn(vi));
+  S57Writer::setInt(n, "RCNM", 110);
+  S57Writer::setInt(n, "RCID", id);
+  OGRGeometryH g;
+  if (!feat.soundings.empty()) {
+    g = OGR_G_CreateGeometry(wkbMultiPoint25D);
+    for (const auto& [p, depth] : feat.soundings) {
+      OGRGeometryH pt = OGR_G_CreateGeometry(wkbPoint25D);
+      OGR_G_SetPoint(pt, 0, lonOf(p), latOf(p), depth);
+      OGR_G_AddGeometryDirectly(g, pt);
+    }
+  } else {
+    g = OGR_G_CreateGeometry(wkbPoint);
+    OGR_G_SetPoint_2D(g, 0, lonOf(*feat.point), latOf(*feat.point));
+  }
+  OGR_F_SetGeometryDirectly(n, g);
+  check(OGR_L_CreateFeature(vi, n), "an isolated node");
+  OGR_F_Destroy(n);
+  return {{110}, {id}, {255}, {255}, {255}};
+}
+
+/// A line or area feature's pointers to its edges (usage only for areas: exterior or interior ring).
+SpatialPointers edgePointers(const Feature& feat) {
+  SpatialPointers sp;
+  for (const auto& r : feat.edges) {
+    sp.rcnm.push_back(130);
+    sp.ids.push_back(r.edge);
+    sp.ornt.push_back(r.reversed ? 2 : 1);
+    sp.usag.push_back(feat.prim == 3 ? r.usage : 255);
+    sp.mask.push_back(255);
+  }
+  return sp;
+}
+
+/// The feature record: identity, object class, pointers and attributes (a list attribute split at commas).
+void writeFeature(const S57Writer& w, const Feature& feat, int rcid, int objectCode,
+                  const SpatialPointers& sp) {
+  OGRLayerH l = w.layer(feat.cls.c_str());
+  OGRFeatureH f = OGR_F_Create(OGR_L_GetLayerDefn(l));
+  S57Writer::setInt(f, "RCID", rcid);
+  S57Writer::setInt(f, "PRIM", feat.prim);
+  const bool skinOfEarth = feat.cls == "DEPARE" || feat.cls == "LNDARE" || feat.cls == "DRGARE" ||
+                           feat.cls == "UNSARE" || feat.cls == "PONTON" || feat.cls == "HULKES";
+  S57Writer::setInt(f, "GRUP", skinOfEarth ? 1 : 2);
+  S57Writer::setInt(f, "OBJL", objectCode);
+  S57Writer::setInt(f, "AGEN", 0);
+  S57Writer::setInt(f, "FIDN", rcid);
+  S57Writer::setInt(f, "FIDS", 1);
+  S57Writer::setList(f, "NAME_RCNM", sp.rcnm);
+  S57Writer::setList(f, "NAME_RCID", sp.ids);
+  S57Writer::setList(f, "ORNT", sp.ornt);
+  S57Writer::setList(f, "USAG", sp.usag);
+  S57Writer::setList(f, "MASK", sp.mask);
+  for (const auto& a : feat.attrs) {
+    const int i = OGR_F_GetFieldIndex(f, a.acronym.c_str());
+    if (i < 0) throw std::runtime_error(feat.cls + " has no attribute " + a.acronym);
+    if (OGR_Fld_GetType(OGR_F_GetFieldDefnRef(f, i)) == OFTStringList) {
+      char** list = CSLTokenizeString2(a.value.c_str(), ",", 0);
+      OGR_F_SetFieldStringList(f, i, list);
+      CSLDestroy(list);
+    } else {
+      OGR_F_SetFieldString(f, i, a.value.c_str());
+    }
+  }
+  check(OGR_L_CreateFeature(l, f), "feature " + feat.cls);
+  OGR_F_Destroy(f);
+}
+
+void Chart::write(const std::string& path) const {
+  int isolatedNodes = 0, meta = 0;
+  for (const auto& f : features_) {
+    isolatedNodes += f.prim == 1 ? 1 : 0;
+    meta += f.cls.rfind("M_", 0) == 0 ? 1 : 0;
+  }
+  GDALDatasetH ds = createCell(path, isolatedNodes, nodes_.size(), edges_.size(), meta, features_.size());
+  const S57Writer w(ds);
+  writeTopology(w);
+  // Isolated nodes for the point features and the soundings, each before its feature.
   const auto codes = objectCodes();
-  OGRLayerH vi = layer("IsolatedNode");
   int isolated = 0, rcid = 0;
   for (const auto& feat : features_) {
     ++rcid;
-    std::vector<int> rcnm, ids, ornt, usag, mask;
-    if (feat.prim == 1) {
-      OGRFeatureH n = OGR_F_Create(OGR_L_GetLayerDefn(vi));
-      setInt(n, "RCNM", 110);
-      setInt(n, "RCID", ++isolated);
-      OGRGeometryH g;
-      if (!feat.soundings.empty()) {
-        g = OGR_G_CreateGeometry(wkbMultiPoint25D);
-        for (const auto& [p, depth] : feat.soundings) {
-          OGRGeometryH pt = OGR_G_CreateGeometry(wkbPoint25D);
-          OGR_G_SetPoint(pt, 0, lonOf(p), latOf(p), depth);
-          OGR_G_AddGeometryDirectly(g, pt);
-        }
-      } else {
-        g = OGR_G_CreateGeometry(wkbPoint);
-        OGR_G_SetPoint_2D(g, 0, lonOf(*feat.point), latOf(*feat.point));
-      }
-      OGR_F_SetGeometryDirectly(n, g);
-      check(OGR_L_CreateFeature(vi, n), "an isolated node");
-      OGR_F_Destroy(n);
-      rcnm = {110};
-      ids = {isolated};
-      ornt = {255};
-      usag = {255};
-      mask = {255};
-    } else {
-      for (const auto& r : feat.edges) {
-        rcnm.push_back(130);
-        ids.push_back(r.edge);
-        ornt.push_back(r.reversed ? 2 : 1);
-        usag.push_back(feat.prim == 3 ? r.usage : 255);
-        mask.push_back(255);
-      }
-    }
-    OGRLayerH l = layer(feat.cls.c_str());
-    OGRFeatureH f = OGR_F_Create(OGR_L_GetLayerDefn(l));
     const auto code = codes.find(feat.cls);
+    const SpatialPointers sp = feat.prim == 1 ? writeIsolatedNode(w, feat, ++isolated) : edgePointers(feat);
     if (code == codes.end()) throw std::runtime_error("unknown object class " + feat.cls);
-    setInt(f, "RCID", rcid);
-    setInt(f, "PRIM", feat.prim);
-    const bool skinOfEarth = feat.cls == "DEPARE" || feat.cls == "LNDARE" || feat.cls == "DRGARE" ||
-                             feat.cls == "UNSARE" || feat.cls == "PONTON" || feat.cls == "HULKES";
-    setInt(f, "GRUP", skinOfEarth ? 1 : 2);
-    setInt(f, "OBJL", code->second);
-    setInt(f, "AGEN", 0);
-    setInt(f, "FIDN", rcid);
-    setInt(f, "FIDS", 1);
-    setList(f, "NAME_RCNM", rcnm);
-    setList(f, "NAME_RCID", ids);
-    setList(f, "ORNT", ornt);
-    setList(f, "USAG", usag);
-    setList(f, "MASK", mask);
-    for (const auto& a : feat.attrs) {
-      const int i = OGR_F_GetFieldIndex(f, a.acronym.c_str());
-      if (i < 0) throw std::runtime_error(feat.cls + " has no attribute " + a.acronym);
-      if (OGR_Fld_GetType(OGR_F_GetFieldDefnRef(f, i)) == OFTStringList) {
-        char** list = CSLTokenizeString2(a.value.c_str(), ",", 0);
-        OGR_F_SetFieldStringList(f, i, list);
-        CSLDestroy(list);
-      } else {
-        OGR_F_SetFieldString(f, i, a.value.c_str());
-      }
-    }
-    check(OGR_L_CreateFeature(l, f), "feature " + feat.cls);
-    OGR_F_Destroy(f);
+    writeFeature(w, feat, rcid, code->second, sp);
   }
   GDALClose(ds);
 }
@@ -359,8 +398,16 @@ std::string num(double v) {
 }
 
 // ---- the harbour
-Chart author() {
-  Chart c;
+/// The coast and the depth contours as curves across the cell, and the cell's boundary cut where they meet
+/// it.
+struct Frame {
+  std::vector<int> curves;      // curves[0]: the coast; curves[k]: the contour of kContours[k - 1]
+  std::vector<int> west, east;  // west[k]: from curve k - 1 to curve k (k = 0: from the bottom corner)
+  int bottom = 0, top = 0;
+};
+
+Frame authorFrame(Chart& c) {
+  Frame fr;
   // Curves sampled every 100 m from the west edge of the cell to the east edge.
   const auto curve = [](double offsetKm) {
     std::vector<P> pts;
@@ -372,21 +419,28 @@ Chart author() {
   };
   std::vector<double> offsets{0.0};
   for (double d : kContours) offsets.push_back(distanceOfDepth(d));
-  std::vector<int> curves;
-  for (double o : offsets) curves.push_back(c.edge(curve(o)));
+  fr.curves.reserve(offsets.size());
+  for (double o : offsets) fr.curves.push_back(c.edge(curve(o)));
   // The cell boundary, cut where the curves meet it: west side bottom-up, east side bottom-up.
-  std::vector<int> west, east;  // west[k]: from curve k to curve k+1 (k = -1: the bottom corner)
   const auto side = [&](double x, std::vector<int>& out) {
     std::vector<P> stops{{x, kYMin}};
     for (double o : offsets) stops.push_back({x, coastY(x) + o});
     stops.push_back({x, kYMax});
     for (std::size_t i = 0; i + 1 < stops.size(); ++i) out.push_back(c.edge({stops[i], stops[i + 1]}));
   };
-  side(kXMin, west);
-  side(kXMax, east);
-  const int bottom = c.edge({{kXMin, kYMin}, {kXMax, kYMin}});
-  const int top = c.edge({{kXMin, kYMax}, {kXMax, kYMax}});
+  side(kXMin, fr.west);
+  side(kXMax, fr.east);
+  fr.bottom = c.edge({{kXMin, kYMin}, {kXMax, kYMin}});
+  fr.top = c.edge({{kXMin, kYMax}, {kXMax, kYMax}});
+  return fr;
+}
 
+/// Coverage, marks system, the mainland and its coast, the depth areas and contours, and the islands.
+void authorSeabed(Chart& c, const Frame& fr) {
+  const std::vector<int>& curves = fr.curves;
+  const std::vector<int>& west = fr.west;
+  const std::vector<int>& east = fr.east;
+  const int bottom = fr.bottom, top = fr.top;
   // Coverage and the navigational system of marks (IALA A).
   {
     Feature& f = c.add("M_COVR", 3, {{"CATCOV", "1"}});
@@ -436,6 +490,10 @@ Chart author() {
     c.add("DEPCNT", 2, {{"VALDCO", "10.0"}}).edges = {{ten, false, 255}};
     c.add("DEPCNT", 2, {{"VALDCO", "30.0"}}).edges = {{islandOuter[i], false, 255}};
   }
+}
+
+/// Named places and built structures: a landmark, a region, the sea area, the port, the breakwater.
+void authorPlaces(Chart& c) {
   c.point("LNDMRK", {-4.0, 3.2}, {{"CATLMK", "17"}, {"CONVIS", "1"}, {"OBJNAM", "Gannet Island Tower"}});
   c.point("LNDRGN", {-5.5, -4.6}, {{"OBJNAM", "Reckoner Point"}});
   c.add("SEAARE", 3, {{"OBJNAM", "Reckoner Sound (fictional)"}}).edges =
@@ -448,7 +506,10 @@ Chart author() {
     c.add("SLCONS", 2, {{"CATSLC", "1"}, {"OBJNAM", "East Breakwater"}}).edges = {
         {c.edge({root, {1.6, root.y + 0.45}, {1.25, root.y + 0.6}}), false, 255}};
   }
+}
 
+/// The buoyed channel into the bay, its fairway buoy and the headland lighthouse with its sectors.
+void authorChannel(Chart& c) {
   // The buoyed channel into the bay (IALA A, entering southwards: red cans to port, on the east side: CATLAM
   // 1, port-hand; green cones CATLAM 2, starboard-hand).
   c.add("FAIRWY", 3, {{"OBJNAM", "Sound Channel"}, {"ORIENT", "180"}}).edges =
@@ -494,6 +555,10 @@ Chart author() {
                {"VALNMR", s[3]},
                {"OBJNAM", "Reckoner Head"}});
   }
+}
+
+/// Dangers with their marks, and the regulated areas: restricted, anchorage, traffic separation.
+void authorDangersAndAreas(Chart& c) {
   // A dangerous wreck with a north cardinal buoy; an obstruction under an isolated-danger buoy; a rock.
   c.point("WRECKS", {2.8, 1.8}, {{"CATWRK", "2"}, {"VALSOU", "4.2"}, {"WATLEV", "3"}});
   c.point(
@@ -524,8 +589,10 @@ Chart author() {
       c.polygon({{-7.5, 5.35}, {7.5, 5.35}, {7.5, 5.85}, {-7.5, 5.85}});
   c.add("TSSBND", 2, {}).edges = {{c.edge({{-7.5, 4.6}, {7.5, 4.6}}), false, 255}};
   c.add("TSSBND", 2, {}).edges = {{c.edge({{-7.5, 5.85}, {7.5, 5.85}}), false, 255}};
+}
 
-  // Soundings: a 600 m grid, nudged so the figures do not line up, where the water is deeper than 0.5 m.
+/// Soundings: a 600 m grid, nudged so the figures do not line up, where the water is deeper than 0.5 m.
+void authorSoundings(Chart& c) {
   {
     Feature& s = c.point("SOUNDG", {0, 0}, {});
     for (int i = 0; i < 27; ++i)
@@ -538,6 +605,16 @@ Chart author() {
       }
     s.point.reset();
   }
+}
+
+Chart author() {
+  Chart c;
+  const Frame fr = authorFrame(c);
+  authorSeabed(c, fr);
+  authorPlaces(c);
+  authorChannel(c);
+  authorDangersAndAreas(c);
+  authorSoundings(c);
   return c;
 }
 

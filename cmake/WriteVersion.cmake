@@ -43,10 +43,21 @@ if(describe)
   else()
     set(describe_clean "${describe}")
   endif()
+  # A describe of digits and dots is a tag at HEAD only if such a tag exists: with no tag reachable,
+  # --always gives the abbreviated hash, and about one hash in 27 is all decimal digits.
+  set(tag_at_head "")
+  if(describe_clean MATCHES "^v?([0-9]+(\\.[0-9]+)*)$")
+    set(tag_version "${CMAKE_MATCH_1}")
+    execute_process(COMMAND "${GIT}" -C "${SOURCE_DIR}" rev-parse -q --verify "refs/tags/${describe_clean}"
+                    RESULT_VARIABLE not_a_tag OUTPUT_QUIET ERROR_QUIET)
+    if(NOT not_a_tag)
+      set(tag_at_head "${tag_version}")
+    endif()
+  endif()
   if(describe_clean MATCHES "^v?([0-9]+(\\.[0-9]+)*)-([0-9]+)-g([0-9a-f]+)$")
     set(version "${CMAKE_MATCH_1}+git${CMAKE_MATCH_3}.g${CMAKE_MATCH_4}${dirty}")
-  elseif(describe_clean MATCHES "^v?([0-9]+(\\.[0-9]+)*)$")
-    set(version "${CMAKE_MATCH_1}${dirty}")
+  elseif(tag_at_head)
+    set(version "${tag_at_head}${dirty}")
   else()
     # No tag (--always gave the abbreviated hash) or a tag that is no version: PROJECT_VERSION, the
     # number of commits (so later snapshots sort later) and the hash.

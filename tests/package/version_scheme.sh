@@ -57,6 +57,26 @@ v4=$(version_of "$repo")
 expect "1 commit after v9.1.0" "$v4" "9.1.0+git1.g$(git rev-parse --short HEAD)"
 later "$v3" "$v4"
 
+# No tag and an abbreviated hash of decimal digits only (about one commit in 27): still a snapshot of
+# PROJECT_VERSION, not a "version" made of the hash (this test failed on such a hash, 2026-12-05). The
+# commit is remade with fixed dates and a counter in its message until its hash is all digits, so the
+# same commit is found on every run.
+digits=$tmp/digits
+git init -q "$digits"
+(
+  cd "$digits"
+  export GIT_AUTHOR_DATE='2026-12-05T00:00:00Z' GIT_COMMITTER_DATE='2026-12-05T00:00:00Z'
+  echo a >file && git add file && git commit -qm "digits 0"
+  n=0
+  until [[ $(git rev-parse --short HEAD) =~ ^[0-9]+$ ]]; do
+    n=$((n + 1))
+    [ "$n" -le 5000 ] || fail "no all-digit hash in 5000 commits"
+    git commit -q --amend -m "digits $n"
+  done
+)
+hd=$(git -C "$digits" rev-parse --short HEAD)
+expect "no tag, all-digit hash $hd" "$(version_of "$digits")" "$project_version+git1.g$hd"
+
 mkdir -p "$tmp/tarball" "$repo/sub"
 expect "no git (a tarball)" "$(version_of "$tmp/tarball")" "$project_version"
 expect "inside another project's work tree" "$(version_of "$repo/sub")" "$project_version"

@@ -1,5 +1,6 @@
 #include "files/voyage_record.h"
 
+#include <cstdint>
 #include <cstdlib>
 
 #include "files/sqlite_db.h"
@@ -33,6 +34,13 @@ const std::string& VoyageRecord::path() const {
 }
 
 namespace {
+/// |a - b| for any two int64 (a record of another making can hold utc_us = INT64_MIN: fuzz_voyage_record
+/// found `utc - a` overflowing in estimateNear).
+std::uint64_t distance(std::int64_t a, std::int64_t b) {
+  const auto ua = static_cast<std::uint64_t>(a), ub = static_cast<std::uint64_t>(b);
+  return a >= b ? ua - ub : ub - ua;
+}
+
 std::optional<std::int64_t> integerOf(const std::map<std::string, std::string>& m, const std::string& key) {
   const auto it = m.find(key);
   if (it == m.end() || it->second.empty()) return std::nullopt;
@@ -131,7 +139,7 @@ std::int64_t VoyageRecord::inputSeqAt(UtcUs utc) const {
   // seek lands on one of the places the time is passed.
   sqlite::Statement range(*db_, "SELECT min(seq), max(seq) FROM inputs");
   if (!range.step() || range.isNull(0)) return 0;
-  std::int64_t lo = range.integer(0), hi = range.integer(1) + 1;  // the answer is in [lo, hi]
+  const std::int64_t first = range.integer(0), last = range.integer(1);
   sqlite::Statement at(*db_, "SELECT rx_utc_us FROM inputs WHERE seq >= ?1 ORDER BY seq LIMIT 1");
   const auto rxAt = [&at](std::int64_t seq) {
     at.bind(1, seq);
@@ -139,15 +147,23 @@ std::int64_t VoyageRecord::inputSeqAt(UtcUs utc) const {
     at.reset();
     return rx;
   };
-  const std::int64_t end = hi;
-  while (lo < hi) {
-    const std::int64_t mid = lo + (hi - lo) / 2;
-    if (rxAt(mid) < utc)
+  // The first seq in [first, last] whose input is received at utc or later, 0 when there is none. The
+  // bounds are any int64 a file of another making holds (max(seq) + 1 overflowed for a seq of INT64_MAX,
+  // found by reading after fuzz_voyage_record's find in estimateNear): no step below overflows.
+  std::int64_t lo = first, hi = last, found = 0;
+  while (lo <= hi) {
+    const std::int64_t mid =
+        lo + static_cast<std::int64_t>((static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo)) / 2);
+    if (rxAt(mid) < utc) {
+      if (mid == last) break;
       lo = mid + 1;
-    else
-      hi = mid;
+    } else {
+      found = mid;
+      if (mid == first) break;
+      hi = mid - 1;
+    }
   }
-  return lo == end ? 0 : lo;
+  return found;
 }
 
 void VoyageRecord::forEachBatch(
@@ -195,7 +211,7 @@ std::optional<sim::ReplayOwnRow> VoyageRecord::estimateNear(UtcUs utc) const {
   std::optional<sim::ReplayOwnRow> a, b;
   if (before.step()) a = voyage::readOwnRow(before);
   if (after.step()) b = voyage::readOwnRow(after);
-  if (a && b) return utc - a->utcUs <= b->utcUs - utc ? a : b;
+  if (a && b) return distance(utc, a->utcUs) <= distance(b->utcUs, utc) ? a : b;
   return a ? a : b;
 }
 

@@ -9,6 +9,7 @@
 #include <sqlite3.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -395,14 +396,62 @@ class TestVoyageRecord : public QObject {
         b.tracks.push_back(row);
         b.trackUtc.push_back(t);
       }
-      rec.batch(std::vector<files::InputLine>{{"nmea1", "$GPRMC", t, false}}, b, {}, t, kDay + k * 1000);
+      rec.batch(std::vector<files::InputLine>{{"nmea1", "$GPRMC", t, false}}, b, {}, t,
+                kDay + std::int64_t{k} * 1000);
       mostRemembered = std::max(mostRemembered, rec.rememberedTracks());
     }
-    rec.finish({}, {}, kDay + 1800 * 1000);
+    rec.finish({}, {}, kDay + std::int64_t{1800} * 1000);
     // THEN it remembers the tracks of the last two or three minutes, not all 1800 (the soak's memory)
     QVERIFY2(mostRemembered <= 190, qPrintable(QString::number(mostRemembered)));
     QCOMPARE(rec.lines(), std::int64_t{1800});
   }
+  void seeksAtTheEndsOfTimeAreExact() {
+    // Found by fuzz_voyage_record: a record of another making with an own-ship row at utc_us =
+    // INT64_MIN made estimateNear compute utc - INT64_MIN (signed overflow: UBSan's report; in a release
+    // build the wrapped difference chose the far row). By reading: max(seq) = INT64_MAX overflowed the
+    // input seek's bound.
+    if (good_.empty()) QSKIP("needs the record of the first test");
+    const std::string path = dir_.path().toStdString() + "/ends-of-time.sqlite";
+    copyFile(good_, path);
+    // GIVEN two own-ship rows, one at the start of int64 time and one a microsecond after `at`; and the
+    // last input at seq INT64_MAX
+    const UtcUs at = kDay + 600 * kMicrosPerSecond;
+    sql(path,
+        "DELETE FROM ownship WHERE seq NOT IN (SELECT min(seq) FROM ownship UNION SELECT max(seq) FROM "
+        "ownship); UPDATE ownship SET utc_us = -9223372036854775808 WHERE seq = (SELECT min(seq) FROM "
+        "ownship); UPDATE ownship SET utc_us = " +
+            std::to_string(at + 1) +
+            " WHERE seq = (SELECT max(seq) FROM ownship); UPDATE inputs SET seq = 9223372036854775807 "
+            "WHERE seq = (SELECT max(seq) FROM inputs)");
+    const files::VoyageRecord rec(path);
+    // WHEN the estimate nearest `at` is asked THEN it is the row a microsecond away
+    const auto near = rec.estimateNear(at);
+    QVERIFY(near);
+    QCOMPARE(near->utcUs, at + 1);
+    QCOMPARE(rec.estimateNear(INT64_MIN)->utcUs, INT64_MIN);
+    QCOMPARE(rec.estimateNear(INT64_MAX)->utcUs, at + 1);
+    // AND the input seek finds the first input, the last (at INT64_MAX) or none, without overflow
+    sqlite3* db = nullptr;
+    QCOMPARE(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+    sqlite3_stmt* q = nullptr;
+    sqlite3_prepare_v2(db, "SELECT min(seq), rx_utc_us FROM inputs", -1, &q, nullptr);
+    QCOMPARE(sqlite3_step(q), SQLITE_ROW);
+    const std::int64_t firstSeq = sqlite3_column_int64(q, 0);
+    sqlite3_finalize(q);
+    sqlite3_prepare_v2(db, "SELECT rx_utc_us FROM inputs WHERE seq = 9223372036854775807", -1, &q, nullptr);
+    QCOMPARE(sqlite3_step(q), SQLITE_ROW);
+    const UtcUs lastRx = sqlite3_column_int64(q, 0);
+    sqlite3_finalize(q);
+    sqlite3_close(db);
+    QCOMPARE(rec.inputSeqAt(INT64_MIN), firstSeq);
+    // (a seek is a seq bound: the pages from it start at the first input received at lastRx)
+    const std::int64_t lastBatch = rec.inputSeqAt(lastRx);
+    QVERIFY(lastBatch > firstSeq);
+    QCOMPARE(rec.inputs(lastBatch - 1, 1).front().receivedUtc, lastRx);
+    QCOMPARE(rec.inputSeqAt(lastRx + 1), std::int64_t{0});
+    QCOMPARE(rec.inputSeqAt(INT64_MAX), std::int64_t{0});
+  }
+
   void badFilesAreOneErrorNamingTheFile_data() {
     QTest::addColumn<QString>("kind");
     QTest::addColumn<QString>("expected");

@@ -116,19 +116,30 @@ struct Plot {
   double rangeM, bearingDeg;
   std::string id;
 };
-}  // namespace
 
-int runArpa(const ArpaOptions& o) {
-  ensureDirectory(o.outDir);
-  Rng params = makeRng(o.seed, Stream::Params);
-  Rng targetRng = makeRng(o.seed, Stream::Targets);
-  Rng manoeuvreRng = makeRng(o.seed, Stream::Manoeuvre);
+/// Own ship: constant heading and speed through the water in a constant current.
+struct OwnShip {
+  LatLon start;
+  double headingDeg = 0.0, stwMps = 0.0;
+  Enu currentMps = Enu::Zero(), velocityMps = Enu::Zero();
+  double sogMps = 0.0, cogDeg = 0.0;
+  [[nodiscard]] LatLon at(double tS) const { return rhumbDirect(start, cogDeg, sogMps * tS); }
+};
 
-  // ---- Own ship: constant heading and speed through the water in a constant current ----
-  const LatLon start{47.6 + params.uniform(-0.1, 0.1), -122.4 + params.uniform(-0.1, 0.1)};
-  const double headingDeg = params.uniform(0.0, 360.0);
-  const double stwMps = params.uniform(5.0, 25.0) * kMpsPerKnot;
-  const Enu currentMps = enuFromPolar(kCurrentMps, params.uniform(0.0, 360.0));
+OwnShip drawOwnShip(Rng& params) {
+  OwnShip own;
+  own.start = LatLon{47.6 + params.uniform(-0.1, 0.1), -122.4 + params.uniform(-0.1, 0.1)};
+  own.headingDeg = params.uniform(0.0, 360.0);
+  own.stwMps = params.uniform(5.0, 25.0) * kMpsPerKnot;
+  own.currentMps = enuFromPolar(kCurrentMps, params.uniform(0.0, 360.0));
+  own.velocityMps = enuFromPolar(own.stwMps, own.headingDeg) + own.currentMps;
+  own.sogMps = own.velocityMps.norm();
+  own.cogDeg = azimuthDegOf(own.velocityMps);
+  return own;
+}
+
+/// Own ship's sensors at the A.823 calibration errors (the draws after own ship's, same stream).
+SensorModel drawSensorModel(Rng& params) {
   SensorModel model;
   model.gnssWhiteSdM = params.uniform(3.0, 5.0);
   model.gyroBiasDeg = 0.5 * params.sign();  // A.823: gyro calibration error 0.5 deg
@@ -136,23 +147,16 @@ int runArpa(const ArpaOptions& o) {
   model.logScale = 0.0;
   model.logOffsetKn = 0.5 * params.sign();  // A.823: log calibration error 0.5 kn
   model.logNoiseSdKn = 0.05;
-  const Enu ownVelocityMps = enuFromPolar(stwMps, headingDeg) + currentMps;
-  const double ownSogMps = ownVelocityMps.norm(), ownCogDeg = azimuthDegOf(ownVelocityMps);
-  auto ownAt = [&](double tS) { return rhumbDirect(start, ownCogDeg, ownSogMps * tS); };
+  return model;
+}
 
-  const UtcClock clock{unixSecondsFromCivil(2026, 6, 15, 10, 0, 0)};
-  const std::int64_t endUs = static_cast<std::int64_t>(std::floor(o.durationS)) * 1000000;
-  std::vector<TruthRow> rows;
-  for (std::int64_t tUs = 0; tUs <= endUs; tUs += 1000000)
-    rows.push_back(TruthRow{tUs, ownAt(static_cast<double>(tUs) * 1e-6), ownSogMps, ownCogDeg, headingDeg,
-                            stwMps, currentMps, true});
-
-  // ---- Targets: geometry drawn at t0 in the tangent plane at own ship's position then
-  // (GeographicLib::LocalCartesian, x east, y north), resampled while implausible. Own ship is at
-  // the plane's origin, where its local velocity is its plane velocity. A target's local course is
-  // the azimuth, at its own position, of its plane velocity (meridians converge: at 11 NM east or west
-  // local north is ~0.2 deg off the plane's, which would move a CPA by hundreds of metres). ----
-  const LatLon ownT0 = ownAt(o.t0S);
+/// Targets: geometry drawn at t0 in the tangent plane at own ship's position then
+/// (GeographicLib::LocalCartesian, x east, y north), resampled while implausible. Own ship is at the
+/// plane's origin, where its local velocity is its plane velocity. A target's local course is the
+/// azimuth, at its own position, of its plane velocity (meridians converge: at 11 NM east or west local
+/// north is ~0.2 deg off the plane's, which would move a CPA by hundreds of metres).
+std::vector<Target> drawTargets(const ArpaOptions& o, const OwnShip& own, Rng& targetRng, Rng& manoeuvreRng) {
+  const LatLon ownT0 = own.at(o.t0S);
   const GeographicLib::LocalCartesian plane(ownT0.latDeg, ownT0.lonDeg, 0.0);
   auto fromPlane = [&](const Enu& p) {
     LatLon q;
@@ -179,7 +183,7 @@ int runArpa(const ArpaOptions& o) {
       t.relCourseDeg = wrapDeg360(t.bearingDeg + 180.0 + side * alphaDeg);
       t.tcpaS = t.rangeNm * kMetresPerNm * std::cos(alphaDeg / kDegPerRad) / (t.relSpeedKn * kMpsPerKnot);
       positionM = enuFromPolar(t.rangeNm * kMetresPerNm, t.bearingDeg);
-      velocityMps = ownVelocityMps + enuFromPolar(t.relSpeedKn * kMpsPerKnot, t.relCourseDeg);
+      velocityMps = own.velocityMps + enuFromPolar(t.relSpeedKn * kMpsPerKnot, t.relCourseDeg);
       if (velocityMps.norm() <= kTargetSpeedMaxKn * kMpsPerKnot) break;
     }
     t.atT0 = fromPlane(positionM);
@@ -195,10 +199,59 @@ int runArpa(const ArpaOptions& o) {
     }
     targets.push_back(t);
   }
+  return targets;
+}
 
-  // ---- Radar plots and the targets' truth at every rotation start ----
-  std::vector<Plot> plots;
-  const double endS = static_cast<double>(endUs) * 1e-6;
+double quantise(double value, double quantum) {
+  return std::round(value / quantum) * quantum;
+}
+
+/// One target's radar plots: a plot each rotation the antenna passes it (bearing-proportional from the
+/// heading marker), with the A.823 errors, the rotation's gyro scatter and the detection probability.
+void addTargetPlots(const ArpaOptions& o, const OwnShip& own, const Target& tg, std::size_t index,
+                    double gyroBiasDeg, const std::vector<double>& sweepScatterDeg, double endS,
+                    std::vector<Plot>& plots) {
+  Rng radarRng = makeRng(o.seed + 0x100000001B3ULL * (index + 1), Stream::Radar);  // one stream per target
+  auto relativeBearing = [&](double tS) {
+    return rangeBearing(own.at(tS), tg.at(o.t0S, tS)).bearingDeg - own.headingDeg;
+  };
+  double unwrappedDeg = wrapDeg360(relativeBearing(0.0));  // continuous along the run
+  for (int n = 0;; ++n) {
+    double tS = kRotationS * (n + unwrappedDeg / 360.0);
+    for (int it = 0; it < 6; ++it) {  // fixed point: contraction for any range over ~20 m
+      const double b = unwrappedDeg + wrapDeg180(relativeBearing(tS) - unwrappedDeg);
+      tS = kRotationS * (n + b / 360.0);
+    }
+    unwrappedDeg += wrapDeg180(relativeBearing(tS) - unwrappedDeg);
+    // Every draw is made for every rotation, detected or not, so the errors of rotation n are fixed.
+    const double detect = radarRng.uniform01();
+    const double glintM = radarRng.uniform(-kGlintHalfLengthM, kGlintHalfLengthM);
+    const double rangeNoiseM = radarRng.normal(kRangeSdM);
+    const double beamNoiseDeg = radarRng.normal(kBeamSdDeg);
+    const double encoderNoiseDeg = radarRng.normal(kEncoderSdDeg);
+    const double backlashDeg = radarRng.uniform(-kBacklashHalfDeg, kBacklashHalfDeg);
+    if (tS > endS) break;
+    if (tS < 0.0) continue;
+    const std::int64_t tUs = std::llround(tS * 1e6);
+    const double exactS = static_cast<double>(tUs) * 1e-6;  // truth at the written time
+    const LatLon reference = offsetEnu(tg.at(o.t0S, exactS), enuFromPolar(glintM, tg.courseAt(exactS)));
+    const RangeBearing rb = rangeBearing(own.at(exactS), reference);
+    const double rangeM = quantise(rb.rangeM + rangeNoiseM, kRangeQuantumM);
+    if (detect >= kDetectionProbability || rb.rangeM > kMaxRangeNm * kMetresPerNm || rangeM < kMinRangeM)
+      continue;
+    const auto rotation =
+        std::min(static_cast<std::size_t>(std::floor(exactS / kRotationS)), sweepScatterDeg.size() - 1);
+    double bearingDeg = quantise(wrapDeg360(rb.bearingDeg + gyroBiasDeg + sweepScatterDeg[rotation] +
+                                            beamNoiseDeg + encoderNoiseDeg + backlashDeg),
+                                 kBearingQuantumDeg);
+    if (bearingDeg >= 360.0 - 0.5 * kBearingQuantumDeg) bearingDeg = 0.0;  // 360.0 is north
+    plots.push_back(Plot{tUs, rangeM, bearingDeg, tg.id});
+  }
+}
+
+/// The radar plots of every target, in time order.
+std::vector<Plot> radarPlots(const ArpaOptions& o, const OwnShip& own, const std::vector<Target>& targets,
+                             double gyroBiasDeg, double endS) {
   // Gyro scatter of every rotation k (from 2.5 k s), drawn up front from its own stream, so it is the
   // same for every target's plots in that rotation and independent of the targets' draws.
   std::vector<double> sweepScatterDeg(static_cast<std::size_t>(std::floor(endS / kRotationS)) + 1);
@@ -206,69 +259,39 @@ int runArpa(const ArpaOptions& o) {
     Rng sweepRng = makeRng(o.seed, Stream::RadarSweep);
     for (double& scatterDeg : sweepScatterDeg) scatterDeg = sweepRng.normal(kGyroScatterSdDeg);
   }
-  auto quantise = [](double value, double quantum) { return std::round(value / quantum) * quantum; };
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    const Target& tg = targets[i];
-    Rng radarRng = makeRng(o.seed + 0x100000001B3ULL * (i + 1), Stream::Radar);  // one stream per target
-    auto relativeBearing = [&](double tS) {
-      return rangeBearing(ownAt(tS), tg.at(o.t0S, tS)).bearingDeg - headingDeg;
-    };
-    double unwrappedDeg = wrapDeg360(relativeBearing(0.0));  // continuous along the run
-    for (int n = 0;; ++n) {
-      double tS = kRotationS * (n + unwrappedDeg / 360.0);
-      for (int it = 0; it < 6; ++it) {  // fixed point: contraction for any range over ~20 m
-        const double b = unwrappedDeg + wrapDeg180(relativeBearing(tS) - unwrappedDeg);
-        tS = kRotationS * (n + b / 360.0);
-      }
-      unwrappedDeg += wrapDeg180(relativeBearing(tS) - unwrappedDeg);
-      // Every draw is made for every rotation, detected or not, so the errors of rotation n are fixed.
-      const double detect = radarRng.uniform01();
-      const double glintM = radarRng.uniform(-kGlintHalfLengthM, kGlintHalfLengthM);
-      const double rangeNoiseM = radarRng.normal(kRangeSdM);
-      const double beamNoiseDeg = radarRng.normal(kBeamSdDeg);
-      const double encoderNoiseDeg = radarRng.normal(kEncoderSdDeg);
-      const double backlashDeg = radarRng.uniform(-kBacklashHalfDeg, kBacklashHalfDeg);
-      if (tS > endS) break;
-      if (tS < 0.0) continue;
-      const std::int64_t tUs = std::llround(tS * 1e6);
-      const double exactS = static_cast<double>(tUs) * 1e-6;  // truth at the written time
-      const LatLon reference = offsetEnu(tg.at(o.t0S, exactS), enuFromPolar(glintM, tg.courseAt(exactS)));
-      const RangeBearing rb = rangeBearing(ownAt(exactS), reference);
-      const double rangeM = quantise(rb.rangeM + rangeNoiseM, kRangeQuantumM);
-      if (detect >= kDetectionProbability || rb.rangeM > kMaxRangeNm * kMetresPerNm || rangeM < kMinRangeM)
-        continue;
-      const auto rotation =
-          std::min(static_cast<std::size_t>(std::floor(exactS / kRotationS)), sweepScatterDeg.size() - 1);
-      double bearingDeg = quantise(wrapDeg360(rb.bearingDeg + model.gyroBiasDeg + sweepScatterDeg[rotation] +
-                                              beamNoiseDeg + encoderNoiseDeg + backlashDeg),
-                                   kBearingQuantumDeg);
-      if (bearingDeg >= 360.0 - 0.5 * kBearingQuantumDeg) bearingDeg = 0.0;  // 360.0 is north
-      plots.push_back(Plot{tUs, rangeM, bearingDeg, tg.id});
-    }
-  }
+  std::vector<Plot> plots;
+  for (std::size_t i = 0; i < targets.size(); ++i)
+    addTargetPlots(o, own, targets[i], i, gyroBiasDeg, sweepScatterDeg, endS, plots);
   std::stable_sort(plots.begin(), plots.end(), [](const Plot& a, const Plot& b) { return a.tUs < b.tUs; });
+  return plots;
+}
 
+std::string radarCsv(const UtcClock& clock, const std::vector<Plot>& plots) {
   std::string radar = "utc,range_m,bearing_deg,target_id\n";
   for (const Plot& p : plots)
     radar += clock.iso(p.tUs, 6) + fmt(",%.2f", p.rangeM) + fmt(",%.4f", p.bearingDeg) + "," + p.id + "\n";
+  return radar;
+}
+
+/// The targets' truth at every rotation start.
+std::string truthTargetsCsv(const UtcClock& clock, const std::vector<Target>& targets, double t0S,
+                            std::int64_t endUs) {
   std::string truthTargets = "utc,t_s,target_id,lat_deg,lon_deg,sog_mps,cog_deg\n";
   for (std::int64_t tUs = 0; tUs <= endUs; tUs += static_cast<std::int64_t>(kRotationS * 1e6)) {
     const double tS = static_cast<double>(tUs) * 1e-6;
     for (const Target& tg : targets) {
-      const LatLon p = tg.at(o.t0S, tS);
+      const LatLon p = tg.at(t0S, tS);
       char buf[160];
       std::snprintf(buf, sizeof buf, ",%.3f,%s,%.9f,%.9f,%.4f,%.4f\n", tS, tg.id.c_str(), p.latDeg, p.lonDeg,
                     tg.sogMps, tg.courseAt(tS));
       truthTargets += clock.iso(tUs, 3) + buf;
     }
   }
+  return truthTargets;
+}
 
-  // ---- Files ----
-  writeTruthCsv(o.outDir + "/truth.csv", clock, rows);
-  writeOwnShipNmea(o.outDir + "/ownship.nmea", clock, rows, model, o.seed);
-  writeTextFile(o.outDir + "/radar.csv", radar);
-  writeTextFile(o.outDir + "/truth_targets.csv", truthTargets);
-
+/// params.json's "targets": each target's drawn geometry, and its turn when it has one.
+std::string targetsJson(const std::vector<Target>& targets) {
   std::string targetText;
   for (const Target& t : targets) {
     char buf[512];
@@ -289,6 +312,13 @@ int runArpa(const ArpaOptions& o) {
     }
     targetText += "}";
   }
+  return targetText;
+}
+
+/// params.json: the run's own ship, current, radar error budget, sensors and targets.
+void writeArpaParams(const ArpaOptions& o, const UtcClock& clock, const OwnShip& own,
+                     const SensorModel& model, const std::vector<Target>& targets, std::size_t plotCount) {
+  const LatLon ownT0 = own.at(o.t0S);
   char head[4096];
   std::snprintf(
       head, sizeof head,
@@ -306,13 +336,40 @@ int runArpa(const ArpaOptions& o) {
       "\"detection_probability\": %.2f, \"glint_uniform_half_length_m\": "
       "%.1f, \"max_range_nm\": %.1f, \"min_range_m\": %.1f, \"plots\": %zu},\n",
       static_cast<unsigned long long>(o.seed), clock.iso(0, 3).c_str(), o.durationS, o.t0S,
-      clock.iso(std::llround(o.t0S * 1e6), 3).c_str(), start.latDeg, start.lonDeg, headingDeg,
-      stwMps / kMpsPerKnot, ownSogMps / kMpsPerKnot, ownCogDeg, ownT0.latDeg, ownT0.lonDeg, kCurrentMps,
-      azimuthDegOf(currentMps), kRotationS, kRangeSdM, kRangeQuantumM, kBeamSdDeg, kEncoderSdDeg,
+      clock.iso(std::llround(o.t0S * 1e6), 3).c_str(), own.start.latDeg, own.start.lonDeg, own.headingDeg,
+      own.stwMps / kMpsPerKnot, own.sogMps / kMpsPerKnot, own.cogDeg, ownT0.latDeg, ownT0.lonDeg, kCurrentMps,
+      azimuthDegOf(own.currentMps), kRotationS, kRangeSdM, kRangeQuantumM, kBeamSdDeg, kEncoderSdDeg,
       std::hypot(kBeamSdDeg, kEncoderSdDeg), kBacklashHalfDeg, kBearingQuantumDeg, model.gyroBiasDeg,
-      kGyroScatterSdDeg, kDetectionProbability, kGlintHalfLengthM, kMaxRangeNm, kMinRangeM, plots.size());
+      kGyroScatterSdDeg, kDetectionProbability, kGlintHalfLengthM, kMaxRangeNm, kMinRangeM, plotCount);
   writeTextFile(o.outDir + "/params.json", std::string(head) + "  \"sensors\": " + sensorModelJson(model) +
-                                               ",\n  \"targets\": [" + targetText + "\n  ]\n}\n");
+                                               ",\n  \"targets\": [" + targetsJson(targets) + "\n  ]\n}\n");
+}
+}  // namespace
+
+int runArpa(const ArpaOptions& o) {
+  ensureDirectory(o.outDir);
+  Rng params = makeRng(o.seed, Stream::Params);
+  Rng targetRng = makeRng(o.seed, Stream::Targets);
+  Rng manoeuvreRng = makeRng(o.seed, Stream::Manoeuvre);
+  const OwnShip own = drawOwnShip(params);
+  const SensorModel model = drawSensorModel(params);
+
+  const UtcClock clock{unixSecondsFromCivil(2026, 6, 15, 10, 0, 0)};
+  const std::int64_t endUs = static_cast<std::int64_t>(std::floor(o.durationS)) * 1000000;
+  std::vector<TruthRow> rows;
+  for (std::int64_t tUs = 0; tUs <= endUs; tUs += 1000000)
+    rows.push_back(TruthRow{tUs, own.at(static_cast<double>(tUs) * 1e-6), own.sogMps, own.cogDeg,
+                            own.headingDeg, own.stwMps, own.currentMps, true});
+  const std::vector<Target> targets = drawTargets(o, own, targetRng, manoeuvreRng);
+  const std::vector<Plot> plots =
+      radarPlots(o, own, targets, model.gyroBiasDeg, static_cast<double>(endUs) * 1e-6);
+
+  // ---- Files ----
+  writeTruthCsv(o.outDir + "/truth.csv", clock, rows);
+  writeOwnShipNmea(o.outDir + "/ownship.nmea", clock, rows, model, o.seed);
+  writeTextFile(o.outDir + "/radar.csv", radarCsv(clock, plots));
+  writeTextFile(o.outDir + "/truth_targets.csv", truthTargetsCsv(clock, targets, o.t0S, endUs));
+  writeArpaParams(o, clock, own, model, targets, plots.size());
   return 0;
 }
 

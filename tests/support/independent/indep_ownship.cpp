@@ -52,6 +52,36 @@ struct Current {
 struct Leg {
   double startS, headingCmdDeg, speedCmdKn;
 };
+
+/// params.json: the run's start, current, motion limits, sensors and legs.
+void writeOwnShipParams(const OwnShipOptions& o, const UtcClock& clock, const LatLon& start,
+                        const Current& current, const SensorModel& model, const std::vector<Leg>& legs) {
+  std::string legText;
+  for (const Leg& leg : legs) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "%s\n    {\"start_s\": %.1f, \"heading_cmd_deg\": %.4f, \"stw_cmd_kn\": %.4f}",
+                  legText.empty() ? "" : ",", leg.startS, leg.headingCmdDeg, leg.speedCmdKn);
+    legText += buf;
+  }
+  char head[1600];
+  std::snprintf(
+      head, sizeof head,
+      "{\n  \"generator\": \"reckoner-indep-sim ownship\",\n  \"seed\": %llu,\n"
+      "  \"start_utc\": \"%s\",\n  \"duration_s\": %.3f,\n"
+      "  \"start_lat_deg\": %.9f,\n  \"start_lon_deg\": %.9f,\n"
+      "  \"speed_min_kn\": %.3f,\n  \"speed_max_kn\": %.3f,\n"
+      "  \"current\": {\"speed_mps\": %.6f, \"set_deg\": %.6f, \"max_mps\": %.3f, "
+      "\"speed_variation_fraction\": %.3f, \"set_variation_deg\": %.3f, \"variation_period_s\": %.1f},\n"
+      "  \"motion\": {\"turn_rate_max_deg_s\": %.2f, \"turn_accel_deg_s2\": %.2f, "
+      "\"accel_max_mps2\": %.3f, \"jerk_mps3\": %.3f, \"integration_hz\": 10},\n",
+      static_cast<unsigned long long>(o.seed), clock.iso(0, 3).c_str(), o.durationS, start.latDeg,
+      start.lonDeg, o.speedMinKn, o.speedMaxKn, current.speedMps, current.setDeg, o.currentMaxMps,
+      current.speedVariation, current.setVariationDeg, kCurrentPeriodS, kTurnRateMaxDegS, kTurnAccelDegS2,
+      kAccelMaxMps2, kJerkMps3);
+  writeTextFile(o.outDir + "/params.json", std::string(head) + "  \"sensors\": " + sensorModelJson(model) +
+                                               ",\n  \"legs\": [" + legText + "\n  ]\n}\n");
+}
 }  // namespace
 
 int runOwnShip(const OwnShipOptions& o) {
@@ -121,31 +151,7 @@ int runOwnShip(const OwnShipOptions& o) {
   writeTruthCsv(o.outDir + "/truth.csv", clock, rows);
   writeOwnShipNmea(o.outDir + "/ownship.nmea", clock, rows, model, o.seed);
 
-  std::string legText;
-  for (const Leg& leg : legs) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf,
-                  "%s\n    {\"start_s\": %.1f, \"heading_cmd_deg\": %.4f, \"stw_cmd_kn\": %.4f}",
-                  legText.empty() ? "" : ",", leg.startS, leg.headingCmdDeg, leg.speedCmdKn);
-    legText += buf;
-  }
-  char head[1600];
-  std::snprintf(
-      head, sizeof head,
-      "{\n  \"generator\": \"reckoner-indep-sim ownship\",\n  \"seed\": %llu,\n"
-      "  \"start_utc\": \"%s\",\n  \"duration_s\": %.3f,\n"
-      "  \"start_lat_deg\": %.9f,\n  \"start_lon_deg\": %.9f,\n"
-      "  \"speed_min_kn\": %.3f,\n  \"speed_max_kn\": %.3f,\n"
-      "  \"current\": {\"speed_mps\": %.6f, \"set_deg\": %.6f, \"max_mps\": %.3f, "
-      "\"speed_variation_fraction\": %.3f, \"set_variation_deg\": %.3f, \"variation_period_s\": %.1f},\n"
-      "  \"motion\": {\"turn_rate_max_deg_s\": %.2f, \"turn_accel_deg_s2\": %.2f, "
-      "\"accel_max_mps2\": %.3f, \"jerk_mps3\": %.3f, \"integration_hz\": 10},\n",
-      static_cast<unsigned long long>(o.seed), clock.iso(0, 3).c_str(), o.durationS, start.latDeg,
-      start.lonDeg, o.speedMinKn, o.speedMaxKn, current.speedMps, current.setDeg, o.currentMaxMps,
-      current.speedVariation, current.setVariationDeg, kCurrentPeriodS, kTurnRateMaxDegS, kTurnAccelDegS2,
-      kAccelMaxMps2, kJerkMps3);
-  writeTextFile(o.outDir + "/params.json", std::string(head) + "  \"sensors\": " + sensorModelJson(model) +
-                                               ",\n  \"legs\": [" + legText + "\n  ]\n}\n");
+  writeOwnShipParams(o, clock, start, current, model, legs);
   return 0;
 }
 

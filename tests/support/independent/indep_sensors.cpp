@@ -62,15 +62,15 @@ void writeOwnShipNmea(const std::string& path, const UtcClock& clock, const std:
       const Enu velocityMps = enuFromPolar(row.sogMps, row.cogDeg) + velocityErrorMps;
       const std::string lat = nmeaLat(fix.latDeg), lon = nmeaLon(fix.lonDeg);
       text += nmeaSentence(
-          "GPRMC," + time + ",A," + lat + "," + lon + "," + fmt("%.3f", velocityMps.norm() / kMpsPerKnot) +
-          "," + fmt("%.2f", azimuthDegOf(velocityMps)) + "," + clock.nmeaDateDdmmyy(row.tUs) + ",,,A");
-      text += nmeaSentence("GPGGA," + time + "," + lat + "," + lon + ",1,10,1.0," + fmt("%.1f", altitudeM) +
-                           ",M,-23.4,M,,");
+          joinFields({"GPRMC", time, "A", lat, lon, fmt("%.3f", velocityMps.norm() / kMpsPerKnot),
+                      fmt("%.2f", azimuthDegOf(velocityMps)), clock.nmeaDateDdmmyy(row.tUs), "", "", "A"}));
+      text += nmeaSentence(joinFields(
+          {"GPGGA", time, lat, lon, "1", "10", "1.0", fmt("%.1f", altitudeM), "M", "-23.4", "M", "", ""}));
       // GST: rms, semi-major sd, semi-minor sd, orientation, lat sd, lon sd, altitude sd (metres).
       const double reportedSdM = model.gnssWhiteSdM / model.gstUnderstates;
       const std::string sd = fmt("%.2f", reportedSdM);
-      text += nmeaSentence("GPGST," + time + ",1.0," + sd + "," + sd + ",0.0," + sd + "," + sd + "," +
-                           fmt("%.2f", 1.5 * reportedSdM));
+      text += nmeaSentence(
+          joinFields({"GPGST", time, "1.0", sd, sd, "0.0", sd, sd, fmt("%.2f", 1.5 * reportedSdM)}));
     }
     if (model.loran) {
       const LatLon fix = offsetEnu(row.pos, loranErrorM);

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <initializer_list>
 #include <random>
 #include <string>
 #include <string_view>
@@ -101,6 +102,8 @@ std::string nmeaSentence(std::string_view body);  // "$" body "*hh\r\n", hh = XO
 std::string nmeaLat(double latDeg);               // "ddmm.mmmmmm,N"
 std::string nmeaLon(double lonDeg);               // "dddmm.mmmmmm,W"
 std::string fmt(const char* format, double value);
+/// The fields joined with commas: the body of an NMEA sentence.
+std::string joinFields(std::initializer_list<std::string> fields);
 
 // ---- Own-ship truth, 1 Hz, as written to truth.csv ----
 struct TruthRow {

@@ -39,7 +39,9 @@ double Rng::uniform01() {
   return static_cast<double>(engine_() >> 11) * 0x1.0p-53;  // 53 random bits -> [0, 1)
 }
 
-double Rng::uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
+double Rng::uniform(double lo, double hi) {
+  return lo + (hi - lo) * uniform01();
+}
 
 double Rng::normal(double sd) {
   if (haveSpare_) {
@@ -56,7 +58,9 @@ double Rng::normal(double sd) {
   return sd * radius * std::cos(angle);
 }
 
-double Rng::sign() { return uniform01() < 0.5 ? -1.0 : 1.0; }
+double Rng::sign() {
+  return uniform01() < 0.5 ? -1.0 : 1.0;
+}
 
 Rng makeRng(std::uint64_t seed, Stream stream) {
   // SplitMix64 finaliser of (seed, stream): well-separated seeds for the streams of one run.
@@ -80,7 +84,7 @@ std::int64_t unixSecondsFromCivil(int year, int month, int day, int hour, int mi
   const std::int64_t doy = (153 * mp + 2) / 5 + day - 1;
   const std::int64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
   const std::int64_t days = era * 146097 + doe - 719468;
-  return days * 86400 + hour * 3600 + minute * 60 + second;
+  return days * 86400 + std::int64_t{hour} * 3600 + std::int64_t{minute} * 60 + second;
 }
 
 namespace {
@@ -91,9 +95,15 @@ struct Civil {
 
 Civil civilFromUnixUs(std::int64_t unixUs) {
   std::int64_t secs = unixUs / 1000000, us = unixUs % 1000000;
-  if (us < 0) { us += 1000000; --secs; }
+  if (us < 0) {
+    us += 1000000;
+    --secs;
+  }
   std::int64_t days = secs / 86400, sod = secs % 86400;
-  if (sod < 0) { sod += 86400; --days; }
+  if (sod < 0) {
+    sod += 86400;
+    --days;
+  }
   const std::int64_t z = days + 719468;
   const std::int64_t era = (z >= 0 ? z : z - 146096) / 146097;
   const std::int64_t doe = z - era * 146097;
@@ -103,8 +113,13 @@ Civil civilFromUnixUs(std::int64_t unixUs) {
   const std::int64_t d = doy - (153 * mp + 2) / 5 + 1;
   const std::int64_t m = mp < 10 ? mp + 3 : mp - 9;
   const std::int64_t y = yoe + era * 400 + (m <= 2 ? 1 : 0);
-  return Civil{static_cast<int>(y), static_cast<int>(m), static_cast<int>(d), static_cast<int>(sod / 3600),
-               static_cast<int>(sod / 60 % 60), static_cast<int>(sod % 60), us};
+  return Civil{static_cast<int>(y),
+               static_cast<int>(m),
+               static_cast<int>(d),
+               static_cast<int>(sod / 3600),
+               static_cast<int>(sod / 60 % 60),
+               static_cast<int>(sod % 60),
+               us};
 }
 }  // namespace
 
@@ -162,8 +177,8 @@ LatLon offsetEnu(const LatLon& from, const Enu& offsetM) {
   const double distanceM = offsetM.norm();
   if (distanceM == 0.0) return from;
   LatLon to;
-  GeographicLib::Geodesic::WGS84().Direct(from.latDeg, from.lonDeg, azimuthDegOf(offsetM), distanceM, to.latDeg,
-                                          to.lonDeg);
+  GeographicLib::Geodesic::WGS84().Direct(from.latDeg, from.lonDeg, azimuthDegOf(offsetM), distanceM,
+                                          to.latDeg, to.lonDeg);
   to.lonDeg = wrapDeg180(to.lonDeg);
   return to;
 }
@@ -194,18 +209,32 @@ std::string degreesMinutes(double absDeg, int degreeDigits) {
   const long long degrees = microMinutes / 60000000LL;
   const long long rest = microMinutes % 60000000LL;
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%0*lld%02lld.%06lld", degreeDigits, degrees, rest / 1000000LL, rest % 1000000LL);
+  std::snprintf(buf, sizeof buf, "%0*lld%02lld.%06lld", degreeDigits, degrees, rest / 1000000LL,
+                rest % 1000000LL);
   return buf;
 }
 }  // namespace
 
-std::string nmeaLat(double latDeg) { return degreesMinutes(std::fabs(latDeg), 2) + (latDeg < 0 ? ",S" : ",N"); }
-std::string nmeaLon(double lonDeg) { return degreesMinutes(std::fabs(lonDeg), 3) + (lonDeg < 0 ? ",W" : ",E"); }
+std::string nmeaLat(double latDeg) {
+  return degreesMinutes(std::fabs(latDeg), 2) + (latDeg < 0 ? ",S" : ",N");
+}
+std::string nmeaLon(double lonDeg) {
+  return degreesMinutes(std::fabs(lonDeg), 3) + (lonDeg < 0 ? ",W" : ",E");
+}
 
 std::string fmt(const char* format, double value) {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, value);
   return buf;
+}
+
+std::string joinFields(std::initializer_list<std::string> fields) {
+  std::string out;
+  for (const std::string& f : fields) {
+    if (&f != fields.begin()) out += ',';
+    out += f;
+  }
+  return out;
 }
 
 // ---- Files ----
@@ -224,12 +253,13 @@ void writeTextFile(const std::string& path, const std::string& text) {
 
 void writeTruthCsv(const std::string& path, const UtcClock& clock, const std::vector<TruthRow>& rows) {
   std::string text =
-      "utc,t_s,lat_deg,lon_deg,sog_mps,cog_deg,heading_deg,stw_mps,current_east_mps,current_north_mps,gps_on\n";
+      "utc,t_s,lat_deg,lon_deg,sog_mps,cog_deg,heading_deg,stw_mps,current_east_mps,current_north_mps,gps_"
+      "on\n";
   for (const TruthRow& r : rows) {
     char buf[256];
     std::snprintf(buf, sizeof buf, ",%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n",
-                  static_cast<double>(r.tUs) * 1e-6, r.pos.latDeg, r.pos.lonDeg, r.sogMps, r.cogDeg, r.headingDeg,
-                  r.stwMps, r.currentMps.x(), r.currentMps.y(), r.gpsOn ? 1 : 0);
+                  static_cast<double>(r.tUs) * 1e-6, r.pos.latDeg, r.pos.lonDeg, r.sogMps, r.cogDeg,
+                  r.headingDeg, r.stwMps, r.currentMps.x(), r.currentMps.y(), r.gpsOn ? 1 : 0);
     text += clock.iso(r.tUs, 3) + buf;
   }
   writeTextFile(path, text);

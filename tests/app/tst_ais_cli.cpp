@@ -42,7 +42,7 @@ struct FieldCompare {
   const QJsonObject& ours;
   int compared = 0;
 
-  void number(const char* theirs, const char* mine, double tol, std::set<double> notAvailable = {},
+  void number(const char* theirs, const char* mine, double tol, const std::set<double>& notAvailable = {},
               double limit = 1e300) {
     if (!gpsd.contains(theirs)) return;
     ++compared;

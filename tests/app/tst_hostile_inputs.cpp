@@ -63,7 +63,7 @@ QByteArray read(const QString& path) {
 }
 
 QString write(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-  const QString path = dir.filePath(name);
+  QString path = dir.filePath(name);
   QFile f(path);
   if (!f.open(QIODevice::WriteOnly)) qFatal("cannot write %s", qPrintable(path));
   f.write(text);

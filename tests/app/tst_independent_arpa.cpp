@@ -155,7 +155,7 @@ std::int64_t timeOfDayUs(int h, int m, const std::string& seconds) {
     frac.resize(6, '0');
     us += std::stoll(frac);
   }
-  return (static_cast<std::int64_t>(h) * 3600 + m * 60) * 1000000 + us;
+  return (static_cast<std::int64_t>(h) * 3600 + static_cast<std::int64_t>(m) * 60) * 1000000 + us;
 }
 
 /// "2026-06-15T10:00:02.050673Z" (any number of fraction digits, up to 6 used).
@@ -751,6 +751,20 @@ void scoreTurns(const QTemporaryDir& dir, int seed, std::vector<TurnOutcome>& ou
   }
 }
 
+/// The five worst of Reckoner's samples in a failed cell, where to start looking.
+void logWorst(const std::vector<Sample>& samples, const std::vector<double>& e) {
+  std::vector<std::size_t> order(samples.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return e[a] > e[b]; });
+  QStringList worst;
+  for (std::size_t i = 0; i < std::min<std::size_t>(5, order.size()); ++i)
+    worst << QString("seed %1 %2: %3")
+                 .arg(samples[order[i]].seed)
+                 .arg(QString::fromStdString(samples[order[i]].target))
+                 .arg(e[order[i]], 0, 'g', 4);
+  qInfo("    worst: %s", qPrintable(worst.join("; ")));
+}
+
 }  // namespace
 
 class TstIndependentArpa : public QObject {
@@ -832,19 +846,7 @@ class TstIndependentArpa : public QObject {
                         .arg(name)
                         .arg(rk, 0, 'g', 4)
                         .arg(bl, 0, 'g', 4);
-      if (!pass || (c.minutes == 3 && !beats)) {  // the worst of Reckoner's samples, to start looking
-        std::vector<std::size_t> order(samples.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        const std::vector<double> e = errors(c, true);
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return e[a] > e[b]; });
-        QStringList worst;
-        for (std::size_t i = 0; i < std::min<std::size_t>(5, order.size()); ++i)
-          worst << QString("seed %1 %2: %3")
-                       .arg(samples[order[i]].seed)
-                       .arg(QString::fromStdString(samples[order[i]].target))
-                       .arg(e[order[i]], 0, 'g', 4);
-        qInfo("    worst: %s", qPrintable(worst.join("; ")));
-      }
+      if (!pass || (c.minutes == 3 && !beats)) logWorst(samples, errors(c, true));
     }
     QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
   }
@@ -875,7 +877,8 @@ class TstIndependentArpa : public QObject {
     }
     const auto within120 = std::count_if(latency.begin(), latency.end(), [](double s) { return s <= 120.0; });
     std::sort(latency.begin(), latency.end());
-    const double medianLatency = latency.empty() ? kInf : latency[latency.size() / 2];
+    double medianLatency = kInf;
+    if (!latency.empty()) medianLatency = latency[latency.size() / 2];
     const double p95Course = courseError.empty() ? kInf : percentile95(courseError);
     qInfo(
         "%zu turning targets: %lld flagged within 120 s of the turn's start (median latency %.1f s), %zu "

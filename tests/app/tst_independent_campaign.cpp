@@ -247,7 +247,7 @@ class TstIndependentCampaign : public QObject {
     }
     std::vector<double> scale = adaptive.noiseScale;
     std::sort(scale.begin(), scale.end());
-    QVERIFY(scale.size() == 2 * kRuns);
+    QVERIFY(scale.size() == 2 * static_cast<std::size_t>(kRuns));
     qInfo(
         "GNSS on, GST understating 3x: RMS error / RMS sd %.2f (%.1f%% within 1.96 sd); adaptive %.2f "
         "(%.1f%%), "

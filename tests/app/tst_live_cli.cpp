@@ -273,7 +273,7 @@ class TestLiveCli : public QObject {
     // WHEN the recording is written burst by burst
     for (const QByteArray& c : chunks_) {
       peer->write(c);
-      if (peer->bytesToWrite() > 64 * 1024) QVERIFY(peer->waitForBytesWritten(kCapMs));
+      if (peer->bytesToWrite() > qint64{64} * 1024) QVERIFY(peer->waitForBytesWritten(kCapMs));
     }
     while (peer->bytesToWrite() > 0) QVERIFY(peer->waitForBytesWritten(kCapMs));
     QVERIFY2(live.waitLines(lineCount(chunks_)), qPrintable(live.lastStatus()));
@@ -503,8 +503,14 @@ class TestLiveCli : public QObject {
     for (std::size_t i = back; i < chunks_.size(); ++i)
       QVERIFY(send(chunks_[i], true, true, i % 8 == 7 || i + 1 == chunks_.size()));
     QCOMPARE(live.interrupt(), 0);
-    // THEN the rows of the gap are dead reckoning (no GNSS among their sensors), those before and after
-    // have the GNSS
+    // THEN the gap is dead reckoning and raised POSITION SOURCE LOST, which the fix coming back rectified
+    gapIsDeadReckoning(out);
+  }
+
+ private:
+  /// The rows of the gap are dead reckoning (no GNSS among their sensors), those before and after have
+  /// the GNSS; the gap raised POSITION SOURCE LOST in alerts.csv, and the fix coming back rectified it.
+  static void gapIsDeadReckoning(const QString& out) {
     test::Csv own;
     QVERIFY(readCsvInto(out + "/ownship.csv", own));
     int before = 0, dr = 0, after = 0;
@@ -519,7 +525,6 @@ class TestLiveCli : public QObject {
     QVERIFY(before > 10);
     QVERIFY(dr >= 4);
     QVERIFY(after > 10);
-    // AND the gap raised POSITION SOURCE LOST in alerts.csv, which the fix coming back rectified
     test::Csv alerts;
     QVERIFY(readCsvInto(out + "/alerts.csv", alerts));
     int raised = 0, rectified = 0;
@@ -533,7 +538,6 @@ class TestLiveCli : public QObject {
     QCOMPARE(rectified, 1);
   }
 
- private:
   QTemporaryDir dir_{QDir::tempPath() + "/tst_live_cli-XXXXXX"};
   std::vector<QByteArray> chunks_;
 };

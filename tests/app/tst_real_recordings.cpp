@@ -149,7 +149,7 @@ class TstRealRecordings : public QObject {
     double err2 = 0, sd2 = 0;
     int inWindow = 0, axesOn = 0, axesWithin = 0;
     for (const auto& row : est.rows) {
-      const std::string utc = est.get(row, "utc");  // YYYY-MM-DDThh:mm:ss.ssssssZ
+      const std::string& utc = est.get(row, "utc");  // YYYY-MM-DDThh:mm:ss.ssssssZ
       const auto tod = timeOfDay(utc.substr(11, 2) + utc.substr(14, 2) + utc.substr(17, 9));
       if (!tod) continue;
       const auto fix = w.fixes.find(key(*tod));

@@ -118,6 +118,29 @@ QByteArray contentsOf(const QString& path) {
   return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
+/// A line sent to the program under test: when (wall clock) and at what time of the stream.
+struct Sent {
+  QByteArray line;
+  UtcUs at;
+  double streamS;
+};
+
+/// How many of the lines were sent at or before t.
+std::size_t linesSentBy(const std::vector<Sent>& sent, UtcUs t) {
+  return static_cast<std::size_t>(
+      std::count_if(sent.begin(), sent.end(), [t](const Sent& s) { return s.at <= t; }));
+}
+
+/// `replay --recording` of a killed program's record computes every recorded estimate again, exactly.
+void replayOfKilledRecordIsExact(const QString& db, const QString& out) {
+  const auto r = runCli({"replay", "--recording", db, "--out", out});
+  QCOMPARE(r.code, 0);
+  QVERIFY2(r.out.contains(QRegularExpression(
+               R"(own-ship rows [1-9]\d+ equal, 0 different, \d+ not recorded, 0 not replayed)")),
+           qPrintable(r.out + r.err));
+  QVERIFY2(r.out.contains("to a stop without an end (killed)"), qPrintable(r.out));
+}
+
 }  // namespace
 
 class TestRecorderCli : public QObject {
@@ -156,11 +179,6 @@ class TestRecorderCli : public QObject {
     QVERIFY(server.waitForNewConnection(kCapMs));
     QTcpSocket* peer = server.nextPendingConnection();
     // WHEN the bursts are sent at the rate's pace, each line's send time noted ...
-    struct Sent {
-      QByteArray line;
-      UtcUs at;
-      double streamS;
-    };
     std::vector<Sent> sent;
     std::size_t next = 0;
     const UtcUs start = wallNow();
@@ -202,10 +220,7 @@ class TestRecorderCli : public QObject {
       worstLatency = std::max(worstLatency, in[k].receivedUtc - sent[k].at);
     }
     // ... with every line sent more than a second before the kill
-    const auto sentBefore = [&](UtcUs t) {
-      return static_cast<std::size_t>(
-          std::count_if(sent.begin(), sent.end(), [t](const Sent& s) { return s.at <= t; }));
-    };
+    const auto sentBefore = [&](UtcUs t) { return linesSentBy(sent, t); };
     QVERIFY2(sentBefore(killedAt - kMicrosPerSecond) <= in.size(),
              qPrintable(QString("%1 lines sent a second before the kill, %2 recorded")
                             .arg(sentBefore(killedAt - kMicrosPerSecond))
@@ -225,12 +240,7 @@ class TestRecorderCli : public QObject {
     QVERIFY(lostWallS <= 1.0);
     QVERIFY(lostStreamS <= std::max(1.0, rate));
     // AND its replay computes every recorded estimate again, exactly
-    const auto r = runCli({"replay", "--recording", db, "--out", dir_.filePath(name + "-replay")});
-    QCOMPARE(r.code, 0);
-    QVERIFY2(r.out.contains(QRegularExpression(
-                 R"(own-ship rows [1-9]\d+ equal, 0 different, \d+ not recorded, 0 not replayed)")),
-             qPrintable(r.out + r.err));
-    QVERIFY2(r.out.contains("to a stop without an end (killed)"), qPrintable(r.out));
+    replayOfKilledRecordIsExact(db, dir_.filePath(name + "-replay"));
   }
 
   void aCompleteRecordingReplaysToTheSameFiles() {

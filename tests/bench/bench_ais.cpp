@@ -79,7 +79,8 @@ void BM_AisTableUpdate2000(benchmark::State& state) {
     io::AisMessage m;
     m.type = 1;
     m.mmsi = 200000000u + static_cast<std::uint32_t>(i);
-    const geo::GeoPoint p = frame.toGeodetic({(i % 50 - 25) * 1400.0, (i / 50 - 20) * 900.0});
+    const int row = i / 50, column = i % 50;  // a 50-wide grid
+    const geo::GeoPoint p = frame.toGeodetic({(column - 25) * 1400.0, (row - 20) * 900.0});
     m.latDeg = p.latDeg;
     m.lonDeg = p.lonDeg;
     m.sogKn = 5.0 + i % 20;
@@ -111,8 +112,9 @@ void BM_AisPaint2000(benchmark::State& state) {
   for (int i = 0; i < 2000; ++i) {
     ui::AisSymbol s;
     s.mmsi = 200000000u + static_cast<std::uint32_t>(i);
-    s.xM = (i % 50) * 380.0 + 200.0;
-    s.yM = (i / 50) * 260.0 + 200.0;
+    const int row = i / 50, column = i % 50;  // a 50-wide grid
+    s.xM = column * 380.0 + 200.0;
+    s.yM = row * 260.0 + 200.0;
     s.headingGridRad = degToRad(i * 37 % 360);
     s.cogGridRad = s.headingGridRad;
     s.sogMps = 2.0 + i % 8;

@@ -221,8 +221,9 @@ void BM_RadarSweep(benchmark::State& state) {
   for (std::size_t i = 0; i < n; ++i) {
     const double x = (static_cast<double>(i % side) - static_cast<double>(side) / 2.0) * 1200.0 +
                      300.0 * rng.uniform() + 600.0;
-    const double y = (static_cast<double>(i / side) - static_cast<double>(side) / 2.0) * 1200.0 +
-                     300.0 * rng.uniform() + 600.0;
+    const std::size_t row = i / side;
+    const double y =
+        (static_cast<double>(row) - static_cast<double>(side) / 2.0) * 1200.0 + 300.0 * rng.uniform() + 600.0;
     targets.push_back({x, y, 8.0 * (rng.uniform() - 0.5), 8.0 * (rng.uniform() - 0.5)});
   }
   const double sdB = degToRad(0.5);
@@ -397,7 +398,7 @@ void BM_EcdisWindow100x40Targets(benchmark::State& state) {
     t.motion.initialVelocityMps = {v * std::sin(c), v * std::cos(c)};
     s.targets.push_back(t);
   }
-  s.durationUs = 4 * 3600 * kMicrosPerSecond;
+  s.durationUs = std::int64_t{4} * 3600 * kMicrosPerSecond;
   ui::MainWindowOptions options;
   options.sound = false;
   options.restoreSession = false;

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -79,9 +80,12 @@ inline sockaddr_in freeLoopbackPort() {
   to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   const int probe = ::socket(AF_INET, SOCK_DGRAM, 0);
   sockaddr_in any = to;
-  ::bind(probe, reinterpret_cast<sockaddr*>(&any), sizeof any);
   socklen_t len = sizeof any;
-  ::getsockname(probe, reinterpret_cast<sockaddr*>(&any), &len);
+  if (probe < 0 || ::bind(probe, reinterpret_cast<sockaddr*>(&any), sizeof any) != 0 ||
+      ::getsockname(probe, reinterpret_cast<sockaddr*>(&any), &len) != 0) {
+    if (probe >= 0) ::close(probe);
+    throw std::runtime_error("no free UDP port on 127.0.0.1");
+  }
   to.sin_port = any.sin_port;
   ::close(probe);
   return to;

@@ -344,9 +344,12 @@ class TestS57Loader : public QObject {
       const auto [file, what] = loadError(cell);
       qInfo("%s", what.c_str());
       QCOMPARE(file, cell.toStdString());
-      const std::string expected = cell.toStdString() + ": truncated at byte " + grouped(cut) +
-                                   ", inside record " + grouped(static_cast<qint64>(record));
-      QVERIFY2(what.rfind(expected, 0) == 0, (what + "\nexpected: " + expected).c_str());
+      std::string expected = cell.toStdString();
+      expected.append(": truncated at byte ").append(grouped(cut));
+      expected.append(", inside record ").append(grouped(static_cast<qint64>(record)));
+      std::string context = what;
+      context.append("\nexpected: ").append(expected);
+      QVERIFY2(what.rfind(expected, 0) == 0, context.c_str());
     }
   }
 
@@ -431,7 +434,8 @@ class TestS57Loader : public QObject {
       for (const auto& e : entries) {
         if (!e.crc) continue;
         const std::string name = e.file.substr(e.file.find_last_of("\\/") + 1);  // "US5BOSCC\\US5BOSCC.000"
-        const std::string path = folder + "/" + name;
+        std::string path = folder;
+        path.append("/").append(name);
         QVERIFY2(fs::exists(path), path.c_str());
         QCOMPARE(s57::crc32(view(readAll(path))), *e.crc);
         ++checked;
@@ -443,10 +447,11 @@ class TestS57Loader : public QObject {
     QByteArray damaged = readAll(kEnc + "/US5BOSDC/US5BOSDC.000");
     const std::size_t y = northernmostLatitude(damaged);
     QVERIFY(y > 0);
-    const auto high = static_cast<unsigned char>(damaged[static_cast<qsizetype>(y + 2)]);
+    const auto at = static_cast<qsizetype>(y) + 2;
+    const auto high = static_cast<unsigned char>(damaged[at]);
     int bit = 7;
     while (bit > 0 && (high & (1u << bit))) --bit;  // a bit that is 0, so the latitude grows
-    damaged[static_cast<qsizetype>(y + 2)] = static_cast<char>(high | (1u << bit));
+    damaged[at] = static_cast<char>(high | (1u << bit));
     QTemporaryDir bare, withCatalogue;
     QVERIFY(writeAll(bare.path() + "/US5BOSDC.000", damaged));
     QVERIFY(writeAll(withCatalogue.path() + "/US5BOSDC.000", damaged));
@@ -472,7 +477,8 @@ class TestS57Loader : public QObject {
     QByteArray update = readAll(kEnc + "/US5BOSCC/US5BOSCC.001");
     const std::size_t c = firstCoordinate(update, 0);
     QVERIFY(c > 0);
-    update[static_cast<qsizetype>(c + 1)] = static_cast<char>(update[static_cast<qsizetype>(c + 1)] ^ 0x10);
+    const auto flipAt = static_cast<qsizetype>(c) + 1;
+    update[flipAt] = static_cast<char>(update[flipAt] ^ 0x10);
     const QString updatePath = boscc.path() + "/US5BOSCC.001";
     QVERIFY(writeAll(updatePath, update));
     const LoadResult r = loadCharts({boscc.path().toStdString()});

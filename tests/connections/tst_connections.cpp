@@ -205,13 +205,13 @@ class TstConnections : public QObject {
     std::mt19937 rng(19);
     std::uint64_t sent = 0;
     const auto send = [&](const QByteArray& chunk) {
-      while (peer->bytesToWrite() > 4 * 1024 * 1024) peer->waitForBytesWritten(1000);
+      while (peer->bytesToWrite() > qint64{4} * 1024 * 1024) peer->waitForBytesWritten(1000);
       peer->write(chunk);
       sent += static_cast<std::uint64_t>(chunk.size());
     };
-    const QByteArray mb(1024 * 1024, 'A');
+    const QByteArray mb(qsizetype{1024} * 1024, 'A');
     for (int i = 0; i < 10; ++i) send(mb);
-    QByteArray garbage(1024 * 1024, '\0');
+    QByteArray garbage(qsizetype{1024} * 1024, '\0');
     for (int i = 0; i < 100; ++i) {
       for (char& c : garbage) c = static_cast<char>(rng() & 0xff);
       send(garbage);

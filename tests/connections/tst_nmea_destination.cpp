@@ -15,6 +15,8 @@
 #include <QTest>
 #include <QUdpSocket>
 
+#include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 
 #include "common/units.h"
@@ -32,6 +34,7 @@ namespace {
 
 std::vector<std::string> someLines(int n) {
   std::vector<std::string> v;
+  v.reserve(static_cast<std::size_t>(std::max(n, 0)));
   for (int i = 0; i < n; ++i) v.push_back(io::nmea::hdt("HE", 0.5 * i));
   return v;
 }
@@ -123,7 +126,7 @@ class TestNmeaDestination : public QObject {
   }
 
   void tcpServesReadersAndDropsStalledClients() {
-    NmeaDestination d(conn::parseDestination("tcp://127.0.0.1:0"), nullptr, 64 * 1024);
+    NmeaDestination d(conn::parseDestination("tcp://127.0.0.1:0"), nullptr, qint64{64} * 1024);
     QVERIFY(d.port() != 0);
     QTcpSocket reader, stalled;
     QSignalSpy connected(&d, &NmeaDestination::clientConnected);
@@ -210,7 +213,7 @@ class TestNmeaDestination : public QObject {
         buffer += json.readAll();
         int nl = 0;
         while ((nl = static_cast<int>(buffer.indexOf('\n'))) >= 0) {
-          const QJsonObject o = QJsonDocument::fromJson(buffer.left(nl)).object();
+          QJsonObject o = QJsonDocument::fromJson(buffer.left(nl)).object();
           buffer.remove(0, nl + 1);
           if (want(o)) return o;
         }

@@ -29,8 +29,8 @@ namespace {
 /// The values of a delta by Signal K path.
 QMap<QString, QJsonValue> valuesOf(const QJsonObject& delta) {
   QMap<QString, QJsonValue> out;
-  for (const QJsonValue& u : delta["updates"].toArray())
-    for (const QJsonValue& v : u.toObject()["values"].toArray())
+  for (const auto& u : delta["updates"].toArray())
+    for (const auto& v : u.toObject()["values"].toArray())
       out[v.toObject()["path"].toString()] = v.toObject()["value"];
   return out;
 }

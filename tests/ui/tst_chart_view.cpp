@@ -46,7 +46,7 @@ class TestChartView : public QObject {
     img.azimuths = 360;
     img.rangeBins = 100;
     img.binM = 10.0;
-    img.bins.assign(360 * 100, 0);
+    img.bins.assign(std::size_t{360} * 100, 0);
     img.bins[90 * 100 + 50] = 1;
     radar::SweepPose pose;
     pose.periodS = 2.0;

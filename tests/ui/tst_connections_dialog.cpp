@@ -43,7 +43,7 @@ QString cell(const QAbstractItemModel& m, int row, int column) {
 }
 
 QString screenshotDir() {
-  const QString dir = QCoreApplication::applicationDirPath() + "/screenshots";
+  QString dir = QCoreApplication::applicationDirPath() + "/screenshots";
   QDir().mkpath(dir);
   return dir;
 }
@@ -258,6 +258,7 @@ class TstConnectionsDialog : public QObject {
         "file:///tmp/rec.nmea?rate=x10",
         "tcp://127.0.0.1:4001?name=radar&role=radar&priority=3"};
     std::vector<conn::SourceConfig> sources;
+    sources.reserve(std::size(specs));
     for (const auto& s : specs) sources.push_back(conn::parseSource(s));
     QTemporaryDir dir;
     const QString path = dir.filePath("reckoner.ini");

@@ -91,6 +91,30 @@ QString cellText(MainWindow& w, int trackId, int column) {
   return row < 0 ? QString() : w.targetModel()->index(row, column).data().toString();
 }
 
+/// The typed order of 045.0 deg 12.5 kn standing: out-of-range values are refused with a message and
+/// the order unchanged; in m/s the speed is typed in m/s and an empty course keeps the course.
+void typedOrdersAreCheckedAndInDisplayUnits(MainWindow& w) {
+  OwnShipPanel* panel = w.ownShipPanel();
+  EcdisView* v = w.chart();
+  panel->courseEdit()->setText(QStringLiteral("400"));
+  QTest::keyClick(panel->courseEdit(), Qt::Key_Return);
+  QVERIFY2(panel->orderError().contains(QStringLiteral("0 to 360")), qPrintable(panel->orderError()));
+  panel->courseEdit()->setText(QStringLiteral("90"));
+  panel->speedEdit()->setText(QStringLiteral("55"));
+  QTest::keyClick(panel->speedEdit(), Qt::Key_Return);
+  QVERIFY2(panel->orderError().contains(QStringLiteral("0 to 40.0")), qPrintable(panel->orderError()));
+  panel->speedEdit()->setText(QStringLiteral("fast"));
+  QVERIFY(!panel->applyTypedOrder());
+  RK_COMPARE_NEAR(radToDeg(v->orderedCourseSpeed().first), 45.0, 1e-3);  // (as the frame carries it)
+  // AND in m/s the speed is typed in m/s
+  w.setDisplayUnits({DistanceUnit::NauticalMiles, SpeedUnit::MetresPerSecond});
+  panel->courseEdit()->clear();
+  panel->speedEdit()->setText(QStringLiteral("5"));
+  QVERIFY(panel->applyTypedOrder());
+  RK_COMPARE_NEAR(v->orderedCourseSpeed().second, 5.0, 1e-9);
+  RK_COMPARE_NEAR(radToDeg(v->orderedCourseSpeed().first), 45.0, 1e-3);  // the course kept
+}
+
 }  // namespace
 
 class TestDisplayModes : public QObject {
@@ -130,7 +154,11 @@ class TestDisplayModes : public QObject {
       for (const QRectF& s : symbols) QVERIFY(!box.intersects(s));
     // AND a crowd around one point still gets boxes of its own, all inside the view
     std::vector<LabelRequest> crowd;
-    for (int i = 0; i < 12; ++i) crowd.push_back({QPointF(400 + (i % 3) * 3, 300 + (i / 3) * 3), 7.0, text});
+    crowd.reserve(12);
+    for (int i = 0; i < 12; ++i) {
+      const int row = i / 3, column = i % 3;
+      crowd.push_back({QPointF(400 + column * 3, 300 + row * 3), 7.0, text});
+    }
     const auto many = placeLabels(crowd, {}, QRectF(0, 0, 800, 600));
     for (std::size_t i = 0; i < many.size(); ++i) {
       QVERIFY(QRectF(0, 0, 800, 600).contains(many[i]));
@@ -562,25 +590,8 @@ class TestDisplayModes : public QObject {
     };
     QTRY_VERIFY_WITH_TIMEOUT(ordered(), kTimeoutMs);
     saveWindowShot(w, QStringLiteral("helm-order-readout"));
-    // AND out-of-range values are refused with a message, the order unchanged
-    panel->courseEdit()->setText(QStringLiteral("400"));
-    QTest::keyClick(panel->courseEdit(), Qt::Key_Return);
-    QVERIFY2(panel->orderError().contains(QStringLiteral("0 to 360")), qPrintable(panel->orderError()));
-    panel->courseEdit()->setText(QStringLiteral("90"));
-    panel->speedEdit()->setText(QStringLiteral("55"));
-    QTest::keyClick(panel->speedEdit(), Qt::Key_Return);
-    QVERIFY2(panel->orderError().contains(QStringLiteral("0 to 40.0")), qPrintable(panel->orderError()));
-    panel->speedEdit()->setText(QStringLiteral("fast"));
-    QVERIFY(!panel->applyTypedOrder());
-    RK_COMPARE_NEAR(radToDeg(v->orderedCourseSpeed().first), 45.0, 1e-3);  // (as the frame carries it)
-    // AND in m/s the speed is typed in m/s
-    w.setDisplayUnits({DistanceUnit::NauticalMiles, SpeedUnit::MetresPerSecond});
-    panel->courseEdit()->clear();
-    panel->speedEdit()->setText(QStringLiteral("5"));
-    QVERIFY(panel->applyTypedOrder());
-    RK_COMPARE_NEAR(v->orderedCourseSpeed().second, 5.0, 1e-9);
-    RK_COMPARE_NEAR(radToDeg(v->orderedCourseSpeed().first), 45.0,
-                    1e-3);  // (as the frame carries it)  // the course kept
+    // AND out-of-range values are refused with a message, the order unchanged; in m/s the speed is m/s
+    typedOrdersAreCheckedAndInDisplayUnits(w);
   }
 
   void aStatusMessageStaysVisibleWhileTheMouseMoves() {

@@ -126,6 +126,7 @@ bool drawn(const ErrorPlots& plots) {
 /// their plot areas as they are (no refit or layout is still to come).
 bool laidOut(const ErrorPlots& plots) {
   std::vector<QRectF> areas;
+  areas.reserve(PlotCharts::kCharts);
   for (int c = 0; c < PlotCharts::kCharts; ++c)
     areas.push_back(plots.charts().chart(static_cast<PlotCharts::Chart>(c))->plotArea());
   QCoreApplication::sendPostedEvents();

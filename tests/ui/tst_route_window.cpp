@@ -98,7 +98,7 @@ class TestRouteWindow : public QObject {
 
   /// A route directory of its own for the next window.
   QString freshRouteDir() {
-    const QString path = dir_.filePath(QStringLiteral("routes%1").arg(++libraries_));
+    QString path = dir_.filePath(QStringLiteral("routes%1").arg(++libraries_));
     qputenv("RECKONER_ROUTE_DIR", path.toLocal8Bit());
     return path;
   }

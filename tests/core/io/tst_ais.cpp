@@ -315,7 +315,7 @@ class TestAis : public QObject {
 
 namespace {
 
-std::string key(std::string k) {
+std::string key(const std::string& k) {
   std::string out;
   for (const char c : k)
     if (c != ' ' && c != '_') out.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));

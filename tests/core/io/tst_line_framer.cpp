@@ -32,7 +32,7 @@ class TstLineFramer : public QObject {
     // GIVEN a framer with a limit of 82 and a 10 MB line fed in 64 KiB chunks
     LineFramer f(82);
     std::vector<std::string> out;
-    const std::string chunk(64 * 1024, 'A');
+    const std::string chunk(std::size_t{64} * 1024, 'A');
     for (int i = 0; i < 160; ++i) {
       f.feed(chunk, out);
       // THEN it never holds more than the limit

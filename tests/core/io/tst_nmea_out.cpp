@@ -19,7 +19,7 @@ using namespace reckoner::io::nmea;
 namespace {
 
 // 2026-03-04T05:06:07.89Z
-constexpr UtcUs kUtc = (20516LL * 86400LL + 5 * 3600 + 6 * 60 + 7) * 1000000LL + 890000;
+constexpr UtcUs kUtc = (20516LL * 86400LL + 5LL * 3600 + 6LL * 60 + 7) * 1000000LL + 890000;
 
 std::vector<std::string> fieldsOf(const std::string& line) {
   const auto f = checkedFields(line);
@@ -297,6 +297,7 @@ class TestNmeaOut : public QObject {
 
   void alertListSplitsAcrossSentences() {
     std::vector<AlcEntry> entries;
+    entries.reserve(12);
     for (int i = 0; i < 12; ++i) entries.push_back({"RKN", 1001 + i % 9, i + 1, 1 + i % 3});
     const auto lines = alc("IN", 4, entries);
     QVERIFY(lines.size() > 1);

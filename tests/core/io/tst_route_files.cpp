@@ -135,6 +135,109 @@ void expectError(const std::string& text, int line, const QString& expected) {
   }
 }
 
+/// A row of malformedRtzIsOneLineNamingLineAndField: the file's text, the line the error names and a
+/// piece of its message.
+void malformedRow(const char* name, const std::string& text, int line, const char* expected) {
+  QTest::newRow(name) << QByteArray::fromStdString(text) << line << QString::fromUtf8(expected);
+}
+
+/// Malformed waypoints, legs and schedules inside an otherwise good RTZ route.
+void addMalformedRtzContentRows() {
+  malformedRow("bad lat", rtz(R"(<waypoint id="2"><position lat="95" lon="5.1"/></waypoint>)"), 6,
+               "t.rtz:6: waypoint id=\"2\" position lat: must be a number in [-90, 90], got '95'");
+  malformedRow("lon not a number", rtz(R"(<waypoint id="2"><position lat="60.1" lon="5,1"/></waypoint>)"), 6,
+               "waypoint id=\"2\" position lon: must be a number in [-180, 180], got '5,1'");
+  malformedRow("missing position", rtz(R"(<waypoint id="2" name="X"/>)"), 6,
+               "waypoint id=\"2\" position: missing");
+  malformedRow("missing lat", rtz(R"(<waypoint id="2"><position lon="5"/></waypoint>)"), 6,
+               "position lat: missing");
+  malformedRow(
+      "two positions",
+      rtz("<waypoint id=\"2\"><position lat=\"1\" lon=\"1\"/>\n<position lat=\"2\" lon=\"2\"/></waypoint>"),
+      7, "waypoint id=\"2\" position: given twice");
+  malformedRow("duplicate id", rtz(R"(<waypoint id="1"><position lat="60.1" lon="5.1"/></waypoint>)"), 6,
+               "t.rtz:6: waypoint id=\"1\" id: used twice: the waypoint at line 5 has it too");
+  malformedRow("missing id", rtz(R"(<waypoint name="x"><position lat="60.1" lon="5.1"/></waypoint>)"), 6,
+               "waypoint 2 id: missing");
+  malformedRow("id not an integer", rtz(R"(<waypoint id="2.5"><position lat="60.1" lon="5.1"/></waypoint>)"),
+               6, "waypoint 2 id: must be an integer, got '2.5'");
+  malformedRow(
+      "negative XTD",
+      rtz(R"(<waypoint id="2"><position lat="60.1" lon="5.1"/><leg portsideXTD="-0.1"/></waypoint>)"), 6,
+      "waypoint id=\"2\" leg portsideXTD: must be a number >= 0, got '-0.1'");
+  malformedRow(
+      "bad geometry",
+      rtz(R"(<waypoint id="2"><position lat="60.1" lon="5.1"/><leg geometryType="Great"/></waypoint>)"), 6,
+      "leg geometryType: must be Loxodrome or Orthodrome, got 'Great'");
+  malformedRow("control character",
+               rtz("<waypoint id=\"2\" name=\"a&#1;b\"><position lat=\"60.1\" lon=\"5.1\"/></waypoint>"), 6,
+               "waypoint id=\"2\" name: a control character in 'a\\x01b'");
+  malformedRow("same place twice", rtz(R"(<waypoint id="2"><position lat="60" lon="5"/></waypoint>)"), 6,
+               "t.rtz:6: waypoint 2 (id 2): at the same place as the waypoint before it");
+  malformedRow("unknown waypoint in schedule",
+               rtz(kGoodWaypoint2, schedule(R"(<scheduleElement waypointId="9"/>)")), 10,
+               "schedule id=\"1\" manual scheduleElement waypointId: no waypoint of the route has id 9");
+  malformedRow(
+      "bad eta",
+      rtz(kGoodWaypoint2, schedule(R"(<scheduleElement waypointId="2" eta="2024-13-01T00:00:00Z"/>)")), 10,
+      "schedule id=\"1\" manual scheduleElement waypointId=\"2\" eta: must be a date and time");
+  malformedRow(
+      "year 0",
+      rtz(kGoodWaypoint2, schedule(R"(<scheduleElement waypointId="2" etd="0000-01-01T00:00:00Z"/>)")), 10,
+      "etd: must be a date and time");
+  malformedRow("negative speed",
+               rtz(kGoodWaypoint2, schedule(R"(<scheduleElement waypointId="2" speed="-1"/>)")), 10,
+               "scheduleElement waypointId=\"2\" speed: must be a number >= 0");
+  malformedRow("duplicate schedule",
+               rtz(kGoodWaypoint2, "  <schedules>\n<schedule id=\"4\"/>\n<schedule id=\"4\"/></schedules>\n"),
+               11, "schedule id=\"4\" id: used twice: the schedule at line 10 has it too");
+}
+
+/// Files wrong as a whole: too few or too many waypoints, version, root, encoding, size; and GPX.
+void addMalformedFileRows() {
+  malformedRow("one waypoint",
+               "<route version=\"1.0\">\n<waypoints>\n<waypoint id=\"1\"><position lat=\"0\" "
+               "lon=\"0\"/></waypoint>\n"
+               "</waypoints></route>",
+               2, "1 waypoint(s); a route needs at least two");
+  malformedRow("version", "<?xml version=\"1.0\"?>\n<route version=\"2.0\"><waypoints/></route>", 2,
+               "t.rtz:2: route version: RTZ 1.0, 1.1 and 1.2 are read, not '2.0'");
+  malformedRow("no waypoints", "<route version=\"1.1\">\n<routeInfo/></route>", 1, "waypoints: missing");
+  malformedRow("wrong root", "<?xml version=\"1.0\"?>\n\n<gpx version=\"1.1\"/>", 3,
+               "the root element is 'gpx', not RTZ's <route>");
+  malformedRow("wrong namespace", "<route xmlns=\"http://example.com/route\" version=\"1.1\"/>", 1,
+               "not RTZ's <route>");
+  malformedRow("not XML", "hello", 0, "t.rtz: no XML element in it");
+  malformedRow("unclosed", "<route>\n<waypoints>\n</route>", 3, "t.rtz:3: not well-formed XML");
+  malformedRow("two roots", "<route/>\n<route/>", 2, "a second root element");
+  malformedRow("UTF-16", std::string("\xFF\xFE<\0r\0", 6), 1, "UTF-16");
+  malformedRow("not UTF-8", "<route version=\"1.1\">\n<routeInfo routeName=\"\xC3(\"/></route>", 2,
+               "not UTF-8");
+  malformedRow("encoding", "<?xml version=\"1.0\" encoding=\"Shift_JIS\"?><route/>", 1,
+               "declares 'shift_jis'");
+  malformedRow("NUL", std::string("<route>\n<a") + '\0' + "/></route>", 2, "t.rtz:2: a NUL byte");
+  malformedRow("zip", std::string("PK\x03\x04\x14\0\0\0", 8), 0, "zip archive");
+  malformedRow("too big", std::string(io::kMaxRouteFileBytes + 1, ' '), 0,
+               "is 16777217 bytes; the limit for a route file");
+  std::string many = "<route version=\"1.1\"><waypoints>\n";
+  for (int k = 0; k <= static_cast<int>(io::kMaxRouteWaypoints); ++k)
+    many += "<waypoint id=\"" + std::to_string(k) + "\"><position lat=\"0\" lon=\"" +
+            std::to_string(k % 100) + "\"/></waypoint>\n";
+  malformedRow("too many waypoints", many + "</waypoints></route>", 10002, "more than 10000 waypoints");
+  malformedRow("GPX bad lat", "<gpx version=\"1.1\">\n<rte>\n<rtept lat=\"-91\" lon=\"0\"/></rte></gpx>", 3,
+               "t.gpx:3: rtept 1 lat: must be a number in [-90, 90], got '-91'");
+  malformedRow("GPX missing lon",
+               "<gpx version=\"1.1\"><rte><rtept lat=\"1\"/><rtept lat=\"1\" lon=\"2\"/></rte></gpx>", 1,
+               "rtept 1 lon: missing");
+  malformedRow("GPX track only",
+               "<gpx version=\"1.1\">\n<trk><trkseg><trkpt lat=\"1\" lon=\"2\"/></trkseg></trk></gpx>", 1,
+               "rte: no route (<rte>) in the file; tracks (<trk>)");
+  malformedRow("GPX one point", "<gpx version=\"1.1\">\n<rte>\n<rtept lat=\"1\" lon=\"2\"/></rte></gpx>", 2,
+               "a route needs at least two");
+  malformedRow("GPX version", "<gpx version=\"2.0\"/>", 1,
+               "gpx version: must be \"1.0\" or \"1.1\", got '2.0'");
+}
+
 }  // namespace
 
 class TestRouteFiles : public QObject {
@@ -401,86 +504,8 @@ class TestRouteFiles : public QObject {
     QTest::addColumn<QByteArray>("text");
     QTest::addColumn<int>("line");
     QTest::addColumn<QString>("expected");
-    const auto row = [](const char* name, const std::string& text, int line, const char* expected) {
-      QTest::newRow(name) << QByteArray::fromStdString(text) << line << QString::fromUtf8(expected);
-    };
-    row("bad lat", rtz(R"(<waypoint id="2"><position lat="95" lon="5.1"/></waypoint>)"), 6,
-        "t.rtz:6: waypoint id=\"2\" position lat: must be a number in [-90, 90], got '95'");
-    row("lon not a number", rtz(R"(<waypoint id="2"><position lat="60.1" lon="5,1"/></waypoint>)"), 6,
-        "waypoint id=\"2\" position lon: must be a number in [-180, 180], got '5,1'");
-    row("missing position", rtz(R"(<waypoint id="2" name="X"/>)"), 6, "waypoint id=\"2\" position: missing");
-    row("missing lat", rtz(R"(<waypoint id="2"><position lon="5"/></waypoint>)"), 6, "position lat: missing");
-    row("two positions",
-        rtz("<waypoint id=\"2\"><position lat=\"1\" lon=\"1\"/>\n<position lat=\"2\" lon=\"2\"/></waypoint>"),
-        7, "waypoint id=\"2\" position: given twice");
-    row("duplicate id", rtz(R"(<waypoint id="1"><position lat="60.1" lon="5.1"/></waypoint>)"), 6,
-        "t.rtz:6: waypoint id=\"1\" id: used twice: the waypoint at line 5 has it too");
-    row("missing id", rtz(R"(<waypoint name="x"><position lat="60.1" lon="5.1"/></waypoint>)"), 6,
-        "waypoint 2 id: missing");
-    row("id not an integer", rtz(R"(<waypoint id="2.5"><position lat="60.1" lon="5.1"/></waypoint>)"), 6,
-        "waypoint 2 id: must be an integer, got '2.5'");
-    row("negative XTD",
-        rtz(R"(<waypoint id="2"><position lat="60.1" lon="5.1"/><leg portsideXTD="-0.1"/></waypoint>)"), 6,
-        "waypoint id=\"2\" leg portsideXTD: must be a number >= 0, got '-0.1'");
-    row("bad geometry",
-        rtz(R"(<waypoint id="2"><position lat="60.1" lon="5.1"/><leg geometryType="Great"/></waypoint>)"), 6,
-        "leg geometryType: must be Loxodrome or Orthodrome, got 'Great'");
-    row("control character",
-        rtz("<waypoint id=\"2\" name=\"a&#1;b\"><position lat=\"60.1\" lon=\"5.1\"/></waypoint>"), 6,
-        "waypoint id=\"2\" name: a control character in 'a\\x01b'");
-    row("same place twice", rtz(R"(<waypoint id="2"><position lat="60" lon="5"/></waypoint>)"), 6,
-        "t.rtz:6: waypoint 2 (id 2): at the same place as the waypoint before it");
-    row("unknown waypoint in schedule", rtz(kGoodWaypoint2, schedule(R"(<scheduleElement waypointId="9"/>)")),
-        10, "schedule id=\"1\" manual scheduleElement waypointId: no waypoint of the route has id 9");
-    row("bad eta",
-        rtz(kGoodWaypoint2, schedule(R"(<scheduleElement waypointId="2" eta="2024-13-01T00:00:00Z"/>)")), 10,
-        "schedule id=\"1\" manual scheduleElement waypointId=\"2\" eta: must be a date and time");
-    row("year 0",
-        rtz(kGoodWaypoint2, schedule(R"(<scheduleElement waypointId="2" etd="0000-01-01T00:00:00Z"/>)")), 10,
-        "etd: must be a date and time");
-    row("negative speed", rtz(kGoodWaypoint2, schedule(R"(<scheduleElement waypointId="2" speed="-1"/>)")),
-        10, "scheduleElement waypointId=\"2\" speed: must be a number >= 0");
-    row("duplicate schedule",
-        rtz(kGoodWaypoint2, "  <schedules>\n<schedule id=\"4\"/>\n<schedule id=\"4\"/></schedules>\n"), 11,
-        "schedule id=\"4\" id: used twice: the schedule at line 10 has it too");
-    row("one waypoint",
-        "<route version=\"1.0\">\n<waypoints>\n<waypoint id=\"1\"><position lat=\"0\" "
-        "lon=\"0\"/></waypoint>\n"
-        "</waypoints></route>",
-        2, "1 waypoint(s); a route needs at least two");
-    row("version", "<?xml version=\"1.0\"?>\n<route version=\"2.0\"><waypoints/></route>", 2,
-        "t.rtz:2: route version: RTZ 1.0, 1.1 and 1.2 are read, not '2.0'");
-    row("no waypoints", "<route version=\"1.1\">\n<routeInfo/></route>", 1, "waypoints: missing");
-    row("wrong root", "<?xml version=\"1.0\"?>\n\n<gpx version=\"1.1\"/>", 3,
-        "the root element is 'gpx', not RTZ's <route>");
-    row("wrong namespace", "<route xmlns=\"http://example.com/route\" version=\"1.1\"/>", 1,
-        "not RTZ's <route>");
-    row("not XML", "hello", 0, "t.rtz: no XML element in it");
-    row("unclosed", "<route>\n<waypoints>\n</route>", 3, "t.rtz:3: not well-formed XML");
-    row("two roots", "<route/>\n<route/>", 2, "a second root element");
-    row("UTF-16", std::string("\xFF\xFE<\0r\0", 6), 1, "UTF-16");
-    row("not UTF-8", "<route version=\"1.1\">\n<routeInfo routeName=\"\xC3(\"/></route>", 2, "not UTF-8");
-    row("encoding", "<?xml version=\"1.0\" encoding=\"Shift_JIS\"?><route/>", 1, "declares 'shift_jis'");
-    row("NUL", std::string("<route>\n<a") + '\0' + "/></route>", 2, "t.rtz:2: a NUL byte");
-    row("zip", std::string("PK\x03\x04\x14\0\0\0", 8), 0, "zip archive");
-    row("too big", std::string(io::kMaxRouteFileBytes + 1, ' '), 0,
-        "is 16777217 bytes; the limit for a route file");
-    std::string many = "<route version=\"1.1\"><waypoints>\n";
-    for (int k = 0; k <= static_cast<int>(io::kMaxRouteWaypoints); ++k)
-      many += "<waypoint id=\"" + std::to_string(k) + "\"><position lat=\"0\" lon=\"" +
-              std::to_string(k % 100) + "\"/></waypoint>\n";
-    row("too many waypoints", many + "</waypoints></route>", 10002, "more than 10000 waypoints");
-    row("GPX bad lat", "<gpx version=\"1.1\">\n<rte>\n<rtept lat=\"-91\" lon=\"0\"/></rte></gpx>", 3,
-        "t.gpx:3: rtept 1 lat: must be a number in [-90, 90], got '-91'");
-    row("GPX missing lon",
-        "<gpx version=\"1.1\"><rte><rtept lat=\"1\"/><rtept lat=\"1\" lon=\"2\"/></rte></gpx>", 1,
-        "rtept 1 lon: missing");
-    row("GPX track only",
-        "<gpx version=\"1.1\">\n<trk><trkseg><trkpt lat=\"1\" lon=\"2\"/></trkseg></trk></gpx>", 1,
-        "rte: no route (<rte>) in the file; tracks (<trk>)");
-    row("GPX one point", "<gpx version=\"1.1\">\n<rte>\n<rtept lat=\"1\" lon=\"2\"/></rte></gpx>", 2,
-        "a route needs at least two");
-    row("GPX version", "<gpx version=\"2.0\"/>", 1, "gpx version: must be \"1.0\" or \"1.1\", got '2.0'");
+    addMalformedRtzContentRows();
+    addMalformedFileRows();
   }
   void malformedRtzIsOneLineNamingLineAndField() {
     QFETCH(QByteArray, text);

@@ -168,6 +168,7 @@ class TestNmeaOutput : public QObject {
     QCOMPARE(out.counters().sweepsSkipped, 1L);
     // 101 tracks: one has no number and is counted.
     std::vector<TrackRow> many;
+    many.reserve(101);
     for (int i = 0; i < 101; ++i) many.push_back(rowsOf({100 + i})[0]);
     const auto lines = out.sweep(3, many);
     QCOMPARE(lines.size(), std::size_t(200));

@@ -268,7 +268,7 @@ class TestReplaySources : public QObject {
     // THEN the dates are corrected; GIVEN two receivers, one of them rolled over, THEN its dates are
     // corrected to the other's.
     std::vector<std::string> rolled;
-    const auto back = [](std::string ddmmyy) {  // 1024 weeks = 7168 days earlier
+    const auto back = [](const std::string& ddmmyy) {  // 1024 weeks = 7168 days earlier
       const int d = std::stoi(ddmmyy.substr(0, 2)), m = std::stoi(ddmmyy.substr(2, 2)),
                 y = 2000 + std::stoi(ddmmyy.substr(4));
       const std::int64_t day = io::daysFromCivil(y, m, d) - 7168;

@@ -56,7 +56,11 @@ void numbersOf(io::JsonValue& v, const std::string& path,
   if (v.isNumber()) out.emplace_back(path, &v);
   for (std::size_t i = 0; i < v.array.size(); ++i)
     numbersOf(v.array[i], path + "[" + std::to_string(i) + "]", out);
-  for (auto& [k, e] : v.object) numbersOf(e, path.empty() ? k : path + "." + k, out);
+  for (auto& [k, e] : v.object) {
+    std::string child = path;
+    if (!child.empty()) child += '.';
+    numbersOf(e, child + k, out);
+  }
 }
 
 bool finite(const sim::SimFrame& f) {
@@ -101,9 +105,10 @@ class TestScenarioLimits : public QObject {
           s = files::parseScenario(w.str(), "s.json");
         } catch (const io::InputError& e) {
           const std::string msg = e.what();
-          QVERIFY2(msg.rfind("s.json:", 0) == 0 && msg.find('\n') == std::string::npos,
-                   (what + ": " + msg).c_str());
-          QVERIFY2(e.line() > 0, (what + ": " + msg).c_str());
+          std::string context = what;
+          context.append(": ").append(msg);
+          QVERIFY2(msg.rfind("s.json:", 0) == 0 && msg.find('\n') == std::string::npos, context.c_str());
+          QVERIFY2(e.line() > 0, context.c_str());
           ++refused;
           continue;
         }

@@ -2,6 +2,8 @@
 // in which the rest is replayed.
 #include <QTest>
 
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 #include "sim/stream_time.h"
@@ -17,6 +19,7 @@ std::vector<UtcUs> seconds(std::initializer_list<double> s) {
 }
 std::vector<UtcUs> ramp(int n, double stepS, double startS = 1000.0) {
   std::vector<UtcUs> out;
+  out.reserve(static_cast<std::size_t>(std::max(n, 0)));
   for (int i = 0; i < n; ++i) out.push_back(static_cast<UtcUs>((startS + i * stepS) * kS));
   return out;
 }

@@ -1,5 +1,7 @@
 #include <QTest>
 
+#include <cstdint>
+
 #include "common/angles.h"
 #include "sim/vessel_motion.h"
 #include "support/compare_near.h"
@@ -105,7 +107,7 @@ class TestVesselTruth : public QObject {
     std::vector<KinematicEvent> orders;
     for (int k = 1; k <= 3000; ++k) {
       KinematicEvent e;
-      e.timeUs = k * 2 * kMicrosPerSecond + 1;
+      e.timeUs = std::int64_t{k} * 2 * kMicrosPerSecond + 1;
       e.order = HelmOrder{degToRad(std::fmod(7.0 * k, 360.0)), 4.0 + (k % 5)};
       orders.push_back(e);
     }
@@ -189,7 +191,7 @@ class TestVesselTruth : public QObject {
     spec.randomAcceleration = est::GaussMarkov{0.1, 0.2};
     VesselMotionModel a(spec, {0.3, 0.2}, Rng(7, kStreamTruth)), b(spec, {0.3, 0.2}, Rng(7, kStreamTruth));
     a.advanceTo(fromSeconds(123.4));
-    for (int k = 1; k <= 1234; ++k) b.advanceTo(k * 100'000);
+    for (int k = 1; k <= 1234; ++k) b.advanceTo(std::int64_t{k} * 100'000);
     QCOMPARE(a.state().position.xM, b.state().position.xM);
     QCOMPARE(a.state().accelYMps2, b.state().accelYMps2);
   }

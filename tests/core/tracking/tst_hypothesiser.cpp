@@ -133,6 +133,7 @@ class TestHypothesiser : public QObject {
     // 400 plots over 40 km, 30 tracks with gates of a few hundred metres: the index is used.
     Rng rng(17, 1);
     std::vector<GridPlot> plots;
+    plots.reserve(400);
     for (int j = 0; j < 400; ++j)
       plots.push_back(
           {fromSeconds(0.005 * j), 1000.0 + 39000.0 * rng.uniform(), 2.0 * kPi * rng.uniform(), 400.0, 1e-6});
@@ -140,7 +141,7 @@ class TestHypothesiser : public QObject {
     const Hypothesiser h(kGate, fromSeconds(1.0));
     std::vector<GatedTrack> tracks;
     for (int i = 0; i < 30; ++i) {
-      const est::Vec<2> at = b.offsetM[static_cast<std::size_t>(13 * i)];
+      const est::Vec<2> at = b.offsetM[13 * static_cast<std::size_t>(i)];
       const auto g = h.admit(static_cast<std::size_t>(i), -fromSeconds(10.0),
                              stub(at[0] + 30.0, at[1] - 20.0, 4.0, 1.0, 900.0, 4.0), b);
       QVERIFY(g.has_value());

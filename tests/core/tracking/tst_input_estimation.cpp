@@ -21,6 +21,7 @@ std::vector<std::vector<studies::Seed001Sample>> monteCarlo(const studies::Seed0
                                                             const track::InputEstimationConfig& cfg,
                                                             int runs) {
   std::vector<std::vector<studies::Seed001Sample>> all;
+  all.reserve(static_cast<std::size_t>(std::max(runs, 0)));
   for (int r = 0; r < runs; ++r)
     all.push_back(studies::runSeed001(sc, cfg, 1000 + static_cast<std::uint64_t>(r)));
   return all;

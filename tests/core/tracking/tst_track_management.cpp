@@ -53,7 +53,7 @@ void drive(TrackManager& m, int sweeps,
   for (int k = firstSweep; k < firstSweep + sweeps; ++k) {
     const TimeUs t0 = static_cast<TimeUs>(k) * 2'000'000;
     for (int s = 0; s < 2; ++s) {
-      const TimeUs ts = t0 + s * 1'000'000;
+      const TimeUs ts = t0 + TimeUs{s} * 1'000'000;
       m.feedOwnShip(ownAt(ts));
       if (s == 1) continue;  // one plot per target per sweep, half a second after the sweep start
       const auto now = targets(toSeconds(ts) + 0.5);
@@ -341,6 +341,7 @@ class TestTrackManagement : public QObject {
     Rng rng(5, 1);
     drive(m, 20, [&](double) {
       std::vector<std::array<double, 2>> v;
+      v.reserve(5);
       for (int i = 0; i < 5; ++i)
         v.push_back({20000.0 * (rng.uniform() - 0.5), 20000.0 * (rng.uniform() - 0.5)});
       return v;

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   }
   ok = write(dir, "interleaved", mixed) && ok;
   std::vector<std::string> tagged;
+  tagged.reserve(corpus.size());
   for (const auto& l : corpus) tagged.push_back("\\s:r3669961,c:1241544035*7F\\" + l);
   ok = write(dir, "tagged", tagged) && ok;
   if (!ok) std::fprintf(stderr, "ais_seeds: cannot write into %s\n", dir.c_str());

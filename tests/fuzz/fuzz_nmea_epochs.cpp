@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "common/units.h"
+#include "fuzz/options_byte.h"
 #include "io/input_error.h"
 #include "sim/replay_input.h"
 #include "sim/replay_stream.h"
@@ -79,11 +80,9 @@ void oneLine(const std::string& s) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  // A first byte below 0x20 holds the options; otherwise the whole input is text (a recording as it is).
-  const bool optionsByte = size > 0 && data[0] < 0x20;
-  const std::uint8_t flags = optionsByte ? data[0] : 0;
-  const std::string text(reinterpret_cast<const char*>(data) + (optionsByte ? 1 : 0),
-                         size - (optionsByte ? 1 : 0));
+  const auto input = reckoner::fuzz::splitOptionsByte(data, size);
+  const std::uint8_t flags = input.flags;
+  const std::string& text = input.text;
   ri::NmeaOptions o;
   if (flags & 1) o.date = std::array<int, 3>{2024, 3, 1};
   if (flags & 2) o.variationDeg = -14.5;

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fuzz/options_byte.h"
 #include "io/input_error.h"
 #include "sim/replay_input.h"
 #include "sim/replay_stream.h"
@@ -51,11 +52,9 @@ void oneLine(std::string_view s) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  // A first byte below 0x20 holds the options; otherwise the whole input is text (a file as it is).
-  const bool optionsByte = size > 0 && data[0] < 0x20;
-  const std::uint8_t flags = optionsByte ? data[0] : 0;
-  const std::string text(reinterpret_cast<const char*>(data) + (optionsByte ? 1 : 0),
-                         size - (optionsByte ? 1 : 0));
+  const auto input = reckoner::fuzz::splitOptionsByte(data, size);
+  const std::uint8_t flags = input.flags;
+  const std::string& text = input.text;
   reckoner::sim::StreamTimePolicy policy;
   policy.window = 1 + (flags & 7);
 

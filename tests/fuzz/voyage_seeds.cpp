@@ -62,7 +62,7 @@ void record(const std::string& path, bool finish, bool inputs) {
     const char* nmea[] = {"$GPRMC,000001.00,A,4931.20,N,02928.80,W,5.0,90.0,221126,,,A*71",
                           "$HEHDT,90.0,T*16", "$GPZDA,000002.00,22,11,2026,00,00*62"};
     for (int k = 0; k < 3; ++k) {
-      const UtcUs utc = kStart + 1'000'000 * (k + 1);
+      const UtcUs utc = kStart + UtcUs{1'000'000} * (k + 1);
       std::vector<files::InputLine> lines{
           {"nmea1", nmea[k], utc, false},
           {"radar1", "2026-11-22T00:00:01.000Z,1852.0,45.0,a", utc + 1000, true}};

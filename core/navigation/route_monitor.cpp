@@ -9,6 +9,7 @@
 
 #include "common/angles.h"
 #include "geo/geodesic.h"
+#include "geo/route_turns.h"
 
 namespace reckoner::nav {
 namespace {
@@ -98,13 +99,11 @@ RouteMonitor::RouteMonitor(geo::Route route, RouteMonitorSettings settings)
   }
   turns_.assign(n, Turn{});
   for (std::size_t k = 1; k + 1 < n; ++k) {
-    const double change = geo::courseChangeRad(route_, k);
-    if (std::abs(change) < kMinTurnRad) continue;
     // A turn that would take more than half of either leg is sailed on the largest radius that fits,
     // so that consecutive turns never overlap and every leg keeps a straight part to monitor.
-    const double wheelOverM =
-        std::min({geo::wheelOverDistanceM(route_, k), 0.5 * legLengthM_[k], 0.5 * legLengthM_[k + 1]});
-    turns_[k] = {change, wheelOverM, wheelOverM > 0.0 ? wheelOverM / std::tan(std::abs(change) / 2.0) : 0.0};
+    const geo::TurnFit fit = geo::turnFit(route_, k);
+    if (std::abs(fit.changeRad) < kMinTurnRad) continue;
+    turns_[k] = {fit.changeRad, fit.wheelOverM, fit.radiusM};
   }
   approachWarned_.assign(n, false);
 }

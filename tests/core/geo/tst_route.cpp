@@ -1,6 +1,7 @@
 // Route geometry on the ellipsoid: leg lengths and courses against GeographicLib's own inverse
 // problems, a position's place on a leg (along- and cross-track, to go) for points set off the leg
-// by known distances, the wheel-over distance, and the route's own checks.
+// by known distances, the wheel-over distance, the turns that do not fit between their legs, and the
+// route's own checks.
 #include <QTest>
 
 #include <GeographicLib/Geodesic.hpp>
@@ -10,6 +11,7 @@
 #include "common/units.h"
 #include "geo/geodesic.h"
 #include "geo/route.h"
+#include "geo/route_turns.h"
 #include "support/compare_near.h"
 
 using namespace reckoner;
@@ -109,6 +111,64 @@ class TestRoute : public QObject {
     RK_COMPARE_NEAR(wheelOverDistanceM(r, 1), nmToMetres(1.0), 2.0);
     QCOMPARE(wheelOverDistanceM(r, 0), 0.0);
     QCOMPARE(wheelOverDistanceM(r, 2), 0.0);
+  }
+  void turnsThatDoNotFit() {
+    // East 0.1 degree at the equator, north 0.1 degree, east again: two right-angle turns. Each leg's
+    // length from GeographicLib's inverse problem, here; half of the shorter leg at a turn is the most
+    // its wheel-over may take.
+    Route r;
+    r.defaultTurnRadiusNm = 0.5;
+    r.waypoints = {{1, "A", {0.0, 0.0}, {}, {}},
+                   {2, "B", {0.0, 0.1}, {}, {}},
+                   {3, "C", {0.1, 0.1}, {}, {}},
+                   {4, "D", {0.1, 0.13}, {}, {}}};
+    const auto inverse = [](const GeoPoint& a, const GeoPoint& b) {
+      double s = 0.0;
+      GeographicLib::Geodesic::WGS84().Inverse(a.latDeg, a.lonDeg, b.latDeg, b.lonDeg, s);
+      return s;
+    };
+    const double ab = inverse(r.waypoints[0].position, r.waypoints[1].position);
+    const double bc = inverse(r.waypoints[1].position, r.waypoints[2].position);
+    const double cd = inverse(r.waypoints[2].position, r.waypoints[3].position);
+    // 0.5 NM fits at B (legs of about 6 NM) but not at C: the last leg is 1.8 NM, half of it 0.9 NM.
+    r.waypoints[2].turnRadiusNm = 1.2;
+    TurnFit b = turnFit(r, 1);
+    QVERIFY(b.fits());
+    RK_COMPARE_NEAR(radToDeg(b.changeRad), -90.0, 0.01);
+    RK_COMPARE_NEAR(b.legBeforeM, ab, 1e-6);
+    RK_COMPARE_NEAR(b.legAfterM, bc, 1e-6);
+    RK_COMPARE_NEAR(b.plannedRadiusM, 926.0, 1e-9);
+    RK_COMPARE_NEAR(b.radiusM, 926.0, 1e-6);  // sailed as planned
+    QCOMPARE(b.wheelOverM, b.plannedWheelOverM);
+    const std::vector<TurnFit> bad = geo::turnsThatDoNotFit(r);
+    QCOMPARE(bad.size(), std::size_t{1});
+    const TurnFit& c = bad[0];
+    QCOMPARE(c.waypoint, std::size_t{2});
+    QVERIFY(!c.fits());
+    RK_COMPARE_NEAR(radToDeg(c.changeRad), 90.0, 0.01);  // north, then east: to starboard
+    RK_COMPARE_NEAR(c.plannedRadiusM, 2222.4, 1e-9);
+    RK_COMPARE_NEAR(c.plannedWheelOverM, 2222.4, 1.0);  // R tan 45
+    RK_COMPARE_NEAR(c.wheelOverM, cd / 2.0, 1e-6);      // the short leg limits it
+    RK_COMPARE_NEAR(c.radiusM, cd / 2.0, 1.0);          // w / tan 45
+    // The same turn on the route's default radius, once the waypoint's own is removed: it fits.
+    r.waypoints[2].turnRadiusNm.reset();
+    QVERIFY(geo::turnsThatDoNotFit(r).empty());
+    // A radius of 0 is a corner, and a corner always fits.
+    r.defaultTurnRadiusNm = 0.0;
+    QVERIFY(turnFit(r, 2).fits());
+    QCOMPARE(turnFit(r, 2).radiusM, 0.0);
+    // Back the way she came (a course change of 180 degrees): no arc is tangent to both legs; the turn
+    // is sailed in half the shorter leg on a radius of about nothing.
+    r.defaultTurnRadiusNm = 0.1;
+    r.waypoints[3].position = {0.0, 0.1};
+    const TurnFit u = turnFit(r, 2);
+    RK_COMPARE_NEAR(std::abs(radToDeg(u.changeRad)), 180.0, 0.01);
+    QVERIFY(!u.fits());
+    RK_COMPARE_NEAR(u.wheelOverM, bc / 2.0, 1e-6);
+    QVERIFY(u.radiusM < 1.0);
+    // The ends have no turn.
+    QVERIFY_THROWS_EXCEPTION(std::out_of_range, turnFit(r, 0));
+    QVERIFY_THROWS_EXCEPTION(std::out_of_range, turnFit(r, 3));
   }
   void problems() {
     Route r = twoLegs(LegGeometry::RhumbLine);

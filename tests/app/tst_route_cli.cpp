@@ -1,17 +1,22 @@
 // reckoner-cli route check as a user runs it: a route file written by Reckoner's RTZ writer and one
 // GPX written here, checked against the NOAA cell US5WA22M (Tacoma); the table, JSON Lines (each line
 // one object with the documented fields), exit 0 with findings; usage errors and a bad route file give
-// exit 2 and one line naming the file.
+// exit 2 and one line naming the file; the turns that do not fit between their legs, as
+// geo::turnsThatDoNotFit finds them, in the table and as JSON objects of kind "turn".
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <fstream>
 
 #include "app/cli_process.h"
 #include "geo/route.h"
+#include "geo/route_turns.h"
 #include "io/route_files.h"
+#include "support/compare_near.h"
 #include "support/route_fixtures.h"
 
 using namespace reckoner;
@@ -37,12 +42,27 @@ class TestRouteCli : public QObject {
     QVERIFY(dir_.isValid());
     io::writeRouteFile(path("land.rtz").toStdString(),
                        routeOf({{47.300, -122.470}, {47.285, -122.460}, {47.250, -122.470}}, 0.05));
-    io::writeRouteFile(path("channel.rtz").toStdString(), routeOf({{47.2802, -122.4162},
-                                                                   {47.273194, -122.404889},
-                                                                   {47.271028, -122.401361},
-                                                                   {47.265889, -122.393139},
-                                                                   {47.2588, -122.3818}},
-                                                                  0.015));
+    io::writeRouteFile(path("channel.rtz").toStdString(), channel());
+    io::writeRouteFile(path("tight.rtz").toStdString(), zigzag());
+  }
+
+  /// A zigzag in the bay, legs of 0.5 to 0.8 NM turning 80 to 100 degrees, on a default radius of 2 NM
+  /// that no turn has room for; WP3 a corner (radius 0).
+  static geo::Route zigzag() {
+    geo::Route r = routeOf(
+        {{47.30, -122.47}, {47.29, -122.46}, {47.295, -122.45}, {47.285, -122.44}, {47.29, -122.43}}, 0.05);
+    r.defaultTurnRadiusNm = 2.0;
+    r.waypoints[2].turnRadiusNm = 0.0;
+    return r;
+  }
+
+  static geo::Route channel() {
+    return routeOf({{47.2802, -122.4162},
+                    {47.273194, -122.404889},
+                    {47.271028, -122.401361},
+                    {47.265889, -122.393139},
+                    {47.2588, -122.3818}},
+                   0.015);
   }
 
   void jsonLinesOnePerFinding() {
@@ -57,6 +77,7 @@ class TestRouteCli : public QObject {
       const QJsonDocument doc = QJsonDocument::fromJson(line.toUtf8(), &err);
       QVERIFY2(err.error == QJsonParseError::NoError && doc.isObject(), qPrintable(line));
       const QJsonObject o = doc.object();
+      QVERIFY2(o["kind"].toString() != "turn", qPrintable(line));  // the route's one turn fits
       for (const char* k :
            {"leg", "lat_deg", "lon_deg", "kind", "class", "depth_m", "cell", "lnam", "attributes"})
         QVERIFY2(o.contains(QLatin1String(k)), k);
@@ -82,6 +103,48 @@ class TestRouteCli : public QObject {
     QCOMPARE(r2.code, 0);
     QVERIFY(!r2.out.contains("CTNARE"));
     QVERIFY(r2.out.contains("RESARE"));
+  }
+
+  void turnsThatDoNotFit() {
+    const geo::Route tight = zigzag();
+    const std::vector<geo::TurnFit> expected = geo::turnsThatDoNotFit(tight);
+    QCOMPARE(expected.size(), std::size_t{2});  // at WP2 and WP4; WP3 is a corner
+    const auto r =
+        runCli({"route", "check", path("tight.rtz"), "--enc", kEnc, "--safety-contour", "9", "--json"});
+    QCOMPARE(r.code, 0);
+    std::vector<QJsonObject> turns;
+    for (const QString& line : r.out.split('\n', Qt::SkipEmptyParts)) {
+      const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
+      if (o["kind"].toString() == "turn") turns.push_back(o);
+    }
+    QCOMPARE(turns.size(), expected.size());
+    for (std::size_t i = 0; i < turns.size(); ++i) {
+      const QJsonObject& o = turns[i];
+      const geo::TurnFit& t = expected[i];
+      const geo::Waypoint& w = tight.waypoints[t.waypoint];
+      QCOMPARE(o["waypoint"].toInt(), static_cast<int>(t.waypoint));
+      QCOMPARE(o["waypoint_id"].toInt(), w.id);
+      QCOMPARE(o["name"].toString(), QString::fromStdString(w.name));
+      QCOMPARE(o["dangerous"].toBool(), false);
+      RK_COMPARE_NEAR(o["lat_deg"].toDouble(), w.position.latDeg, 1e-9);
+      RK_COMPARE_NEAR(o["radius_nm"].toDouble(), 2.0, 1e-9);
+      RK_COMPARE_NEAR(o["sailed_radius_nm"].toDouble(), t.radiusM / 1852.0, 1e-5);
+      RK_COMPARE_NEAR(o["wheel_over_nm"].toDouble(), t.plannedWheelOverM / 1852.0, 1e-5);
+      RK_COMPARE_NEAR(std::min(o["leg_before_nm"].toDouble(), o["leg_after_nm"].toDouble()) / 2.0,
+                      std::min(t.legBeforeM, t.legAfterM) / 2.0 / 1852.0, 1e-5);
+      QVERIFY(o["sailed_radius_nm"].toDouble() < o["radius_nm"].toDouble());
+    }
+    // The table: a row per turn under its heading, and the count in the last line.
+    const auto table = runCli({"route", "check", path("tight.rtz"), "--enc", kEnc, "--safety-contour", "9"});
+    QCOMPARE(table.code, 0);
+    QVERIFY2(table.out.contains("turns that do not fit between their legs"), qPrintable(table.out));
+    QVERIFY2(table.out.contains("; 2 turn(s) that do not fit"), qPrintable(table.out));
+    QVERIFY(table.out.contains(QRegularExpression(QStringLiteral("\n2 +WP2 "))));
+    QVERIFY(table.out.contains(QRegularExpression(QStringLiteral("\n4 +WP4 "))));
+    // The channel on the default radius of 0.5 NM: every turn fits; the count says so.
+    const auto fits = runCli({"route", "check", path("channel.rtz"), "--enc", kEnc, "--safety-contour", "9"});
+    QVERIFY2(fits.out.contains("; 0 turn(s) that do not fit"), qPrintable(fits.out));
+    QVERIFY(!fits.out.contains("turns that do not fit between"));
   }
 
   void gpxRoute() {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "connections/connection_hub.h"
+#include "geo/route_turns.h"
 #include "ui/bridge/chart_load_worker.h"
 #include "ui/bridge/sim_history.h"
 #include "ui/bridge/simulation_controller.h"
@@ -256,6 +257,7 @@ class MainWindow : public QMainWindow {
   void applyRouteEdit(const geo::Route& after, const QString& what);
   void askExportRoute();
   void askDeleteRoute();
+  [[nodiscard]] std::vector<RouteFindingRow> routeTurnRows(const geo::Route& route) const;
   [[nodiscard]] std::vector<RouteFindingRow> routeFindingRows(const geo::Route& route) const;
   /// A finding chosen in the list: the chart centred on it, its feature's pick report.
   void showRouteFinding(int index);
@@ -356,6 +358,8 @@ class MainWindow : public QMainWindow {
   QTimer routeCheckTimer_;  ///< the check after an edit (single shot)
   RouteCheckCache routeCheck_;
   std::vector<charts::RouteFinding> routeFindings_;
+  std::vector<geo::TurnFit>
+      routeTurns_;  ///< the current route's turns that do not fit (rows after the findings)
   // Live mode.
   conn::ConnectionHub* hub_ = nullptr;
   ConnectionIndicator* indicator_ = nullptr;

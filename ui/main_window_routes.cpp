@@ -15,8 +15,11 @@
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
+#include <cmath>
 #include <set>
 
+#include "common/angles.h"
+#include "common/units.h"
 #include "io/text_format.h"
 #include "ui/main_window.h"
 #include "ui/panels/route_panel.h"
@@ -149,6 +152,7 @@ void MainWindow::connectRoutes() {
   });
   connect(routes_, &RouteLibrary::currentChanged, this, [this] {
     routeFindings_.clear();
+    routeTurns_.clear();
     showCurrentRoute();
   });
   connect(routes_, &RouteLibrary::routeChanged, this, [this](int index) {
@@ -238,7 +242,10 @@ void MainWindow::askDeleteRoute() {
 void MainWindow::checkRoute() {
   routeCheckTimer_.stop();
   routeFindings_.clear();
+  routeTurns_.clear();
   const geo::Route* r = routes_->currentRoute();
+  // The turns that do not fit between their legs need no chart (a route being drawn may not be valid yet).
+  if (r && r->problems().empty()) routeTurns_ = geo::turnsThatDoNotFit(*r);
   const charts::SafetySettings safety = safetySettingsOf(view_->settings());
   std::vector<RouteFindingRow> rows;
   QString summary;
@@ -265,8 +272,38 @@ void MainWindow::checkRoute() {
                    .arg(safety.safetyContourM, 0, 'g', 4)
                    .arg(safety.dangerDepthM(), 0, 'g', 4);
   }
+  if (!routeTurns_.empty()) {
+    summary += tr(" · %1 turn(s) that do not fit").arg(routeTurns_.size());
+    const std::vector<RouteFindingRow> turns = routeTurnRows(*r);
+    rows.insert(rows.end(), turns.begin(), turns.end());
+  }
   view_->routeOverlay()->setFindings(routeFindings_);
   routePanel_->setFindings(rows, summary);
+}
+
+std::vector<RouteFindingRow> MainWindow::routeTurnRows(const geo::Route& route) const {
+  std::vector<RouteFindingRow> rows;
+  for (const geo::TurnFit& t : routeTurns_) {
+    const geo::Waypoint& w = route.waypoints[t.waypoint];
+    RouteFindingRow row;
+    row.leg = static_cast<int>(t.waypoint);
+    row.turn = true;
+    row.legName = tr("at %1").arg(QString::fromStdString(w.name));
+    row.kind = tr("turn does not fit");
+    row.className = tr("%1° to %2: radius %3 NM needs %4 NM each side, legs %5 and %6 NM; sailed on %7 NM")
+                        .arg(std::abs(radToDeg(t.changeRad)), 0, 'f', 0)
+                        .arg(t.changeRad < 0.0 ? tr("port") : tr("starboard"))
+                        .arg(metresToNm(t.plannedRadiusM), 0, 'f', 2)
+                        .arg(metresToNm(t.plannedWheelOverM), 0, 'f', 2)
+                        .arg(metresToNm(t.legBeforeM), 0, 'f', 2)
+                        .arg(metresToNm(t.legAfterM), 0, 'f', 2)
+                        .arg(metresToNm(t.radiusM), 0, 'f', 2);
+    row.depth = QStringLiteral("–");
+    row.position = positionText({w.position.latDeg, w.position.lonDeg});
+    row.dangerous = false;
+    rows.push_back(row);
+  }
+  return rows;
 }
 
 std::vector<RouteFindingRow> MainWindow::routeFindingRows(const geo::Route& route) const {
@@ -303,6 +340,14 @@ void MainWindow::stopFollowingOwnShip() {
 }
 
 void MainWindow::showRouteFinding(int index) {
+  // The rows of the findings, then those of the turns that do not fit (at their waypoints).
+  const auto turn = static_cast<std::size_t>(index) - routeFindings_.size();
+  if (index >= 0 && static_cast<std::size_t>(index) >= routeFindings_.size() && turn < routeTurns_.size()) {
+    const auto k = static_cast<int>(routeTurns_[turn].waypoint);
+    routePanel_->selectWaypoint(k);
+    showRouteWaypoint(k);
+    return;
+  }
   if (index < 0 || index >= static_cast<int>(routeFindings_.size())) return;
   const charts::RouteFinding& f = routeFindings_[static_cast<std::size_t>(index)];
   view_->routeOverlay()->setSelectedFinding(static_cast<std::size_t>(index));

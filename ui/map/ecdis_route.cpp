@@ -69,9 +69,10 @@ void EcdisView::paintRouteMarks(QPainter& p, const RouteGeometry& g, const QColo
   for (const auto* side : {&g.port, &g.starboard})
     for (const auto& line : *side)
       if (line.size() >= 2) p.drawPolyline(polyline(m, line));
-  // The turns: the arc on the waypoint's radius and the wheel-over line across the leg where it begins.
+  // The turns as sailed: the arc and the wheel-over line across the leg where it begins. A turn whose
+  // radius has no room between its legs (sailed on a smaller one, a route check finding) is dashed.
   for (const RouteGeometry::Turn& t : g.turns) {
-    p.setPen(QPen(c, 1.5));
+    p.setPen(QPen(c, 1.5, t.fits ? Qt::SolidLine : Qt::DashLine));
     p.drawPolyline(polyline(m, t.arc));
     const QPointF at = pointOf(m, t.wheelOver);
     QPointF u(m.a * t.direction.x + m.b * t.direction.y, m.c * t.direction.x + m.d * t.direction.y);

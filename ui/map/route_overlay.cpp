@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "geo/route_turns.h"
 #include "ui/common/route_text.h"
 
 namespace reckoner::ui {
@@ -37,10 +38,12 @@ double distanceToSegment(QPointF p, QPointF a, QPointF b) {
   return QLineF(p, a + t * ab).length();
 }
 
-/// The turn at waypoint k: the arc tangent to the arriving leg at the wheel-over point and ending on
-/// the departing leg, constructed in Mercator (conformal, so a small circle stays a circle).
+/// The turn at waypoint k as the route monitor sails it (geo::turnFit: a radius that does not fit is
+/// reduced until it does): the arc tangent to the arriving leg at the wheel-over point and ending on the
+/// departing leg, constructed in Mercator (conformal, so a small circle stays a circle).
 std::optional<RouteGeometry::Turn> turnAt(const geo::Route& route, std::size_t k) {
-  const double d = geo::wheelOverDistanceM(route, k);
+  const geo::TurnFit fit = geo::turnFit(route, k);
+  const double d = fit.wheelOverM;
   if (!(d > 0.0) || !std::isfinite(d)) return std::nullopt;
   const double lenIn = geo::legLengthM(route, k);
   const charts::MercatorPoint p = mercatorOf(geo::legPoint(route, k, lenIn - d));
@@ -63,7 +66,7 @@ std::optional<RouteGeometry::Turn> turnAt(const geo::Route& route, std::size_t k
   const double cx = p.x + r * nx, cy = p.y + r * ny;
   const double a0 = std::atan2(p.y - cy, p.x - cx);
   const double sweep = wrapPi(std::atan2(q.y - cy, q.x - cx) - a0);
-  RouteGeometry::Turn t{k, p, {tx, ty}, {}};
+  RouteGeometry::Turn t{k, p, {tx, ty}, {}, fit.fits()};
   for (int s = 0; s <= kArcSteps; ++s) {
     const double a = a0 + sweep * s / kArcSteps;
     t.arc.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});

@@ -32,9 +32,10 @@ struct RouteGeometry {
   std::vector<std::vector<charts::MercatorPoint>> legs, port, starboard;
   struct Turn {
     std::size_t waypoint = 0;
-    charts::MercatorPoint wheelOver;         ///< where the turn on the waypoint's radius begins
+    charts::MercatorPoint wheelOver;         ///< where the turn as sailed begins (geo::turnFit)
     charts::MercatorPoint direction;         ///< the arriving leg's direction there (Mercator, unit length)
-    std::vector<charts::MercatorPoint> arc;  ///< the turn, tangent to both legs
+    std::vector<charts::MercatorPoint> arc;  ///< the turn as sailed, tangent to both legs
+    bool fits = true;  ///< false: the waypoint's radius has no room, a smaller one is sailed
   };
   std::vector<Turn> turns;
 };

@@ -210,10 +210,11 @@ void RoutePanel::setFindings(const std::vector<RouteFindingRow>& rows, const QSt
   findings_->setRowCount(static_cast<int>(rows.size()));
   for (int i = 0; i < static_cast<int>(rows.size()); ++i) {
     const RouteFindingRow& r = rows[static_cast<std::size_t>(i)];
-    const QString cells[] = {QStringLiteral("%1 %2").arg(r.leg).arg(r.legName), r.kind, r.className, r.depth,
-                             r.position};
+    const QString cells[] = {r.turn ? r.legName : QStringLiteral("%1 %2").arg(r.leg).arg(r.legName), r.kind,
+                             r.className, r.depth, r.position};
     for (int c = 0; c < 5; ++c) {
       auto* item = new QTableWidgetItem(cells[c]);
+      item->setToolTip(cells[c]);  // the class and a turn's figures are longer than their column
       if (r.dangerous && c == 1) {
         QFont f = item->font();
         f.setBold(true);

@@ -32,6 +32,7 @@ struct RouteFindingRow {
   QString depth;      ///< "4.2" or "–"
   QString position;   ///< as the window writes positions
   bool dangerous = true;
+  bool turn = false;  ///< a turn that does not fit at waypoint `leg`: legName says where ("at WP3")
 };
 
 class RoutePanel : public QWidget {

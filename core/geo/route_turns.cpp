@@ -6,9 +6,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/angles.h"
 #include "common/units.h"
 
 namespace reckoner::geo {
+namespace {
+/// The largest course change geo::wheelOverDistanceM turns on the planned radius (it caps the change there).
+constexpr double kMaxFittingChangeDeg = 179.0;
+}  // namespace
 
 TurnFit turnFit(const Route& route, std::size_t k) {
   if (k == 0 || k + 1 >= route.waypoints.size())
@@ -23,6 +28,8 @@ TurnFit turnFit(const Route& route, std::size_t k) {
   t.legAfterM = legLengthM(route, k + 1);
   t.wheelOverM = std::min({t.plannedWheelOverM, 0.5 * t.legBeforeM, 0.5 * t.legAfterM});
   t.radiusM = t.wheelOverM > 0.0 ? t.wheelOverM / std::tan(std::abs(t.changeRad) / 2.0) : 0.0;
+  t.fits = !(t.plannedRadiusM > 0.0) || t.changeRad == 0.0 ||
+           (t.wheelOverM >= t.plannedWheelOverM && std::abs(t.changeRad) <= degToRad(kMaxFittingChangeDeg));
   return t;
 }
 
@@ -30,7 +37,7 @@ std::vector<TurnFit> turnsThatDoNotFit(const Route& route) {
   std::vector<TurnFit> out;
   for (std::size_t k = 1; k + 1 < route.waypoints.size(); ++k) {
     TurnFit t = turnFit(route, k);
-    if (!t.fits()) out.push_back(t);
+    if (!t.fits) out.push_back(t);
   }
   return out;
 }

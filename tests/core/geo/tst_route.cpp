@@ -113,9 +113,10 @@ class TestRoute : public QObject {
     QCOMPARE(wheelOverDistanceM(r, 2), 0.0);
   }
   void turnsThatDoNotFit() {
-    // East 0.1 degree at the equator, north 0.1 degree, east again: two right-angle turns. Each leg's
-    // length from GeographicLib's inverse problem, here; half of the shorter leg at a turn is the most
-    // its wheel-over may take.
+    // East 0.1 degree along the equator, north 0.1 degree along a meridian, east again 0.03 degree: two
+    // right-angle turns. Along the equator and a meridian a rhumb line is the geodesic, and the short
+    // parallel differs from it by millimetres, so the legs are taken from GeographicLib's inverse problem
+    // here; half of the shorter leg at a turn is the most its wheel-over may take.
     Route r;
     r.defaultTurnRadiusNm = 0.5;
     r.waypoints = {{1, "A", {0.0, 0.0}, {}, {}},
@@ -133,7 +134,7 @@ class TestRoute : public QObject {
     // 0.5 NM fits at B (legs of about 6 NM) but not at C: the last leg is 1.8 NM, half of it 0.9 NM.
     r.waypoints[2].turnRadiusNm = 1.2;
     TurnFit b = turnFit(r, 1);
-    QVERIFY(b.fits());
+    QVERIFY(b.fits);
     RK_COMPARE_NEAR(radToDeg(b.changeRad), -90.0, 0.01);
     RK_COMPARE_NEAR(b.legBeforeM, ab, 1e-6);
     RK_COMPARE_NEAR(b.legAfterM, bc, 1e-6);
@@ -144,7 +145,7 @@ class TestRoute : public QObject {
     QCOMPARE(bad.size(), std::size_t{1});
     const TurnFit& c = bad[0];
     QCOMPARE(c.waypoint, std::size_t{2});
-    QVERIFY(!c.fits());
+    QVERIFY(!c.fits);
     RK_COMPARE_NEAR(radToDeg(c.changeRad), 90.0, 0.01);  // north, then east: to starboard
     RK_COMPARE_NEAR(c.plannedRadiusM, 2222.4, 1e-9);
     RK_COMPARE_NEAR(c.plannedWheelOverM, 2222.4, 1.0);  // R tan 45
@@ -155,7 +156,7 @@ class TestRoute : public QObject {
     QVERIFY(geo::turnsThatDoNotFit(r).empty());
     // A radius of 0 is a corner, and a corner always fits.
     r.defaultTurnRadiusNm = 0.0;
-    QVERIFY(turnFit(r, 2).fits());
+    QVERIFY(turnFit(r, 2).fits);
     QCOMPARE(turnFit(r, 2).radiusM, 0.0);
     // Back the way she came (a course change of 180 degrees): no arc is tangent to both legs; the turn
     // is sailed in half the shorter leg on a radius of about nothing.
@@ -163,9 +164,24 @@ class TestRoute : public QObject {
     r.waypoints[3].position = {0.0, 0.1};
     const TurnFit u = turnFit(r, 2);
     RK_COMPARE_NEAR(std::abs(radToDeg(u.changeRad)), 180.0, 0.01);
-    QVERIFY(!u.fits());
+    QVERIFY(!u.fits);
     RK_COMPARE_NEAR(u.wheelOverM, bc / 2.0, 1e-6);
     QVERIFY(u.radiusM < 1.0);
+    // The same reversal on a radius so small that its capped wheel-over (R tan 89.5°, 115 R = 2.1 km)
+    // has room in legs of 11 km: still not sailed as planned (a radius of about nothing), so reported.
+    r.defaultTurnRadiusNm = 0.01;
+    const TurnFit v = turnFit(r, 2);
+    QVERIFY(v.plannedWheelOverM < bc / 2.0);
+    QCOMPARE(v.wheelOverM, v.plannedWheelOverM);
+    QVERIFY(v.radiusM < 1e-6 * v.plannedRadiusM);
+    QVERIFY(!v.fits);
+    QCOMPARE(geo::turnsThatDoNotFit(r).size(), std::size_t{1});
+    // 179.5 degrees: the wheel-over of 179 degrees turns on half the planned radius
+    r.waypoints[3].position = {0.0, 0.1 + 0.1 * std::tan(degToRad(0.5))};
+    const TurnFit h = turnFit(r, 2);
+    RK_COMPARE_NEAR(std::abs(radToDeg(h.changeRad)), 179.5, 0.01);
+    RK_COMPARE_NEAR(h.radiusM / h.plannedRadiusM, std::tan(degToRad(89.5)) / std::tan(degToRad(89.75)), 0.01);
+    QVERIFY(!h.fits);
     // The ends have no turn.
     QVERIFY_THROWS_EXCEPTION(std::out_of_range, turnFit(r, 0));
     QVERIFY_THROWS_EXCEPTION(std::out_of_range, turnFit(r, 3));

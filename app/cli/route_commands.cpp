@@ -63,6 +63,7 @@ std::string turnJson(const geo::Route& route, const geo::TurnFit& t) {
   const geo::Waypoint& w = route.waypoints[t.waypoint];
   io::JsonWriter j(true);
   j.beginObject();
+  j.key("leg").value(static_cast<std::int64_t>(t.waypoint));  // the leg arriving at the turn
   j.key("kind").value("turn");
   j.key("dangerous").value(false);
   j.key("waypoint").value(static_cast<std::int64_t>(t.waypoint));

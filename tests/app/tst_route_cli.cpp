@@ -10,9 +10,11 @@
 #include <QTest>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "app/cli_process.h"
+#include "common/angles.h"
 #include "geo/route.h"
 #include "geo/route_turns.h"
 #include "io/route_files.h"
@@ -130,8 +132,16 @@ class TestRouteCli : public QObject {
       RK_COMPARE_NEAR(o["radius_nm"].toDouble(), 2.0, 1e-9);
       RK_COMPARE_NEAR(o["sailed_radius_nm"].toDouble(), t.radiusM / 1852.0, 1e-5);
       RK_COMPARE_NEAR(o["wheel_over_nm"].toDouble(), t.plannedWheelOverM / 1852.0, 1e-5);
-      RK_COMPARE_NEAR(std::min(o["leg_before_nm"].toDouble(), o["leg_after_nm"].toDouble()) / 2.0,
-                      std::min(t.legBeforeM, t.legAfterM) / 2.0 / 1852.0, 1e-5);
+      QCOMPARE(o["leg"].toInt(), static_cast<int>(t.waypoint));
+      RK_COMPARE_NEAR(o["lon_deg"].toDouble(), w.position.lonDeg, 1e-9);
+      RK_COMPARE_NEAR(o["change_deg"].toDouble(), radToDeg(geo::courseChangeRad(tight, t.waypoint)), 1e-4);
+      QVERIFY(o["change_deg"].toDouble() < -80.0);  // the zigzag turns to port at WP2 and WP4
+      RK_COMPARE_NEAR(o["leg_before_nm"].toDouble(), geo::legLengthM(tight, t.waypoint) / 1852.0, 1e-5);
+      RK_COMPARE_NEAR(o["leg_after_nm"].toDouble(), geo::legLengthM(tight, t.waypoint + 1) / 1852.0, 1e-5);
+      // sailed: half the shorter leg before the waypoint, on the radius tangent to both legs there
+      const double half = 0.5 * std::min(o["leg_before_nm"].toDouble(), o["leg_after_nm"].toDouble());
+      RK_COMPARE_NEAR(o["sailed_radius_nm"].toDouble(),
+                      half / std::tan(std::abs(degToRad(o["change_deg"].toDouble())) / 2.0), 1e-4);
       QVERIFY(o["sailed_radius_nm"].toDouble() < o["radius_nm"].toDouble());
     }
     // The table: a row per turn under its heading, and the count in the last line.

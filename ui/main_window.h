@@ -358,8 +358,9 @@ class MainWindow : public QMainWindow {
   QTimer routeCheckTimer_;  ///< the check after an edit (single shot)
   RouteCheckCache routeCheck_;
   std::vector<charts::RouteFinding> routeFindings_;
-  std::vector<geo::TurnFit>
-      routeTurns_;  ///< the current route's turns that do not fit (rows after the findings)
+  /// The current route's turns that do not fit (rows after the findings) and their waypoints' ids.
+  std::vector<geo::TurnFit> routeTurns_;
+  std::vector<int> routeTurnIds_;
   // Live mode.
   conn::ConnectionHub* hub_ = nullptr;
   ConnectionIndicator* indicator_ = nullptr;

@@ -15,6 +15,7 @@
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -153,6 +154,7 @@ void MainWindow::connectRoutes() {
   connect(routes_, &RouteLibrary::currentChanged, this, [this] {
     routeFindings_.clear();
     routeTurns_.clear();
+    routeTurnIds_.clear();
     showCurrentRoute();
   });
   connect(routes_, &RouteLibrary::routeChanged, this, [this](int index) {
@@ -245,7 +247,9 @@ void MainWindow::checkRoute() {
   routeTurns_.clear();
   const geo::Route* r = routes_->currentRoute();
   // The turns that do not fit between their legs need no chart (a route being drawn may not be valid yet).
+  routeTurnIds_.clear();
   if (r && r->problems().empty()) routeTurns_ = geo::turnsThatDoNotFit(*r);
+  for (const geo::TurnFit& t : routeTurns_) routeTurnIds_.push_back(r->waypoints[t.waypoint].id);
   const charts::SafetySettings safety = safetySettingsOf(view_->settings());
   std::vector<RouteFindingRow> rows;
   QString summary;
@@ -288,7 +292,8 @@ std::vector<RouteFindingRow> MainWindow::routeTurnRows(const geo::Route& route) 
     RouteFindingRow row;
     row.leg = static_cast<int>(t.waypoint);
     row.turn = true;
-    row.legName = tr("at %1").arg(QString::fromStdString(w.name));
+    row.legName =
+        tr("at %1").arg(w.name.empty() ? tr("waypoint %1").arg(w.id) : QString::fromStdString(w.name));
     row.kind = tr("turn does not fit");
     row.className = tr("%1° to %2: radius %3 NM needs %4 NM each side, legs %5 and %6 NM; sailed on %7 NM")
                         .arg(std::abs(radToDeg(t.changeRad)), 0, 'f', 0)
@@ -340,10 +345,18 @@ void MainWindow::stopFollowingOwnShip() {
 }
 
 void MainWindow::showRouteFinding(int index) {
-  // The rows of the findings, then those of the turns that do not fit (at their waypoints).
+  // The rows of the findings, then those of the turns that do not fit (at their waypoints, found by id:
+  // an edit may have moved them in the 300 ms before the check runs again).
   const auto turn = static_cast<std::size_t>(index) - routeFindings_.size();
   if (index >= 0 && static_cast<std::size_t>(index) >= routeFindings_.size() && turn < routeTurns_.size()) {
-    const auto k = static_cast<int>(routeTurns_[turn].waypoint);
+    view_->routeOverlay()->setSelectedFinding(std::nullopt);
+    const geo::Route* r = routes_->currentRoute();
+    if (!r) return;
+    const auto& wps = r->waypoints;
+    const auto it = std::find_if(wps.begin(), wps.end(),
+                                 [&](const geo::Waypoint& w) { return w.id == routeTurnIds_[turn]; });
+    if (it == wps.end()) return;
+    const auto k = static_cast<int>(it - wps.begin());
     routePanel_->selectWaypoint(k);
     showRouteWaypoint(k);
     return;

@@ -400,17 +400,22 @@ class TestRouteWindow : public QObject {
     saveWindowShot(w, QStringLiteral("route_check"));
   }
 
-  void turnsThatDoNotFitListedAfterTheFindings() {
-    if (!QDir(kTacoma).exists()) QSKIP("../shared/data/enc/US5WA22M is not here");
+  /// A zigzag in Commencement Bay of legs 0.5 to 0.8 NM on a default radius of 2 NM, WP3 a corner.
+  static geo::Route zigzag() {
+    geo::Route r = routeOf(
+        {{47.30, -122.47}, {47.29, -122.46}, {47.295, -122.45}, {47.285, -122.44}, {47.29, -122.43}}, 0.05);
+    r.defaultTurnRadiusNm = 2.0;
+    r.waypoints[2].turnRadiusNm = 0.0;
+    return r;
+  }
+
+  void turnsThatDoNotFitListedWithoutCharts() {
     freshRouteDir();
     MainWindow w(freshOptions());
     showAndWait(w);
-    // GIVEN a zigzag in the bay of legs 0.5 to 0.8 NM on a default radius of 2 NM, WP3 a corner
-    geo::Route zigzag = routeOf(
-        {{47.30, -122.47}, {47.29, -122.46}, {47.295, -122.45}, {47.285, -122.44}, {47.29, -122.43}}, 0.05);
-    zigzag.defaultTurnRadiusNm = 2.0;
-    zigzag.waypoints[2].turnRadiusNm = 0.0;
-    w.routeLibrary()->add(zigzag);
+    // GIVEN the zigzag
+    geo::Route route = zigzag();
+    w.routeLibrary()->add(route);
     // WHEN it is checked with no chart open THEN the turns are listed all the same
     action(w, "routeCheckAction")->trigger();
     QTableWidget* list = w.routePanel()->findingsTable();
@@ -420,48 +425,71 @@ class TestRouteWindow : public QObject {
     QCOMPARE(list->item(0, 0)->text(), QStringLiteral("at WP2"));
     QCOMPARE(list->item(1, 0)->text(), QStringLiteral("at WP4"));
     QCOMPARE(list->item(0, 1)->text(), QStringLiteral("turn does not fit"));
-    QVERIFY2(list->item(0, 2)->text().contains(QStringLiteral("radius 2.00 NM")),
+    QVERIFY2(list->item(0, 2)->text().startsWith(QStringLiteral("92° to port: radius 2.00 NM")),
              qPrintable(list->item(0, 2)->text()));
+    QCOMPARE(list->item(0, 2)->toolTip(), list->item(0, 2)->text());
     // The chart draws each turn as it is sailed, dashed: it begins half the shorter leg before its
     // waypoint and ends as far along the next leg (not 2 NM back, off the leg's start)
-    const RouteGeometry g = routeGeometry(zigzag);
+    const RouteGeometry g = routeGeometry(route);
     QCOMPARE(g.turns.size(), std::size_t{2});  // WP3 is a corner
     for (const RouteGeometry::Turn& t : g.turns) {
       const std::size_t k = t.waypoint;
-      const double half = 0.5 * std::min(geo::legLengthM(zigzag, k), geo::legLengthM(zigzag, k + 1));
+      const double half = 0.5 * std::min(geo::legLengthM(route, k), geo::legLengthM(route, k + 1));
       QVERIFY(!t.fits);
-      for (const auto& [at, to, along] : {std::tuple{t.wheelOver, k, geo::legLengthM(zigzag, k) - half},
+      for (const auto& [at, to, along] : {std::tuple{t.wheelOver, k, geo::legLengthM(route, k) - half},
                                           std::tuple{t.arc.back(), k + 1, half}}) {
-        const geo::GeoPoint e = geo::legPoint(zigzag, to, along);
+        const geo::GeoPoint e = geo::legPoint(route, to, along);
         const charts::MercatorPoint m = charts::toMercator({e.latDeg, e.lonDeg});
         RK_COMPARE_NEAR(at.x, m.x, 1e-3);
         RK_COMPARE_NEAR(at.y, m.y, 1e-3);
       }
     }
-    // AND with the chart open they come after the findings, and choosing one selects its waypoint
+    // WHEN a waypoint is inserted before WP2 and the turn at WP4 is chosen before the check runs again
+    // THEN WP4 is selected where it now is (row 4), not the waypoint at its old index
+    geo::Waypoint extra = route.waypoints[0];
+    extra.id = 99;
+    extra.name = "WP1a";
+    extra.position = {47.295, -122.465};
+    route.waypoints.insert(route.waypoints.begin() + 1, extra);
+    QString error;
+    QVERIFY2(w.routeLibrary()->edit(route, QStringLiteral("insert"), &error), qPrintable(error));
+    QVERIFY(w.routeCheckPending());
+    list->setCurrentCell(1, 0);
+    QCOMPARE(w.chart()->routeOverlay()->selectedWaypoint().value_or(99), std::size_t{4});
+    QCOMPARE(w.routePanel()->table()->currentIndex().row(), 4);
+    // AND once the radius is one the legs have room for, nothing is listed for the turns
+    route.defaultTurnRadiusNm = 0.1;
+    QVERIFY2(w.routeLibrary()->edit(route, QStringLiteral("radius"), &error), qPrintable(error));
+    w.checkRoute();
+    QCOMPARE(list->rowCount(), 0);
+    QVERIFY(!w.routePanel()->checkSummary()->text().contains(QStringLiteral("turn(s)")));
+  }
+
+  void turnsThatDoNotFitListedAfterTheFindings() {
+    if (!QDir(kTacoma).exists()) QSKIP("../shared/data/enc/US5WA22M is not here");
+    freshRouteDir();
+    MainWindow w(freshOptions());
+    showAndWait(w);
+    w.routeLibrary()->add(zigzag());
+    // WHEN the chart is open THEN the turns come after the findings, and choosing one selects its waypoint
     w.openCharts(kTacoma);
     QTRY_VERIFY_WITH_TIMEOUT(!w.chartsLoading(), kTimeoutMs);
     QTRY_VERIFY_WITH_TIMEOUT(!w.routeCheckPending(), kTimeoutMs);
+    QTableWidget* list = w.routePanel()->findingsTable();
     const int findings = static_cast<int>(w.routeFindings().size());
     QVERIFY(findings > 0);  // the zigzag crosses the shoals off the point
     QCOMPARE(list->rowCount(), findings + 2);
     QCOMPARE(list->item(findings + 1, 0)->text(), QStringLiteral("at WP4"));
+    list->setCurrentCell(0, 0);  // a finding first: its ring is selected
+    QCOMPARE(w.chart()->routeOverlay()->selectedFinding().value_or(99), std::size_t{0});
     list->setCurrentCell(findings + 1, 0);
     QCOMPARE(w.chart()->routeOverlay()->selectedWaypoint().value_or(99), std::size_t{3});
     QCOMPARE(w.routePanel()->table()->currentIndex().row(), 3);
-    // AND once the radius is one the legs have room for, nothing is listed for the turns
-    zigzag.defaultTurnRadiusNm = 0.1;
-    w.routeLibrary()->edit(zigzag, QStringLiteral("radius"), nullptr);
-    w.checkRoute();
-    QCOMPARE(list->rowCount(), static_cast<int>(w.routeFindings().size()));
-    QVERIFY(!w.routePanel()->checkSummary()->text().contains(QStringLiteral("turn(s)")));
+    QVERIFY(!w.chart()->routeOverlay()->selectedFinding());  // and the finding's is not
     // The picture: the first turn row chosen
-    zigzag.defaultTurnRadiusNm = 2.0;
-    w.routeLibrary()->edit(zigzag, QStringLiteral("radius"), nullptr);
-    w.checkRoute();
     w.chart()->setView({47.292, -122.45}, 25000.0);
     if (auto* d = w.findChild<QDockWidget*>(QStringLiteral("routeDock"))) d->raise();
-    list->setCurrentCell(static_cast<int>(w.routeFindings().size()), 0);
+    list->setCurrentCell(findings, 0);
     saveWindowShot(w, QStringLiteral("route_turns"));
   }
 };

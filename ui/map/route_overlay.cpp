@@ -66,7 +66,7 @@ std::optional<RouteGeometry::Turn> turnAt(const geo::Route& route, std::size_t k
   const double cx = p.x + r * nx, cy = p.y + r * ny;
   const double a0 = std::atan2(p.y - cy, p.x - cx);
   const double sweep = wrapPi(std::atan2(q.y - cy, q.x - cx) - a0);
-  RouteGeometry::Turn t{k, p, {tx, ty}, {}, fit.fits()};
+  RouteGeometry::Turn t{k, p, {tx, ty}, {}, fit.fits};
   for (int s = 0; s <= kArcSteps; ++s) {
     const double a = a0 + sweep * s / kArcSteps;
     t.arc.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});

@@ -13,7 +13,11 @@
 namespace reckoner::io::nmea {
 namespace {
 
+/// "ddmm.mmmm,N" (or with three degree digits, a longitude); "," (both fields empty) for a value not finite
+/// or beyond 90 (latitude) or 180 degrees, as a track's position that is unknown (never "nan", nor a
+/// cast of NaN to int).
 std::string angleField(double deg, int degDigits, int minuteDecimals, char pos, char neg) {
+  if (!std::isfinite(deg) || std::abs(deg) > (degDigits == 2 ? 90.0 : 180.0)) return ",";
   const int decimals = std::clamp(minuteDecimals, 0, 9);
   const double a = std::abs(deg);
   int d = static_cast<int>(std::floor(a));
@@ -186,11 +190,30 @@ ErrorEllipse errorEllipse(double varNorthM2, double varEastM2, double covNorthEa
 }
 
 std::string ttm(std::string_view talker, const TtmOut& v) {
-  return sentence(
-      talker, "TTM",
-      {clampInt(v.number, 0, 99, 2), num(v.distanceNm, 3), degrees(v.bearingDeg, 1), ch(v.bearingRef),
-       num(v.speedKn, 2), degrees(v.courseDeg, 1), ch(v.courseRef), num(v.cpaNm, 3), num(v.tcpaMin, 2), "N",
-       escapeText(v.name, 20), ch(v.status), v.reference ? "R" : "", nmeaTime(v.utc), ch(v.acquisition)});
+  // Numbers bounded so that the sentence fits: distance and CPA at most 999.999 NM, speed 999.99 kn,
+  // TCPA within +-9999.99 minutes (about a week: farther is no alarm); then the name cut to the room left.
+  const auto bounded = [](std::optional<double> x, double lo, double hi, int decimals) {
+    return x && std::isfinite(*x) ? num(std::clamp(*x, lo, hi), decimals) : std::string{};
+  };
+  std::vector<std::string> f{clampInt(v.number, 0, 99, 2),
+                             bounded(v.distanceNm, 0.0, 999.999, 3),
+                             degrees(v.bearingDeg, 1),
+                             ch(v.bearingRef),
+                             bounded(v.speedKn, 0.0, 999.99, 2),
+                             degrees(v.courseDeg, 1),
+                             ch(v.courseRef),
+                             bounded(v.cpaNm, 0.0, 999.999, 3),
+                             bounded(v.tcpaMin, -9999.99, 9999.99, 2),
+                             "N",
+                             "",
+                             ch(v.status),
+                             v.reference ? "R" : "",
+                             nmeaTime(v.utc),
+                             ch(v.acquisition)};
+  const std::size_t used = sentence(talker, "TTM", f).size();
+  f[10] =
+      escapeText(v.name, std::min<std::size_t>(20, kMaxSentenceChars > used ? kMaxSentenceChars - used : 0));
+  return sentence(talker, "TTM", f);
 }
 
 std::string tll(std::string_view talker, const TllOut& v) {

@@ -17,7 +17,8 @@ namespace reckoner::io::nmea {
 
 /// Latitude as the two fields "ddmm.mmmmmm,N" (south: S); longitude "dddmm.mmmmmm,E" (west: W).
 /// Degrees in [-90, 90] and [-180, 180]; minuteDecimals (0-9) decimals of minutes, 6 (2 mm) unless
-/// a sentence needs the room; the minutes never print as 60.
+/// a sentence needs the room; the minutes never print as 60. A value not finite or outside those ranges
+/// gives both fields empty (","), never "nan".
 std::string nmeaLatitude(double latDeg, int minuteDecimals = 6);
 std::string nmeaLongitude(double lonDeg, int minuteDecimals = 6);
 /// UTC time of day "hhmmss.ss" (truncated to the hundredth) and date "ddmmyy".

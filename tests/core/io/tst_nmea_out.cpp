@@ -7,7 +7,9 @@
 #include <QTest>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <utility>
 
 #include "io/nmea.h"
 #include "io/nmea_out.h"
@@ -204,6 +206,63 @@ class TestNmeaOut : public QObject {
     const auto g = fieldsOf(ttm("RA", t));
     QCOMPARE(g[8], std::string(""));
     QCOMPARE(g[9], std::string(""));
+  }
+
+  void ttmNeverLongerThan82Characters() {
+    // GIVEN the longest values a run can give: a track number of eight digits, a TCPA of 33,000 minutes
+    // (a slow closing speed), a distance and speed beyond any radar's
+    TtmOut t;
+    t.number = 42;
+    t.distanceNm = 1.0e6;
+    t.bearingDeg = 359.9;
+    t.speedKn = 5000.0;
+    t.courseDeg = 359.9;
+    t.cpaNm = 12345.678;
+    t.tcpaMin = -33000.0;
+    t.name = "TRK12345678";
+    t.status = 'T';
+    t.utc = kUtc;
+    t.acquisition = 'A';
+    const std::string line = ttm("RA", t);
+    // THEN the sentence with CR LF is at most 82 characters, the numbers at their bounds, the name cut
+    QVERIFY2(line.size() + 2 <= 82, line.c_str());
+    const auto f = fieldsOf(line);
+    QCOMPARE(f.size(), std::size_t(16));
+    QCOMPARE(f[2], std::string("999.999"));
+    QCOMPARE(f[5], std::string("999.99"));
+    QCOMPARE(f[8], std::string("999.999"));
+    QCOMPARE(f[9], std::string("-9999.99"));
+    QVERIFY2(!f[11].empty() && std::string("TRK12345678").starts_with(f[11]), f[11].c_str());
+    QVERIFY(f[11].size() < 11);
+    // AND an ordinary line keeps the whole name of a five-digit track id (a day of clutter's tentative
+    // tracks), while one of eight digits is cut even there (81 characters with it)
+    t.distanceNm = 3.2;
+    t.speedKn = 12.0;
+    t.cpaNm = 0.4;
+    t.tcpaMin = 12.5;
+    QVERIFY(fieldsOf(ttm("RA", t))[11].size() < 11);
+    t.name = "TRK12345";
+    QCOMPARE(fieldsOf(ttm("RA", t))[11], std::string("TRK12345"));
+  }
+
+  void tllOfAnUnknownPositionHasEmptyFields() {
+    // A track whose estimate is not finite (a diverged filter) or out of range: empty fields, never "nan"
+    for (const auto& [lat, lon] :
+         {std::pair{std::nan(""), 10.0}, std::pair{10.0, std::numeric_limits<double>::infinity()},
+          std::pair{95.0, 200.0}}) {
+      const std::string line = tll("RA", {7, lat, lon, "TRK7", kUtc, 'T', false});
+      QVERIFY2(line.find("nan") == std::string::npos && line.find("inf") == std::string::npos, line.c_str());
+      const auto f = fieldsOf(line);
+      QCOMPARE(f.size(), std::size_t(10));
+      if (!std::isfinite(lat) || std::abs(lat) > 90.0) {
+        QCOMPARE(f[2], std::string(""));
+        QCOMPARE(f[3], std::string(""));
+      }
+      if (!std::isfinite(lon) || std::abs(lon) > 180.0) {
+        QCOMPARE(f[4], std::string(""));
+        QCOMPARE(f[5], std::string(""));
+      }
+    }
   }
 
   void tllAndOsd() {

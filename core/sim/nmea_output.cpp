@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "common/angles.h"
 #include "common/units.h"
@@ -105,6 +106,26 @@ int kindIndex(alerts::AlertKind k) {
   return static_cast<int>(k);
 }
 
+/// ALF's alert identifier of a kind: in the range IEC 61924-2 leaves to manufacturers (10000 and up);
+/// Reckoner's kinds are not the standard's alerts.
+int alertIdentifier(alerts::AlertKind k) {
+  return 10001 + kindIndex(k);
+}
+
+int positiveMod(long long v, int m) {
+  return static_cast<int>(((v % m) + m) % m);
+}
+
+/// `preferred` if not taken, else the next number in [lo, hi] that is not (wrapping to lo); `preferred`
+/// when every one is.
+int firstFree(const std::set<int>& taken, int preferred, int lo, int hi) {
+  for (int i = 0, n = hi - lo + 1; i < n; ++i) {
+    const int c = lo + positiveMod(static_cast<long long>(preferred) - lo + i, n);
+    if (!taken.contains(c)) return c;
+  }
+  return preferred;
+}
+
 }  // namespace
 
 OwnShipFix ownShipFixOf(const OwnShipRow& row, UtcUs utc, const geo::LocalFrame& frame) {
@@ -195,12 +216,21 @@ std::vector<std::string> NmeaOutput::ownShip(const OwnShipFix& fix) {
     if (std::isfinite(fix.headingTrueDeg)) o.headingTrueDeg = fix.headingTrueDeg;
     o.courseTrueDeg = fix.cogTrueDeg;
     o.speedKn = fix.sogKn;
-    // Over ground from the positioning system while fixes come; dead reckoning: through the water
-    // (log and heading) plus the estimated current.
-    o.courseRef = o.speedRef = fix.deadReckoning ? 'W' : 'P';
-    if (std::isfinite(fix.setTrueDeg) && std::isfinite(fix.driftKn)) {
+    const bool current = std::isfinite(fix.setTrueDeg) && std::isfinite(fix.driftKn);
+    if (current) {
       o.setTrueDeg = fix.setTrueDeg;
       o.driftKn = fix.driftKn;
+    }
+    // Over ground from the positioning system while fixes come (`P`). Dead reckoning: the motion through
+    // the water (`W`: the estimate over ground less the estimated current, which set and drift give), so
+    // that a reader adding set and drift to it gets the ground track once, not the current twice.
+    o.courseRef = o.speedRef = fix.deadReckoning ? 'W' : 'P';
+    if (fix.deadReckoning && current && std::isfinite(fix.cogTrueDeg) && std::isfinite(fix.sogKn)) {
+      const double cog = degToRad(fix.cogTrueDeg), set = degToRad(fix.setTrueDeg);
+      const double east = fix.sogKn * std::sin(cog) - fix.driftKn * std::sin(set);
+      const double north = fix.sogKn * std::cos(cog) - fix.driftKn * std::cos(set);
+      o.speedKn = std::hypot(east, north);
+      o.courseTrueDeg = radToDeg(wrapTwoPi(std::atan2(east, north)));
     }
     out.push_back(nm::osd(options_.radarTalker, o));
   }
@@ -271,13 +301,30 @@ std::optional<int> NmeaOutput::targetNumber(int trackId) const {
   return it->second;
 }
 
+void NmeaOutput::number(const alerts::AlertId& id, Sent& s) const {
+  std::set<int> numbers, instances;
+  for (const auto& [other, o] : sent_) {
+    if (other == id) continue;
+    numbers.insert(o.alrNumber);
+    if (other.kind == id.kind) instances.insert(o.instance);
+  }
+  // ALR: 50 numbers a kind (kind 0 from 001, kind 1 from 051, ...), the source's among them; ALF: the
+  // source (track id, MMSI, ...) + 1 when it fits in six digits. The next free number when taken, so that
+  // a receiver that keys on the number never mixes two alerts up.
+  s.alrNumber = firstFree(numbers, kindIndex(id.kind) * 50 + 1 + positiveMod(id.source, 50), 1, 999);
+  const long long own = static_cast<long long>(id.source) + 1;
+  s.instance = firstFree(
+      instances, own >= 1 && own <= 999999 ? static_cast<int>(own) : positiveMod(id.source, 999999) + 1, 1,
+      999999);
+}
+
 void NmeaOutput::emitAlert(std::vector<std::string>& out, const alerts::Alert& a, const Sent& s,
                            UtcUs changedUtc, bool cleared) {
   const std::string title = alerts::traitsOf(a.id.kind).name;
   if (options_.alertSentences != AlertSentences::AlfAlc) {
     nm::AlrOut r;
     r.utc = changedUtc;
-    r.number = (kindIndex(a.id.kind) + 1) * 100 + ((a.id.source % 100) + 100) % 100;
+    r.number = s.alrNumber;
     r.active = !cleared && a.state != alerts::AlertState::Rectified;
     r.acknowledged = a.state == alerts::AlertState::Acknowledged;
     r.text = a.text.empty() ? title : title + ": " + a.text;
@@ -291,8 +338,8 @@ void NmeaOutput::emitAlert(std::vector<std::string>& out, const alerts::Alert& a
     f.priority = priorityLetter(a.priority);
     f.state = cleared ? 'N' : stateLetter(a.state);
     f.manufacturer = "RKN";
-    f.identifier = 1001 + kindIndex(a.id.kind);
-    f.instance = std::clamp(a.id.source + 1, 1, 999999);
+    f.identifier = alertIdentifier(a.id.kind);
+    f.instance = s.instance;
     f.revision = s.revision;
     f.escalation = a.escalated ? 1 : 0;
     f.title = title;
@@ -328,6 +375,7 @@ std::vector<std::string> NmeaOutput::alerts(TimeUs now, UtcUs utc, const std::ve
       s.escalated = a.escalated;
       s.sentUs = now;
       s.last = a;
+      number(a.id, s);
       emitAlert(out, a, s, utcOf(a.changedUs), false);
       sent_.emplace(a.id, s);
       continue;
@@ -348,7 +396,7 @@ std::vector<std::string> NmeaOutput::alerts(TimeUs now, UtcUs utc, const std::ve
     lastListUs_ = now;
     std::vector<nm::AlcEntry> entries;
     for (const auto& [id, s] : sent_)
-      entries.push_back({"RKN", 1001 + kindIndex(id.kind), std::clamp(id.source + 1, 1, 999999), s.revision});
+      entries.push_back({"RKN", alertIdentifier(id.kind), s.instance, s.revision});
     for (auto& l : nm::alc(options_.alertTalker, nextSequence(), entries)) out.push_back(std::move(l));
   }
   return counted(out);

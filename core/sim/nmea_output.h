@@ -99,7 +99,11 @@ class NmeaOutput {
     int revision = 1;
     TimeUs sentUs = 0;
     alerts::Alert last;
+    int alrNumber = 0;  ///< ALR's alarm number, unique among the alerts sent (1-999)
+    int instance = 0;   ///< ALF's and ALC's instance, unique among the alerts of its identifier
   };
+  /// A new alert's ALR number and ALF instance, free among those sent (sent_ without it).
+  void number(const alerts::AlertId& id, Sent& s) const;
   void emitAlert(std::vector<std::string>& out, const alerts::Alert& a, const Sent& s, UtcUs changedUtc,
                  bool cleared);
   int nextSequence() { return sequence_ = (sequence_ + 1) % 10; }

@@ -3,7 +3,8 @@
 // every position sentence while dead reckoning carries mode E / quality 6 and every other one A / 1,
 // own ship goes out at most once a second, GST carries the estimate's own sd, every track's TTM/TLL
 // keeps its target number, and POSITION SOURCE LOST goes out as ALR/ALF on change and every 30 s with
-// the ALC list; the same for a replay of the run's recording; target numbers are reused round robin.
+// the ALC list, ALR numbers and ALF instances unique across kinds and sources, OSD through the water while
+// dead reckoning; the same for a replay of the run's recording; target numbers are reused round robin.
 #include <QTest>
 
 #include <map>
@@ -199,8 +200,8 @@ class TestNmeaOutput : public QObject {
       QVERIFY2(f, l.c_str());
       if (typeOf(l) == "ALF" && (*f)[2] == "1") {
         alf.emplace_back(static_cast<int>(toSeconds(t)), (*f)[7]);
-        QCOMPARE((*f)[6], std::string("A"));  // POSITION SOURCE LOST is an alarm
-        QCOMPARE((*f)[9], std::string("1005"));
+        QCOMPARE((*f)[6], std::string("A"));      // POSITION SOURCE LOST is an alarm
+        QCOMPARE((*f)[9], std::string("10005"));  // Reckoner's own identifiers: 10001 + kind
       }
       if (typeOf(l) == "ALC") alc.push_back(static_cast<int>(toSeconds(t)));
     }
@@ -208,6 +209,87 @@ class TestNmeaOutput : public QObject {
     const std::vector<std::pair<int, std::string>> expected{{10, "V"}, {40, "V"}, {50, "A"}, {80, "N"}};
     QCOMPARE(alf, expected);
     QCOMPARE(alc, (std::vector<int>{0, 30, 60, 90}));
+  }
+
+  void osdWhileDeadReckoningIsThroughTheWater() {
+    // GIVEN own ship dead reckoning over ground 090 at 10 kn in a current setting 000 at 2 kn: through
+    // the water she makes 10 kn on 090 less 2 kn north, 10.198 kn on 101.31 degrees (worked by hand)
+    NmeaOutput out;
+    OwnShipFix fix;
+    fix.utcUs = kUtc0;
+    fix.latDeg = 50.0;
+    fix.lonDeg = -3.0;
+    fix.sogKn = 10.0;
+    fix.cogTrueDeg = 90.0;
+    fix.setTrueDeg = 0.0;
+    fix.driftKn = 2.0;
+    fix.deadReckoning = true;
+    const auto osdOf = [&](const OwnShipFix& x) {
+      for (const auto& l : out.ownShip(x))
+        if (typeOf(l) == "OSD") return *io::nmea::checkedFields(l);
+      return std::vector<std::string>{};
+    };
+    // THEN OSD gives that, referenced to the water, with set and drift
+    auto o = osdOf(fix);
+    QCOMPARE(o.size(), std::size_t(10));
+    QCOMPARE(o[3], std::string("101.3"));
+    QCOMPARE(o[4], std::string("W"));
+    QCOMPARE(o[5], std::string("10.20"));
+    QCOMPARE(o[6], std::string("W"));
+    QCOMPARE(o[7], std::string("0.0"));
+    QCOMPARE(o[8], std::string("2.00"));
+    // AND with a fix the same motion is over ground, from the positioning system
+    fix.deadReckoning = false;
+    fix.utcUs += fromSeconds(2);
+    o = osdOf(fix);
+    QCOMPARE(o[3], std::string("90.0"));
+    QCOMPARE(o[4], std::string("P"));
+    QCOMPARE(o[5], std::string("10.00"));
+  }
+
+  void alertNumbersAreUniqueAcrossKindsAndSources() {
+    // GIVEN every kind of alert from sources that collided before (0, 50, 100: the same source mod 50
+    // and 100) and AIS alerts of MMSIs (all above 999999, which were clamped to one instance)
+    NmeaOutput out;
+    alerts::AlertManager m;
+    std::vector<alerts::AlertId> ids;
+    for (int k = 0; k < alerts::kAlertKindCount; ++k)
+      for (const int source : {0, 50, 100}) ids.push_back({static_cast<alerts::AlertKind>(k), source});
+    for (const int mmsi : {244000001, 244999999, 245000000, 211999998})
+      ids.push_back({alerts::AlertKind::AisCpaTcpa, mmsi});
+    const TimeUs now = fromSeconds(1);
+    for (const auto& id : ids) m.report(now, id, true, "test");
+    m.tick(now);
+    QCOMPARE(m.alerts().size(), ids.size());
+    // WHEN they are sent
+    std::set<std::string> alr, alf;
+    std::size_t alrCount = 0, alfCount = 0;
+    for (const auto& l : out.alerts(now, kUtc0 + now, m.alerts())) {
+      const auto f = io::nmea::checkedFields(l);
+      QVERIFY2(f, l.c_str());
+      if (typeOf(l) == "ALR") {
+        ++alrCount;
+        alr.insert((*f)[2]);
+      }
+      if (typeOf(l) == "ALF" && (*f)[2] == "1") {
+        ++alfCount;
+        QVERIFY2(std::stoi((*f)[9]) >= 10001 && std::stoi((*f)[9]) <= 10000 + alerts::kAlertKindCount,
+                 l.c_str());
+        alf.insert((*f)[9] + "/" + (*f)[10]);
+      }
+    }
+    // THEN every alert has its own ALR number and its own (identifier, instance) pair
+    QCOMPARE(alrCount, ids.size());
+    QCOMPARE(alr.size(), ids.size());
+    QCOMPARE(alfCount, ids.size());
+    QCOMPARE(alf.size(), ids.size());
+    // AND a number stays with its alert while it lasts: sent again 30 s later, the same set
+    std::set<std::string> again;
+    const TimeUs later = fromSeconds(31);
+    m.tick(later);
+    for (const auto& l : out.alerts(later, kUtc0 + later, m.alerts()))
+      if (typeOf(l) == "ALR") again.insert((*io::nmea::checkedFields(l))[2]);
+    QCOMPARE(again, alr);
   }
 
   void replayOfTheRecordingIsMarkedToo() {

@@ -161,7 +161,7 @@ std::size_t minimumBits(int type, std::uint32_t part) {
     case 4:
       return 149;
     case 5:
-      return 422;
+      return 420;  // the destination's end: many transmitters send 420 bits, not 424 (gpsd accepts them)
     case 18:
       return 148;
     case 19:

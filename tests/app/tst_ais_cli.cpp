@@ -161,7 +161,7 @@ int compareMessage(const QJsonObject& g, const QJsonObject& raw, const QJsonObje
 /// Decodes `file` with gpsdecode and with `reckoner-cli ais decode --json`, compares them message by
 /// message (every type we decode must appear, each gpsdecode message of those types must be ours with
 /// equal fields) and returns the number of fields compared. `expected` (if >= 0) is the message count.
-int compareWithGpsdecode(const QString& file, int expected = -1) {
+int compareWithGpsdecode(const QString& file, int expected = -1, bool everyType = true) {
   const QString gpsdecode = QStandardPaths::findExecutable("gpsdecode");
   if (gpsdecode.isEmpty()) {
     QTest::qFail("gpsdecode (Debian gpsd-clients, scripts/bootstrap.sh) is not installed", __FILE__,
@@ -212,7 +212,8 @@ int compareWithGpsdecode(const QString& file, int expected = -1) {
   }
   qInfo("%d fields of %zu messages of %s compared with gpsdecode", compared, ours.size(),
         qPrintable(QFileInfo(file).fileName()));
-  if (types != supported) QTest::qFail("not every decoded type is in the file", __FILE__, __LINE__);
+  if (everyType && types != supported)
+    QTest::qFail("not every decoded type is in the file", __FILE__, __LINE__);
   return compared;
 }
 
@@ -239,6 +240,22 @@ class TestAisCli : public QObject {
     f.close();
     const int compared = compareWithGpsdecode(f.fileName(), static_cast<int>(lines.size()) - 1);
     QVERIFY(compared > 120);
+  }
+  /// GIVEN a type 5 of 420 bits (70 characters, fill 0: the destination's last character and the DTE
+  /// bit cut, as many transmitters send it) in two fragments WHEN gpsdecode and `ais decode --json` read
+  /// it THEN both decode it, with equal fields (before, ours refused it as too short: no name, no hull).
+  void typeFiveOf420BitsMatchesGpsdecode() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QFile f(dir.filePath("type5_420.aivdm"));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    const auto cut = reckoner::test::ais::staticVoyage().truncate(420);
+    for (const auto& l : reckoner::test::ais::fragments(cut, 4)) f.write((l + "\r\n").c_str());
+    f.close();
+    QVERIFY(compareWithGpsdecode(f.fileName(), 1, false) >= 10);
+    const auto r = runCli({"ais", "decode", f.fileName(), "--json"});
+    QVERIFY2(r.out.contains("\"name\":\"EVER DIADEM\"") && r.out.contains("\"destination\":\"NEW YORK\""),
+             qPrintable(r.out));
   }
   void textOutputAndSummary() {
     if (!QFile::exists(kSample)) QSKIP(qPrintable(kSample + " is absent (../shared/data/ais)"));

@@ -192,7 +192,7 @@ class TestAis : public QObject {
     QTest::addColumn<int>("minimum");
     QTest::newRow("1") << 1 << 149;
     QTest::newRow("4") << 4 << 149;
-    QTest::newRow("5") << 5 << 422;
+    QTest::newRow("5") << 5 << 420;
     QTest::newRow("18") << 18 << 148;
     QTest::newRow("19") << 19 << 306;
     QTest::newRow("21") << 21 << 272;

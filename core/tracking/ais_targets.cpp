@@ -14,6 +14,8 @@ namespace reckoner::track {
 namespace {
 
 constexpr double kEarthRadiusM = 6371008.8;  // mean radius, for the capacity rule's rough distance
+/// The largest SOG taken as "at rest" when a report gives no COG (AIS SOG is in steps of 0.1 kn).
+constexpr double kStationarySogKn = 0.1;
 
 /// Navigational status 1 (at anchor) and 5 (moored): ITU-R M.1371 Table 1's "at anchor or moored".
 bool anchoredOrMoored(const AisTarget& t) {
@@ -192,10 +194,15 @@ void AisTargetTable::merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) c
   keep(s.vendor, m.vendor);
   keep(s.imo, m.imo);
   keep(s.shipType, m.shipType);
-  keep(s.toBowM, m.toBowM);
-  keep(s.toSternM, m.toSternM);
-  keep(s.toPortM, m.toPortM);
-  keep(s.toStarboardM, m.toStarboardM);
+  // The four dimensions are one set (a 0 among them is the reference point at that edge); all four 0
+  // is "not available" (ITU-R M.1371) and keeps the set known, as a type 19 or 24 B of a unit not set up.
+  const auto zero = [](const std::optional<int>& d) { return !d || *d == 0; };
+  if (!(zero(m.toBowM) && zero(m.toSternM) && zero(m.toPortM) && zero(m.toStarboardM))) {
+    s.toBowM = m.toBowM;
+    s.toSternM = m.toSternM;
+    s.toPortM = m.toPortM;
+    s.toStarboardM = m.toStarboardM;
+  }
   keep(s.draughtM, m.draughtM);
   if (m.type == 5) {  // the ETA is one field: a type 5 replaces all of it
     s.etaMonth = m.etaMonth;
@@ -288,6 +295,11 @@ void AisTargetTable::applyOwnShip(AisTarget& t, TimeUs now, const geo::LocalFram
   geo::GridPoint p = frame.toLocal({*t.latDeg, *t.lonDeg});
   if (!std::isfinite(o.xM) || !std::isfinite(p.xM)) return;
   double vx = 0.0, vy = 0.0;
+  // The target's motion is known with SOG and COG, and with a SOG of at most 0.1 kn without COG (anchored
+  // and moored ships, class B boats at rest report COG "not available"): its velocity is then taken as
+  // nil, which moves the CPA by at most 0.1 kn times the TCPA (19 m at 6 minutes). Without SOG, or with
+  // a speed but no course, there is no CPA.
+  const bool stationary = t.sogKn && !t.cogDeg && *t.sogKn <= kStationarySogKn;
   const bool moving = t.sogKn && t.cogDeg;
   if (moving) {
     // COG is true; the grid course is true minus the convergence at the target.
@@ -303,7 +315,7 @@ void AisTargetTable::applyOwnShip(AisTarget& t, TimeUs now, const geo::LocalFram
   t.rangeM = std::hypot(rx, ry);
   t.bearingRad = wrapTwoPi(bearingOf(rx, ry) + frame.gridInfo(o).convergenceRad);
   t.rangeValid = true;
-  if (!moving) return;
+  if (!moving && !stationary) return;
   est::Vec<4> rel;
   rel << rx, ry, vx - own.velEastMps, vy - own.velNorthMps;
   t.cpa = cpaOf(rel, est::Mat<4>::Zero());

@@ -11,8 +11,10 @@
 #include <QTest>
 
 #include <cmath>
+#include <optional>
 #include <set>
 #include <string>
+#include <utility>
 
 #include "alerts/ais_alert.h"
 #include "common/angles.h"
@@ -109,6 +111,19 @@ class TestAisTargets : public QObject {
     QCOMPARE(t->reports, std::uint64_t{3});
     QCOMPARE(t->lastReportUs, sec(6));
     QCOMPARE(t->firstReportUs, sec(0));
+    // AND a later type 5 whose dimensions are all 0 (as the decoder gives "not available") keeps the
+    // hull; one with a 0 among others (the reference point at the bow) replaces the set
+    io::AisMessage unset = s;
+    unset.toBowM = unset.toSternM = unset.toPortM = unset.toStarboardM = 0;
+    table.feed(unset, sec(7));
+    QCOMPARE(*table.find(244123456)->info.lengthM(), 120.0);
+    QCOMPARE(*table.find(244123456)->info.beamM(), 18.0);
+    io::AisMessage atBow = s;
+    atBow.toBowM = 0;
+    atBow.toSternM = 110;
+    table.feed(atBow, sec(8));
+    QCOMPARE(*table.find(244123456)->info.toBowM, 0);
+    QCOMPARE(*table.find(244123456)->info.lengthM(), 110.0);
   }
 
   void notAvailableFieldsStayAbsent() {
@@ -152,6 +167,31 @@ class TestAisTargets : public QObject {
     QVERIFY(!t->cpaValid);
     RK_COMPARE_NEAR(t->rangeM, 510.0, 0.5);
     RK_COMPARE_NEAR(radToDeg(t->bearingRad), 90.0, 0.1);
+  }
+
+  void aTargetAtRestWithoutCogHasItsCpa() {
+    // GIVEN an anchored ship 2 NM ahead, 200 m to starboard of own ship's track, reporting SOG 0 and COG
+    // "not available" (as anchored ships and class B boats at rest do), and own ship at 12 kn on 000
+    const geo::LocalFrame f(kLat0, kLon0);
+    AisTargetTable table;
+    table.feed(report(244000001, 1, at(f, 200.0, 3704.0), 0.0, std::nullopt), sec(0));
+    const double v = knotsToMps(12.0);
+    // WHEN the table is updated
+    table.update(sec(0), f, {f.origin(), 0.0, v});
+    // THEN the CPA is the track's distance from the point, 200 m, at 3704 m / v: dangerous
+    const AisTarget* t = table.find(244000001);
+    QVERIFY(t->cpaValid);
+    RK_COMPARE_NEAR(t->cpa.cpaM, 200.0, 0.5);
+    RK_COMPARE_NEAR(t->cpa.tcpaS, 3704.0 / v, 0.5);
+    QVERIFY(t->dangerous);
+    // AND 0.1 kn without a course is still at rest; 0.2 kn without one, or no SOG, gives no CPA
+    for (const auto& [sog, cpa] :
+         {std::pair<std::optional<double>, bool>{0.1, true}, {0.2, false}, {std::nullopt, false}}) {
+      table.feed(report(244000001, 1, at(f, 200.0, 3704.0), sog, std::nullopt), sec(1));
+      table.update(sec(1), f, {f.origin(), 0.0, v});
+      QCOMPARE(table.find(244000001)->cpaValid, cpa);
+      QCOMPARE(table.find(244000001)->dangerous, cpa);
+    }
   }
 
   void cpaMatchesAHandComputedGeometry() {

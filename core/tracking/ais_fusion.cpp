@@ -110,12 +110,17 @@ std::optional<AisObservation> aisObservation(const io::AisMessage& m, TimeUs rxU
 
   const std::optional<TimeUs> fix = aisFixTime(rxUs, m.second, utcOffsetUs);
   o.fixUs = fix ? *fix : rxUs - fromSeconds(e.unknownLatencyS);
-  const double sdPos = m.accuracy.value_or(false) ? e.positionSdAccurateM : e.positionSdM;
+  const double sdFix = m.accuracy.value_or(false) ? e.positionSdAccurateM : e.positionSdM;
   const bool classB = m.type == 18 || m.type == 19;
   const double sdVel = classB ? e.velocitySdClassBMps : e.velocitySdClassAMps;
-  const double sogQuant2 = knotsToMps(0.1) * knotsToMps(0.1) / 12.0;
-  o.R(0, 0) = o.R(1, 1) = sdPos * sdPos;
-  o.R(2, 2) = o.R(3, 3) = sdVel * sdVel + sogQuant2;
+  // Quantisation (uniform over a step: step^2 / 12). Types 1-3, 18, 19: SOG 0.1 kn (positions to 1/10000
+  // minute and COG to 0.1 degree are negligible). Type 27: 1/10 minute (185 m), SOG 1 kn, COG 1 degree.
+  const bool longRange = m.type == 27;
+  const double posStepM = longRange ? 1852.0 / 10.0 : 0.0;
+  const double sogStep = knotsToMps(longRange ? 1.0 : 0.1);
+  const double cogStep = longRange ? degToRad(1.0) * speed : 0.0;
+  o.R(0, 0) = o.R(1, 1) = sdFix * sdFix + posStepM * posStepM / 12.0;
+  o.R(2, 2) = o.R(3, 3) = sdVel * sdVel + (sogStep * sogStep + cogStep * cogStep) / 12.0;
   if (!fix) {  // the latency's uncertainty moves the position along the velocity
     const est::Vec<2> v = o.z.tail<2>();
     o.R.topLeftCorner<2, 2>() += e.unknownLatencySdS * e.unknownLatencySdS * v * v.transpose();

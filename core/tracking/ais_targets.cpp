@@ -34,6 +34,31 @@ void keep(std::string& field, const std::string& value) {
   if (!value.empty()) field = value;
 }
 
+/// The station's class after a message of `type`: position reports set it; static data (5, 24) and
+/// long-range broadcasts (27, which class B "SO" units send too) only give one to a station without.
+AisClass classAfter(AisClass known, int type) {
+  switch (type) {
+    case 1:
+    case 2:
+    case 3:
+      return AisClass::A;
+    case 18:
+    case 19:
+      return AisClass::B;
+    case 4:
+      return AisClass::BaseStation;
+    case 21:
+      return AisClass::AidToNavigation;
+    case 5:
+    case 27:
+      return known == AisClass::Unknown ? AisClass::A : known;
+    case 24:
+      return known == AisClass::Unknown ? AisClass::B : known;
+    default:
+      return known;
+  }
+}
+
 bool carriesPosition(int type) {
   switch (type) {
     case 1:
@@ -101,6 +126,8 @@ void validate(const AisTableLimits& l) {
 }
 
 double reportingIntervalS(const AisTarget& t, double turningRotDegMin) {
+  // Long-range broadcasts (type 27) come every 3 minutes whatever the speed (ITU-R M.1371-5 Annex 4).
+  if (t.longRange && t.cls != AisClass::BaseStation && t.cls != AisClass::AidToNavigation) return 180.0;
   const double sog = t.sogKn.value_or(0.0);
   switch (t.cls) {
     case AisClass::A:
@@ -138,32 +165,7 @@ double AisTargetTable::lostAfterS(const AisTarget& t) const {
 }
 
 void AisTargetTable::merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) const {
-  switch (m.type) {
-    case 1:
-    case 2:
-    case 3:
-    case 27:
-      t.cls = AisClass::A;
-      break;
-    case 18:
-    case 19:
-      t.cls = AisClass::B;
-      break;
-    case 4:
-      t.cls = AisClass::BaseStation;
-      break;
-    case 21:
-      t.cls = AisClass::AidToNavigation;
-      break;
-    case 5:
-      if (t.cls == AisClass::Unknown) t.cls = AisClass::A;
-      break;
-    case 24:
-      if (t.cls == AisClass::Unknown) t.cls = AisClass::B;
-      break;
-    default:
-      break;
-  }
+  t.cls = classAfter(t.cls, m.type);
   if (t.reports == 0) t.firstReportUs = rxUs;
   ++t.reports;
   t.lastReportUs = rxUs;
@@ -173,7 +175,12 @@ void AisTargetTable::merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) c
     t.lost = false;
     t.lostSinceUs = 0;
   }
-  if (carriesPosition(m.type)) {
+  // A type 27 is coarse (1/10 minute, whole knots and degrees): it does not replace a finer report that
+  // is still within its class's lost time, and counts then as a report without a position.
+  const bool coarse = m.type == 27 && t.hasPosition() && !t.longRange && !t.lost &&
+                      toSeconds(rxUs - t.lastPositionUs) <= lostAfterS(t);
+  if (carriesPosition(m.type) && !coarse) {
+    t.longRange = m.type == 27;
     // A position report is a snapshot: what it marks not available is not available now.
     t.latDeg = m.latDeg;
     t.lonDeg = m.lonDeg;

@@ -60,6 +60,9 @@ struct AisTarget {
   TimeUs firstReportUs = 0;
   TimeUs lastReportUs = 0;    ///< any message
   TimeUs lastPositionUs = 0;  ///< the latest message with a position
+  /// The position came from a type 27 (long-range broadcast: every 3 minutes, 1/10 minute, whole knots and
+  /// degrees); a type 27 does not replace a finer report that is not yet lost.
+  bool longRange = false;
   std::uint64_t reports = 0;
   // Display state.
   bool activated = false;  ///< by the operator or automatically (dangerous)

@@ -124,6 +124,34 @@ class TstAisFusion : public QObject {
     QVERIFY(!sensors::antennaOffset(0, 0, 0, 0).known);
   }
 
+  void longRangeReportIsCoarse() {
+    // GIVEN the same report as a type 1 and as a type 27 (1/10 minute, whole knots and degrees), no
+    // previous report, the UTC second known for the type 1
+    const geo::LocalFrame frame(kLat0, kLon0);
+    io::AisMessage m;
+    m.type = 1;
+    m.mmsi = 211000001;
+    m.latDeg = kLat0;
+    m.lonDeg = kLon0;
+    m.sogKn = 10.0;
+    m.cogDeg = 90.0;
+    m.accuracy = true;
+    const track::AisErrorModel e;
+    const auto fine = track::aisObservation(m, fromSeconds(100), {}, frame, e, -1);
+    m.type = 27;
+    const auto coarse = track::aisObservation(m, fromSeconds(100), {}, frame, e, -1);
+    QVERIFY(fine && coarse);
+    // THEN the type 27's position variance is larger by (185.2 m)^2 / 12 and its velocity variance by
+    // (1 kn)^2 / 12 + (1 degree x 10 kn)^2 / 12 less the (0.1 kn)^2 / 12 of the type 1
+    const double v = knotsToMps(10.0);
+    RK_COMPARE_NEAR(coarse->R(0, 0) - fine->R(0, 0), 185.2 * 185.2 / 12.0, 1e-6);
+    RK_COMPARE_NEAR(coarse->R(2, 2) - fine->R(2, 2),
+                    (knotsToMps(1.0) * knotsToMps(1.0) - knotsToMps(0.1) * knotsToMps(0.1) +
+                     degToRad(1.0) * v * degToRad(1.0) * v) /
+                        12.0,
+                    1e-9);
+  }
+
   void hullCentreRecoveredFromTheAntenna() {
     // With exact errors the observation gives back the hull's centre (to the message's resolution) at
     // any heading, including across north.

@@ -305,6 +305,40 @@ class TestAisTargets : public QObject {
     QVERIFY(!table.find(200)->lost);
   }
 
+  void longRangeReportsAreCoarseAndSlow() {
+    // GIVEN a ship heard only by long-range broadcasts (type 27, every 3 minutes) at 12 kn
+    const geo::LocalFrame f(kLat0, kLon0);
+    AisTargetTable table;
+    table.feed(report(300, 27, at(f, 0, 5000), 12.0, 90.0), sec(0));
+    const AisTarget* t = table.find(300);
+    QVERIFY(t->longRange);
+    QCOMPARE(t->cls, AisClass::A);
+    // THEN it is lost by the 3-minute interval, not by a class A ship's 10 s at 12 kn
+    QCOMPARE(table.lostAfterS(*t), 900.0);
+    table.update(sec(179));
+    QVERIFY(!table.find(300)->lost);
+    table.feed(report(300, 27, at(f, 600, 5000), 12.0, 90.0), sec(180));
+    table.update(sec(200));
+    QVERIFY(!table.find(300)->lost);
+    // AND once a class A report comes, a type 27 does not replace its finer position while it is fresh
+    table.feed(report(300, 1, at(f, 700, 5000), 12.3, 91.0, 91), sec(210));
+    QVERIFY(!table.find(300)->longRange);
+    QCOMPARE(table.lostAfterS(*table.find(300)), 50.0);
+    table.feed(report(300, 27, at(f, 900, 5100), 12.0, 90.0), sec(215));
+    t = table.find(300);
+    QCOMPARE(*t->sogKn, 12.3);
+    QCOMPARE(*t->headingDeg, 91);
+    QCOMPARE(t->lastPositionUs, sec(210));
+    QCOMPARE(t->reports, std::uint64_t{4});
+    // AND a class B "SO" unit that sends type 27 stays class B
+    table.feed(report(400, 18, at(f, 0, 0), 5.0, 0.0), sec(0));
+    table.update(sec(400));  // lost: the type 27 then takes over
+    table.feed(report(400, 27, at(f, 0, 100), 5.0, 0.0), sec(401));
+    QCOMPARE(table.find(400)->cls, AisClass::B);
+    QVERIFY(table.find(400)->longRange);
+    QVERIFY(!table.find(400)->lost);
+  }
+
   void capacityLimitsDropTheFurthestSleepingTargets() {
     // GIVEN room for 10 sleeping and 3 activated targets, filled with ten sleeping ones 1..10 km away
     const geo::LocalFrame f(kLat0, kLon0);

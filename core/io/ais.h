@@ -30,7 +30,10 @@ struct AisMessage {
   std::optional<int> navStatus;  ///< 0..15 (types 1-3 and 27)
   std::optional<bool> accuracy;  ///< position accuracy flag (true: better than 10 m)
   std::optional<int> second;     ///< UTC second of the report (0..59)
-  std::optional<int> epfd;       ///< type of position fixing device (0 undefined is empty)
+  /// The time stamp when it is not a second and says how the position was made: 61 manual input, 62
+  /// estimated (dead reckoning), 63 positioning system inoperative (60, not available, is empty).
+  std::optional<int> positionNotFix;
+  std::optional<int> epfd;  ///< type of position fixing device (0 undefined is empty)
   // Type 4: UTC date and time, each part empty when not available.
   std::optional<int> year, month, day, hour, minute, utcSecond;
   // Static data (5, 19, 21, 24).

@@ -55,13 +55,20 @@ std::optional<int> secondOf(std::uint32_t raw) {
   return raw < 60 ? std::optional<int>(static_cast<int>(raw)) : std::nullopt;
 }
 
+/// The time stamp (6 bits): a UTC second, or 60 not available, 61-63 how a position that is not a fix
+/// was made (manual input, dead reckoning, positioning system inoperative).
+void timeStamp(std::uint32_t raw, AisMessage& m) {
+  m.second = secondOf(raw);
+  if (raw >= 61) m.positionNotFix = static_cast<int>(raw);
+}
+
 void classA(const AisBits& b, AisMessage& m) {
   m.navStatus = static_cast<int>(b.u(38, 4));
   rateOfTurn(b.s(42, 8), m);
   m.accuracy = b.u(60, 1) != 0;
   position(b, 61, 28, 600000.0, m);
   motion(b, 50, 116, 128, m);
-  m.second = secondOf(b.u(137, 6));
+  timeStamp(b.u(137, 6), m);
 }
 
 void baseStation(const AisBits& b, AisMessage& m) {
@@ -96,7 +103,7 @@ void classB(const AisBits& b, AisMessage& m) {
   motion(b, 46, 112, 124, m);
   m.accuracy = b.u(56, 1) != 0;
   position(b, 57, 28, 600000.0, m);
-  m.second = secondOf(b.u(133, 6));
+  timeStamp(b.u(133, 6), m);
 }
 
 void classBExtended(const AisBits& b, AisMessage& m) {
@@ -122,7 +129,7 @@ void aidToNavigation(const AisBits& b, AisMessage& m) {
   position(b, 164, 28, 600000.0, m);
   dimensions(b, 219, m);
   m.epfd = unless(static_cast<int>(b.u(249, 4)), 0);
-  m.second = secondOf(b.u(253, 6));
+  timeStamp(b.u(253, 6), m);
   m.offPosition = b.u(259, 1) != 0;
   m.virtualAid = b.u(269, 1) != 0;
 }

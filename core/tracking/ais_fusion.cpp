@@ -96,6 +96,9 @@ std::optional<AisObservation> aisObservation(const io::AisMessage& m, TimeUs rxU
                                              const geo::LocalFrame& frame, const AisErrorModel& e,
                                              TimeUs previousFixUs, TimeUs utcOffsetUs) {
   if (!isPositionReport(m.type) || !m.latDeg || !m.lonDeg || !m.sogKn || !m.cogDeg) return std::nullopt;
+  // A position entered by hand, dead reckoned or from an inoperative positioning system (time stamp 61-63)
+  // is no fix: it is shown, never fused into a radar track as a measurement.
+  if (m.positionNotFix) return std::nullopt;
   const geo::GridPoint antenna = frame.toLocal({*m.latDeg, *m.lonDeg});
   if (!std::isfinite(antenna.xM) || !std::isfinite(antenna.yM)) return std::nullopt;
   const double convergence = frame.gridInfo(antenna).convergenceRad;

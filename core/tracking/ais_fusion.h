@@ -97,7 +97,8 @@ struct AisObservation {
 std::optional<TimeUs> aisFixTime(TimeUs rxUs, std::optional<int> second, TimeUs utcOffsetUs);
 
 /// The observation from a position report (type 1-3, 18, 19, 27), or empty when it has no position or
-/// velocity. info: the station's static data so far; previousFixUs: of its previous report (< 0 none).
+/// velocity, or its position is not a fix (time stamp 61-63). info: the station's static data so far;
+/// previousFixUs: of its previous report (< 0 none).
 std::optional<AisObservation> aisObservation(const io::AisMessage& m, TimeUs rxUs, const AisStatic& info,
                                              const geo::LocalFrame& frame, const AisErrorModel& errors,
                                              TimeUs previousFixUs, TimeUs utcOffsetUs = 0);

@@ -192,6 +192,7 @@ void AisTargetTable::merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) c
     t.rotDegMin = m.rotDegMin;
     t.rotFast = m.rotFast;
     t.navStatus = m.navStatus;
+    t.positionNotFix = m.positionNotFix;
   }
   // Static and voyage data: merged, a field not available keeps what was known.
   AisStatic& s = t.info;

@@ -56,6 +56,9 @@ struct AisTarget {
   std::optional<double> rotDegMin;  ///< right positive
   int rotFast = 0;                  ///< +1 / -1: turning right / left faster than 5 deg per 30 s
   std::optional<int> navStatus;
+  /// 61 manual input, 62 dead reckoning, 63 positioning system inoperative: the latest position is not a
+  /// fix (io::AisMessage::positionNotFix); empty for a fix.
+  std::optional<int> positionNotFix;
   AisStatic info;
   TimeUs firstReportUs = 0;
   TimeUs lastReportUs = 0;    ///< any message

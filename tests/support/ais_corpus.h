@@ -61,16 +61,16 @@ inline std::string sentence(const PayloadBuilder& p) {
   return sentence(s, fill);
 }
 
-/// Type 1-3 class A position report (168 bits).
+/// Type 1-3 class A position report (168 bits); `stamp` the time stamp (a second, or 60-63).
 inline PayloadBuilder classA(int type, long long mmsi, int status, int rot, int sog, long long lon,
-                             long long lat, int cog, int heading) {
+                             long long lat, int cog, int heading, int stamp = 33) {
   PayloadBuilder p;
   p.put(type, 6).put(0, 2).put(mmsi, 30).put(status, 4).put(rot, 8).put(sog, 10).put(1, 1);
   p.put(lon, 28)
       .put(lat, 27)
       .put(cog, 12)
       .put(heading, 9)
-      .put(33, 6)
+      .put(stamp, 6)
       .put(0, 2)
       .put(0, 3)
       .put(0, 1)

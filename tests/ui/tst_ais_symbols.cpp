@@ -181,8 +181,13 @@ class TestAisSymbols : public QObject {
     QCOMPARE(model.data(model.index(0, AisTableModel::Cpa), Qt::UserRole).toDouble() < 1.0, true);
     const QString report = aisPickReport(*table.find(244000001));
     QVERIFY2(report.contains("ZEEHOND") && report.contains("Length 100 m, beam 12 m") &&
-                 report.contains("HDG 181"),
+                 report.contains("HDG 181") && !report.contains("NOT A FIX"),
              qPrintable(report));
+    // A position the transponder dead reckons (time stamp 62) says so in the pick report
+    track::AisTarget dr = *table.find(244000001);
+    dr.positionNotFix = 62;
+    QVERIFY2(aisPickReport(dr).contains("Position NOT A FIX: dead reckoning (time stamp 62)"),
+             qPrintable(aisPickReport(dr)));
     // AND its symbol sits 0.01 deg (about 1112 m) north of own ship, heading 181 true
     const auto sym = aisSymbolOf(*table.find(244000001), f, 1);
     QVERIFY(sym);

@@ -185,6 +185,12 @@ QString aisPickReport(const track::AisTarget& t) {
              .arg(part(s.etaMonth), part(s.etaDay), part(s.etaHour), part(s.etaMinute));
   }
   if (t.navStatus) l << QStringLiteral("Navigational status %1").arg(*t.navStatus);
+  if (t.positionNotFix)
+    l << QStringLiteral("Position NOT A FIX: %1 (time stamp %2)")
+             .arg(*t.positionNotFix == 61   ? QStringLiteral("manual input")
+                  : *t.positionNotFix == 62 ? QStringLiteral("dead reckoning")
+                                            : QStringLiteral("positioning system inoperative"))
+             .arg(*t.positionNotFix);
   l << QStringLiteral("SOG %1 kn  COG %2°  HDG %3")
            .arg(optText(t.sogKn, "%.1f"), optText(t.cogDeg, "%.1f"),
                 t.headingDeg ? QStringLiteral("%1°").arg(*t.headingDeg) : QStringLiteral("n/a"));

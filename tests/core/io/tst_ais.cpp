@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -85,6 +86,22 @@ class TestAis : public QObject {
     const auto lr = decodeOne(sentence(longRange(108600, 54600, 63, 511)));
     QVERIFY(lr.has_value());
     QVERIFY(!lr->latDeg && !lr->lonDeg && !lr->sogKn && !lr->cogDeg);
+  }
+  void timeStampsThatAreNotSecondsSayHowThePositionWasMade() {
+    // 0-59 a second; 60 not available; 61 manual input, 62 dead reckoning, 63 inoperative (ITU-R
+    // M.1371-5 Table 50, gpsd's AIVDM notes): no second, and the position marked as no fix
+    for (const auto& [stamp, second, notFix] :
+         {std::tuple{59, std::optional<int>(59), std::optional<int>()},
+          std::tuple{60, std::optional<int>(), std::optional<int>()},
+          std::tuple{61, std::optional<int>(), std::optional<int>(61)},
+          std::tuple{62, std::optional<int>(), std::optional<int>(62)},
+          std::tuple{63, std::optional<int>(), std::optional<int>(63)}}) {
+      const auto m = decodeOne(sentence(classA(1, 244740981, 0, 0, 101, 3442480, 31919541, 900, 90, stamp)));
+      QVERIFY(m.has_value());
+      QCOMPARE(m->second, second);
+      QCOMPARE(m->positionNotFix, notFix);
+      QVERIFY(m->latDeg.has_value());  // the position itself is kept
+    }
   }
   void decodesBaseStation() {
     const auto m = decodeOne(sentence(baseStation()));

@@ -152,6 +152,26 @@ class TstAisFusion : public QObject {
                     1e-9);
   }
 
+  void positionThatIsNotAFixIsNotFused() {
+    // A report whose time stamp says the position was entered by hand, dead reckoned, or made with the
+    // positioning system inoperative (61-63) gives no observation; the same report with a second does.
+    const geo::LocalFrame frame(kLat0, kLon0);
+    io::AisMessage m;
+    m.type = 1;
+    m.mmsi = 211000001;
+    m.latDeg = kLat0;
+    m.lonDeg = kLon0;
+    m.sogKn = 10.0;
+    m.cogDeg = 90.0;
+    m.second = 20;
+    QVERIFY(track::aisObservation(m, fromSeconds(100), {}, frame, {}, -1));
+    for (const int code : {61, 62, 63}) {
+      m.second.reset();
+      m.positionNotFix = code;
+      QVERIFY(!track::aisObservation(m, fromSeconds(100), {}, frame, {}, -1));
+    }
+  }
+
   void hullCentreRecoveredFromTheAntenna() {
     // With exact errors the observation gives back the hull's centre (to the message's resolution) at
     // any heading, including across north.

@@ -160,6 +160,7 @@ class TestAisTargets : public QObject {
     QVERIFY(!t->rotDegMin);
     QVERIFY(!t->navStatus);
     QVERIFY(!t->orientationDeg());
+    QVERIFY(!t->positionNotFix);
     // AND without SOG and COG there is a range but no CPA
     table.update(sec(33), f, {f.origin(), 0.0, 0.0});
     t = table.find(235000001);
@@ -167,6 +168,18 @@ class TestAisTargets : public QObject {
     QVERIFY(!t->cpaValid);
     RK_COMPARE_NEAR(t->rangeM, 510.0, 0.5);
     RK_COMPARE_NEAR(radToDeg(t->bearingRad), 90.0, 0.1);
+  }
+
+  void aPositionThatIsNotAFixIsMarkedUntilTheNextFix() {
+    const geo::LocalFrame f(kLat0, kLon0);
+    AisTargetTable table;
+    io::AisMessage m = report(244000002, 1, at(f, 0, 1000), 8.0, 45.0);
+    m.positionNotFix = 62;  // dead reckoning
+    table.feed(m, sec(0));
+    QCOMPARE(table.find(244000002)->positionNotFix, std::optional<int>(62));
+    QVERIFY(table.find(244000002)->hasPosition());
+    table.feed(report(244000002, 1, at(f, 0, 1040), 8.0, 45.0), sec(10));
+    QVERIFY(!table.find(244000002)->positionNotFix);
   }
 
   void aTargetAtRestWithoutCogHasItsCpa() {

@@ -94,6 +94,12 @@ class TstLiveWindow : public QObject {
     QVERIFY2(w.lastError().contains("port"), qPrintable(w.lastError()));
     QUdpSocket rx;
     QVERIFY(rx.bind(QHostAddress::LocalHost, 0));
+    // Read as it comes, in every wait: datagrams left in the socket while the recording is sent would
+    // fill its buffer on a loaded machine, and the kernel drops what does not fit.
+    QByteArrayList received;
+    connect(&rx, &QUdpSocket::readyRead, this, [&] {
+      while (rx.hasPendingDatagrams()) received << rx.receiveDatagram().data();
+    });
     QVERIFY(w.setLiveNmeaOut(QStringLiteral("udp://127.0.0.1:%1").arg(rx.localPort())));
     // AND Live > Record the live run… to a new file (an existing one is refused, naming it)
     QTemporaryDir recordDir;
@@ -119,7 +125,7 @@ class TstLiveWindow : public QObject {
     QVERIFY(std::isnan(w.history().own().back().truePos[0]));
     w.controller()->setCpaLimits(926.0, 600.0);  // an operator action, for the record
     RK_COMPARE_NEAR(live.liveOrigin->latDeg, 52.85, 0.01);
-    verifyAisAndNmeaOutput(w, rx);
+    verifyAisAndNmeaOutput(w, received);
     if (QTest::currentTestFailed()) return;
     // AND the data monitor shows the raw lines, the clock says LIVE
     QTRY_VERIFY_WITH_TIMEOUT(w.dataMonitor()->model()->rowCount() > 100, kTimeoutMs);
@@ -145,7 +151,7 @@ class TstLiveWindow : public QObject {
  private:
   /// The AIS dock lists the six targets, with range and CPA from own ship; the NMEA output carries own
   /// ship, every sentence read back by the project's reader.
-  static void verifyAisAndNmeaOutput(MainWindow& w, QUdpSocket& rx) {
+  static void verifyAisAndNmeaOutput(MainWindow& w, const QByteArrayList& received) {
     QTRY_COMPARE_WITH_TIMEOUT(w.aisModel()->rowCount(), 6, kTimeoutMs);
     qInfo("AIS rows %d", w.aisModel()->rowCount());
     const auto aisState = [&w] {
@@ -167,17 +173,19 @@ class TstLiveWindow : public QObject {
       QVERIFY2(t.rangeM > nmToMetres(0.5) && t.rangeM < nmToMetres(3.0),
                qPrintable(QString::number(t.rangeM)));
     QCOMPARE(w.history().latest().ownShipSource, sim::LiveOwnShipSource::Drkf);
-    int rmcOut = 0, ggaOut = 0;
+    int rmcOut = 0, ggaOut = 0, bad = 0;
+    qsizetype seen = 0;
     QTRY_VERIFY_WITH_TIMEOUT(
         [&] {
-          while (rx.hasPendingDatagrams()) {
-            const QByteArray d = rx.receiveDatagram().data();
-            for (const QByteArray& l : d.split('\n')) {
+          for (; seen < received.size(); ++seen) {
+            for (const QByteArray& l : received[seen].split('\n')) {
               const std::string line = l.trimmed().toStdString();
               if (line.empty()) continue;
               const io::nmea::ParseResult p = io::nmea::parse(line);
-              if (p.error == io::nmea::Error::BadChecksum || p.error == io::nmea::Error::Malformed)
-                return false;
+              if (p.error == io::nmea::Error::BadChecksum || p.error == io::nmea::Error::Malformed) {
+                qWarning("bad sentence out: %s", line.c_str());
+                ++bad;
+              }
               rmcOut += line.rfind("$INRMC,", 0) == 0;
               ggaOut += line.rfind("$INGGA,", 0) == 0;
             }
@@ -185,6 +193,7 @@ class TstLiveWindow : public QObject {
           return rmcOut > 20 && ggaOut > 20;
         }(),
         kTimeoutMs);
+    QCOMPARE(bad, 0);
     qInfo("NMEA output: %d RMC, %d GGA read back", rmcOut, ggaOut);
   }
 

@@ -45,17 +45,7 @@ class TestRouteCli : public QObject {
     io::writeRouteFile(path("land.rtz").toStdString(),
                        routeOf({{47.300, -122.470}, {47.285, -122.460}, {47.250, -122.470}}, 0.05));
     io::writeRouteFile(path("channel.rtz").toStdString(), channel());
-    io::writeRouteFile(path("tight.rtz").toStdString(), zigzag());
-  }
-
-  /// A zigzag in the bay, legs of 0.5 to 0.8 NM turning 80 to 100 degrees, on a default radius of 2 NM
-  /// that no turn has room for; WP3 a corner (radius 0).
-  static geo::Route zigzag() {
-    geo::Route r = routeOf(
-        {{47.30, -122.47}, {47.29, -122.46}, {47.295, -122.45}, {47.285, -122.44}, {47.29, -122.43}}, 0.05);
-    r.defaultTurnRadiusNm = 2.0;
-    r.waypoints[2].turnRadiusNm = 0.0;
-    return r;
+    io::writeRouteFile(path("tight.rtz").toStdString(), reckoner::test::zigzagInCommencementBay());
   }
 
   static geo::Route channel() {
@@ -108,7 +98,7 @@ class TestRouteCli : public QObject {
   }
 
   void turnsThatDoNotFit() {
-    const geo::Route tight = zigzag();
+    const geo::Route tight = reckoner::test::zigzagInCommencementBay();
     const std::vector<geo::TurnFit> expected = geo::turnsThatDoNotFit(tight);
     QCOMPARE(expected.size(), std::size_t{2});  // at WP2 and WP4; WP3 is a corner
     const auto r =

@@ -400,21 +400,12 @@ class TestRouteWindow : public QObject {
     saveWindowShot(w, QStringLiteral("route_check"));
   }
 
-  /// A zigzag in Commencement Bay of legs 0.5 to 0.8 NM on a default radius of 2 NM, WP3 a corner.
-  static geo::Route zigzag() {
-    geo::Route r = routeOf(
-        {{47.30, -122.47}, {47.29, -122.46}, {47.295, -122.45}, {47.285, -122.44}, {47.29, -122.43}}, 0.05);
-    r.defaultTurnRadiusNm = 2.0;
-    r.waypoints[2].turnRadiusNm = 0.0;
-    return r;
-  }
-
   void turnsThatDoNotFitListedWithoutCharts() {
     freshRouteDir();
     MainWindow w(freshOptions());
     showAndWait(w);
     // GIVEN the zigzag
-    geo::Route route = zigzag();
+    geo::Route route = reckoner::test::zigzagInCommencementBay();
     w.routeLibrary()->add(route);
     // WHEN it is checked with no chart open THEN the turns are listed all the same
     action(w, "routeCheckAction")->trigger();
@@ -470,7 +461,7 @@ class TestRouteWindow : public QObject {
     freshRouteDir();
     MainWindow w(freshOptions());
     showAndWait(w);
-    w.routeLibrary()->add(zigzag());
+    w.routeLibrary()->add(reckoner::test::zigzagInCommencementBay());
     // WHEN the chart is open THEN the turns come after the findings, and choosing one selects its waypoint
     w.openCharts(kTacoma);
     QTRY_VERIFY_WITH_TIMEOUT(!w.chartsLoading(), kTimeoutMs);

@@ -30,6 +30,18 @@ using namespace reckoner;
 namespace {
 constexpr double kLat0 = 50.0, kLon0 = -3.0;  // on zone 30's central meridian: no convergence
 
+/// A class A report at the origin, 10 kn on 090.
+io::AisMessage eastAt10Kn() {
+  io::AisMessage m;
+  m.type = 1;
+  m.mmsi = 211000001;
+  m.latDeg = kLat0;
+  m.lonDeg = kLon0;
+  m.sogKn = 10.0;
+  m.cogDeg = 90.0;
+  return m;
+}
+
 sensors::AisHullState hull(double tS, double x, double y, double speedMps, double headingDeg,
                            double turnDps = 0.0) {
   sensors::AisHullState h;
@@ -128,13 +140,7 @@ class TstAisFusion : public QObject {
     // GIVEN the same report as a type 1 and as a type 27 (1/10 minute, whole knots and degrees), no
     // previous report, the UTC second known for the type 1
     const geo::LocalFrame frame(kLat0, kLon0);
-    io::AisMessage m;
-    m.type = 1;
-    m.mmsi = 211000001;
-    m.latDeg = kLat0;
-    m.lonDeg = kLon0;
-    m.sogKn = 10.0;
-    m.cogDeg = 90.0;
+    io::AisMessage m = eastAt10Kn();
     m.accuracy = true;
     const track::AisErrorModel e;
     const auto fine = track::aisObservation(m, fromSeconds(100), {}, frame, e, -1);
@@ -156,13 +162,7 @@ class TstAisFusion : public QObject {
     // A report whose time stamp says the position was entered by hand, dead reckoned, or made with the
     // positioning system inoperative (61-63) gives no observation; the same report with a second does.
     const geo::LocalFrame frame(kLat0, kLon0);
-    io::AisMessage m;
-    m.type = 1;
-    m.mmsi = 211000001;
-    m.latDeg = kLat0;
-    m.lonDeg = kLon0;
-    m.sogKn = 10.0;
-    m.cogDeg = 90.0;
+    io::AisMessage m = eastAt10Kn();
     m.second = 20;
     QVERIFY(track::aisObservation(m, fromSeconds(100), {}, frame, {}, -1));
     for (const int code : {61, 62, 63}) {

@@ -45,7 +45,7 @@ std::optional<RouteGeometry::Turn> turnAt(const geo::Route& route, std::size_t k
   const geo::TurnFit fit = geo::turnFit(route, k);
   const double d = fit.wheelOverM;
   if (!(d > 0.0) || !std::isfinite(d)) return std::nullopt;
-  const double lenIn = geo::legLengthM(route, k);
+  const double lenIn = fit.legBeforeM;
   const charts::MercatorPoint p = mercatorOf(geo::legPoint(route, k, lenIn - d));
   const charts::MercatorPoint back = mercatorOf(geo::legPoint(route, k, lenIn - d - 1.0));
   const charts::MercatorPoint q = mercatorOf(geo::legPoint(route, k + 1, d));

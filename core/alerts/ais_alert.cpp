@@ -1,8 +1,10 @@
 #include "alerts/ais_alert.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "common/angles.h"
 #include "common/units.h"
 
 namespace reckoner::alerts {
@@ -19,13 +21,42 @@ std::string cpaText(const track::AisTarget& t) {
                 t.cpa.tcpaS / 60.0);
   return targetName(t) + buf;
 }
+/// "AIS-SART 970012345 ACTIVE 1.20 NM bearing 045" (range and bearing from own ship when known), with the
+/// position's caveat when the device reports it is not a fix.
+std::string distressText(const track::AisTarget& t) {
+  std::string s = std::string(track::aisDeviceName(t.device)) + " " + std::to_string(t.mmsi) + " ACTIVE";
+  if (t.rangeValid) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, " %.2f NM bearing %03.0f", t.rangeM / kMetresPerNauticalMile,
+                  std::fmod(std::round(radToDeg(t.bearingRad)), 360.0));
+    s += buf;
+  }
+  if (t.positionNotFix) s += " (position not a fix)";
+  return s;
+}
+
 }  // namespace
+
+void AisDistressFeed::report(AlertManager& m, TimeUs now, const std::vector<track::AisTarget>& targets) {
+  std::set<int> held;
+  for (const track::AisTarget& t : targets)
+    if (t.distress() && !t.lost) {
+      const int id = static_cast<int>(t.mmsi);
+      held.insert(id);
+      m.report(now, {AlertKind::AisDistress, id}, true, distressText(t));
+    }
+  for (const int id : held_)
+    if (!held.contains(id)) m.report(now, {AlertKind::AisDistress, id}, false);
+  held_ = std::move(held);
+}
 
 AisAlertFeed::AisAlertFeed(CpaAlertLimits limits) : cpa_(limits) {}
 
 void AisAlertFeed::report(AlertManager& m, TimeUs now, const track::AisTargetTable& table) {
   std::set<int> cpaNow, lostNow;
-  for (const track::AisTarget& t : table.targets()) {
+  const std::vector<track::AisTarget> targets = table.targets();
+  distress_.report(m, now, targets);
+  for (const track::AisTarget& t : targets) {
     const int id = static_cast<int>(t.mmsi);  // an MMSI has 9 digits: it fits
     if (t.cpaValid && !t.lost) {
       if (cpa_.update(id, now, t.cpa)) {

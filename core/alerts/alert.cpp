@@ -10,7 +10,8 @@ namespace {
 // (MSC.232(82) appendix 5), the radar's CPA/TCPA an alarm and lost target a warning (MSC.192(79)),
 // capacity a caution; the route monitoring's crossing of the safety contour and deviation from route
 // alarms, approach to a waypoint a warning (MSC.232(82) appendix 5). docs/alerts.md gives the reasons
-// for the rest (the filter resets: warnings that wait for acknowledgement, like a lost target).
+// for the rest (the filter resets: warnings that wait for acknowledgement, like a lost target; an active
+// AIS-SART, MOB or EPIRB-AIS: an alarm held until acknowledged, a distress no officer may miss).
 constexpr std::array<AlertKindTraits, kAlertKindCount> kTraits{{
     {"CPA/TCPA", Priority::Alarm, false, false},
     {"GUARD ZONE", Priority::Warning, true, true},
@@ -30,6 +31,7 @@ constexpr std::array<AlertKindTraits, kAlertKindCount> kTraits{{
     {"ARRIVAL", Priority::Warning, false, true},
     {"DR FILTER RESET", Priority::Warning, false, true},
     {"TRACK FILTER RESET", Priority::Warning, false, true},
+    {"AIS SART/MOB/EPIRB", Priority::Alarm, false, true},
 }};
 
 }  // namespace

@@ -35,8 +35,9 @@ enum class AlertKind {
   Arrival,           ///< own ship has arrived at the route's last waypoint
   DrFilterReset,     ///< the own-ship filter diverged and is restarted (or was) at a GNSS fix
   TrackFilterReset,  ///< a track's filter diverged and was restarted on a plot (source: track)
+  AisDistress,       ///< an active AIS-SART, AIS-MOB or EPIRB-AIS heard (source: its MMSI)
 };
-inline constexpr int kAlertKindCount = 18;
+inline constexpr int kAlertKindCount = 19;
 
 /// Which condition, from which source (a track number, a zone index, a DRKF block; 0 when the kind has
 /// one source only).

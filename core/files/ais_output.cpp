@@ -41,11 +41,14 @@ void addTimes(AisFields& f, const io::AisMessage& m) {
 }
 
 // The columns of ais.csv after utc and source, in the order aisFields gives them.
-constexpr std::array<const char*, 27> kColumns{
-    "type",        "mmsi",        "part",       "lat_deg",    "lon_deg",   "sog_kn",         "cog_deg",
-    "heading_deg", "rot_deg_min", "rot_fast",   "nav_status", "name",      "callsign",       "imo",
-    "ship_type",   "vendor",      "to_bow_m",   "to_stern_m", "to_port_m", "to_starboard_m", "draught_m",
-    "destination", "eta",         "utc_report", "epfd",       "aid_type",  "virtual"};
+constexpr std::array<const char*, 31> kColumns{
+    "type",       "mmsi",        "part",         "lat_deg",     "lon_deg",
+    "sog_kn",     "cog_deg",     "heading_deg",  "rot_deg_min", "rot_fast",
+    "nav_status", "name",        "callsign",     "imo",         "ship_type",
+    "vendor",     "to_bow_m",    "to_stern_m",   "to_port_m",   "to_starboard_m",
+    "draught_m",  "destination", "eta",          "utc_report",  "epfd",
+    "aid_type",   "virtual",     "off_position", "second",      "position_not_fix",
+    "text"};
 
 /// A JSON value as a CSV field: text unquoted from JSON and quoted for CSV when it needs it.
 std::string csvField(const std::string& json) {
@@ -94,6 +97,9 @@ AisFields aisFields(const io::AisMessage& m) {
   addInt(f, "aid_type", m.aidType);
   if (m.virtualAid) f.emplace_back("virtual", *m.virtualAid ? "true" : "false");
   if (m.offPosition) f.emplace_back("off_position", *m.offPosition ? "true" : "false");
+  addInt(f, "second", m.second);
+  addInt(f, "position_not_fix", m.positionNotFix);
+  addText(f, "text", m.text);
   return f;
 }
 
@@ -113,7 +119,7 @@ std::string aisFieldsLine(const AisFields& f, bool json) {
 std::string aisCsvHeader() {
   std::string s = "utc,source";
   for (const char* c : kColumns) s.append(",").append(c);
-  return s.append(",off_position");
+  return s;
 }
 
 std::string aisCsvLine(UtcUs receivedUtc, std::string_view source, const io::AisMessage& m) {
@@ -130,7 +136,7 @@ std::string aisCsvLine(UtcUs receivedUtc, std::string_view source, const io::Ais
     const std::string_view key = std::string_view(c) == "utc_report" ? "utc" : c;
     s.append(",").append(csvField(valueOf(key)));
   }
-  return s.append(",").append(csvField(valueOf("off_position")));
+  return s;
 }
 
 }  // namespace reckoner::files

@@ -9,9 +9,10 @@ using io::JsonValue;
 using io::JsonWriter;
 
 namespace {
-inline constexpr std::array<NamedValue<sensors::AisStationClass>, 2> kAisClasses{{
+inline constexpr std::array<NamedValue<sensors::AisStationClass>, 3> kAisClasses{{
     {sensors::AisStationClass::A, "A", "SOTDMA, 2-10 s"},
     {sensors::AisStationClass::B, "B", "CS, 30 s"},
+    {sensors::AisStationClass::Sart, "SART", "AIS-SART, MOB or EPIRB-AIS: 8 reports a minute"},
 }};
 
 void readAisErrors(Fields& f, track::AisErrorModel& e) {
@@ -76,6 +77,7 @@ void readTargetAis(Fields& f, sim::TargetSpec& t) {
   a.latencyMaxS = latency[1];
   a.lossProbability = g.numberOr("loss_probability", a.lossProbability, C::NonNegative);
   a.staticIntervalS = g.numberOr("static_interval_s", a.staticIntervalS, C::Positive);
+  if (const JsonValue* e = g.get("test")) a.test = g.boolean(*e, g.pathOf("test"));
   if (const std::string e = a.check(); !e.empty())
     g.fail(*v, g.pathOf(e.substr(0, e.find(':'))), e.substr(e.find(':') + 2));
   g.finish();
@@ -123,6 +125,7 @@ void writeTargetAis(JsonWriter& w, const sensors::AisTransmitterSpec& a) {
   w.key("latency_s").numberArray({a.latencyMinS, a.latencyMaxS});
   w.key("loss_probability").value(a.lossProbability);
   w.key("static_interval_s").value(a.staticIntervalS);
+  if (a.test) w.key("test").value(true);
   w.endObject();
 }
 

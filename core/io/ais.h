@@ -1,7 +1,7 @@
 #pragma once
 // AIS (ITU-R M.1371-5) from NMEA 0183 !xxVDM / !xxVDO sentences (docs/ais.md): the sentence layer
 // (fields, checksum, six-bit armour, fill bits), multi-fragment reassembly with bounded memory, and
-// the decoding of message types 1, 2, 3, 4, 5, 18, 19, 21, 24 and 27. Values the message marks "not
+// the decoding of message types 1, 2, 3, 4, 5, 14, 18, 19, 21, 24 and 27. Values the message marks "not
 // available" come back as empty optionals. Nothing here throws on bad input: every rejected line is
 // counted by reason in AisCounters.
 #include <cstddef>
@@ -47,6 +47,8 @@ struct AisMessage {
   std::optional<char> part;    ///< type 24: 'A' or 'B'
   std::optional<int> aidType;  ///< type 21
   std::optional<bool> virtualAid, offPosition;
+  /// Type 14 (safety-related broadcast): the text, up to 161 characters ("SART ACTIVE", "MOB TEST", ...).
+  std::string text;
 };
 
 /// Every line the decoder saw, by what became of it.

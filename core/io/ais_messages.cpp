@@ -158,6 +158,12 @@ void longRange(const AisBits& b, AisMessage& m) {
   if (cog < 360) m.cogDeg = static_cast<double>(cog);
 }
 
+/// Type 14, the safety-related broadcast: six-bit text from bit 40 to the end of the payload (at most
+/// 161 characters in 1008 bits).
+void safetyBroadcast(const AisBits& b, AisMessage& m) {
+  m.text = b.text(40, std::min<std::size_t>(161, (b.size() - 40) / 6));
+}
+
 /// The bits each type's decoded fields need: up to RAIM or the last field read (radio state is not
 /// decoded, so a payload that ends before it still decodes).
 std::size_t minimumBits(int type, std::uint32_t part) {
@@ -169,6 +175,8 @@ std::size_t minimumBits(int type, std::uint32_t part) {
       return 149;
     case 5:
       return 420;  // the destination's end: many transmitters send 420 bits, not 424 (gpsd accepts them)
+    case 14:
+      return 40;  // the text may be empty (as gpsd decodes it)
     case 18:
       return 148;
     case 19:
@@ -208,6 +216,9 @@ AisDecodeResult decodeAisPayload(const AisBits& b, AisMessage& m) {
       break;
     case 5:
       staticVoyage(b, m);
+      break;
+    case 14:
+      safetyBroadcast(b, m);
       break;
     case 18:
       classB(b, m);

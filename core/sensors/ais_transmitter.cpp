@@ -32,6 +32,11 @@ AisTransmitterSpec AisTransmitterSpec::defaults(AisStationClass cls) {
     s.headingSdDeg = 0.0;
     s.latencyMaxS = 3.0;
     s.shipType = 37;  // pleasure craft
+  } else if (cls == AisStationClass::Sart) {
+    s.positionSdM = 5.0;  // a GNSS receiver of its own, at the waterline
+    s.velocitySdMps = 0.1;
+    s.headingSdDeg = 0.0;
+    s.staticIntervalS = 240.0;  // the type 14 text
   }
   return s;
 }
@@ -41,6 +46,11 @@ std::string AisTransmitterSpec::check() const {
   auto nonNegative = [](double v) { return std::isfinite(v) && v >= 0.0; };
   if (mmsi < 1 || mmsi > 999'999'999) return "mmsi: must lie in [1, 999999999]";
   if (shipType < 1 || shipType > 99) return "ship_type: must lie in [1, 99]";
+  if (cls == AisStationClass::Sart && mmsi / 1000000 != 970 && mmsi / 1000000 != 972 && mmsi / 1000000 != 974)
+    return "mmsi: a search and rescue device's must be 970xxyyyy (AIS-SART), 972xxyyyy (MOB) or 974xxyyyy "
+           "(EPIRB-AIS)";
+  if (test && cls != AisStationClass::Sart)
+    return "test: only a search and rescue device (class SART) has it";
   for (int d : {toBowM, toSternM})
     if (d < 0 || d > 511) return "to_bow_m/to_stern_m: must lie in [0, 511]";
   for (int d : {toPortM, toStarboardM})
@@ -72,7 +82,7 @@ AntennaOffset antennaOffset(int toBowM, int toSternM, int toPortM, int toStarboa
 AisTransmitter::AisTransmitter(const AisTransmitterSpec& spec, int targetId, Rng rng, TimeUs startUs)
     : spec_(spec), targetId_(targetId), rng_(rng) {
   if (const std::string e = spec.check(); !e.empty()) throw std::invalid_argument("AIS transmitter: " + e);
-  const double first = spec.cls == AisStationClass::A ? 10.0 : 30.0;
+  const double first = spec.cls == AisStationClass::B ? 30.0 : spec.cls == AisStationClass::A ? 10.0 : 60.0;
   nextReportUs_ = startUs + fromSeconds(rng_.uniform() * first);
   nextStaticUs_ = startUs + fromSeconds(1.0 + rng_.uniform() * 5.0);
 }
@@ -81,6 +91,7 @@ double AisTransmitter::intervalS(const AisHullState& h) const {
   const double kn = mpsToKnots(std::hypot(h.vxMps, h.vyMps));
   const bool turning = std::abs(h.turnRateRadPerS) > kTurningRadPerS;
   if (spec_.cls == AisStationClass::B) return kn > 2.0 ? 30.0 : 180.0;
+  if (spec_.cls == AisStationClass::Sart) return 60.0;
   // Under way (the simulated ships never anchor): 10 s even below 3 kn.
   if (kn <= 14.0) return turning ? 10.0 / 3.0 : 10.0;
   if (kn <= 23.0) return turning ? 2.0 : 6.0;
@@ -133,7 +144,7 @@ void AisTransmitter::positionReport(TimeUs txUs, const geo::LocalFrame& frame,
   r.fixUs = fixUs;
   r.sourceTarget = targetId_;
   io::AisMessage& m = r.message;
-  m.type = spec_.cls == AisStationClass::A ? 1 : 18;
+  m.type = spec_.cls == AisStationClass::B ? 18 : 1;
   m.mmsi = spec_.mmsi;
   m.latDeg = roundTo(g.latDeg, 1.0 / 600000.0);  // 1/10000 minute
   m.lonDeg = roundTo(g.lonDeg, 1.0 / 600000.0);
@@ -144,6 +155,8 @@ void AisTransmitter::positionReport(TimeUs txUs, const geo::LocalFrame& frame,
     m.headingDeg = static_cast<int>(std::lround(radToDeg(wrapTwoPi(degToRad(hdg))))) % 360;
     m.navStatus = 0;  // under way using engine
     m.rotDegMin = radToDeg(h.turnRateRadPerS) * 60.0;
+  } else if (spec_.cls == AisStationClass::Sart) {
+    m.navStatus = spec_.test ? 15 : 14;
   }
   m.accuracy = spec_.positionSdM * 2.45 < 10.0;  // 95% radius under 10 m
   m.second = static_cast<int>((fixUs / kMicrosPerSecond) % 60);
@@ -171,6 +184,20 @@ void AisTransmitter::staticReports(TimeUs txUs, std::vector<AisReception>& out) 
     if (rng_.uniform() >= spec_.lossProbability) out.push_back(base(5));
     return;
   }
+  if (spec_.cls == AisStationClass::Sart) {
+    AisReception r;
+    r.rxUs = txUs;
+    r.sourceTarget = targetId_;
+    r.message.type = 14;
+    r.message.mmsi = spec_.mmsi;
+    const std::uint32_t prefix = spec_.mmsi / 1000000;
+    r.message.text = std::string(prefix == 972   ? "MOB"
+                                 : prefix == 974 ? "EPIRB"
+                                                 : "SART") +
+                     (spec_.test ? " TEST" : " ACTIVE");
+    if (rng_.uniform() >= spec_.lossProbability) out.push_back(std::move(r));
+    return;
+  }
   AisReception a = base(24), b = base(24);
   a.message.part = 'A';
   a.message.shipType.reset();
@@ -193,7 +220,14 @@ void AisTransmitter::advance(const AisHullState& hull, const geo::LocalFrame& fr
   }
   while (nextReportUs_ <= hull.timeUs) {
     positionReport(nextReportUs_, frame, out);
-    nextReportUs_ += fromSeconds(intervalS(fixAt(nextReportUs_)));
+    if (spec_.cls == AisStationClass::Sart && ++burstSent_ < 8) {  // the burst's next report
+      nextReportUs_ += kMicrosPerSecond;
+      continue;
+    }
+    const double interval =
+        intervalS(fixAt(nextReportUs_)) - (spec_.cls == AisStationClass::Sart ? 7.0 : 0.0);
+    burstSent_ = 0;
+    nextReportUs_ += fromSeconds(interval);
   }
 }
 

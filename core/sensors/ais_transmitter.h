@@ -1,12 +1,16 @@
 #pragma once
 // A simulated AIS transponder on a target (docs/ais.md, "Simulated transmitters"): what a class A
-// (SOTDMA) or class B (CS) station sends and when, as a receiver on own ship hears it.
+// (SOTDMA) or class B (CS) station, or a search and rescue device (AIS-SART, MOB, EPIRB-AIS), sends and
+// when, as a receiver on own ship hears it.
 //  - Reporting: class A every 10 s at 0-14 kn (3 1/3 s while changing course), 6 s at 14-23 kn (2 s
 //    turning), 2 s above 23 kn (a simulated ship is under way, never at anchor: 180 s does not apply); class
 //    B every 30 s above 2 kn, else 180 s (ITU-R M.1371-5 Annex 1 Tables 1 and 2). "Changing course": turning
 //    faster than 5 degrees in 30 s.
 //  - Static data: type 5 (class A) or type 24 parts A and B (class B) soon after the start and every
 //    6 minutes, with the antenna's place on the hull (to bow, stern, port, starboard).
+//  - A search and rescue device (IEC 61097-14): a burst of eight type 1 reports (status 14 active, 15 in
+//    test; no heading, no ROT) once a minute, one second apart, and a type 14 "SART ACTIVE" ("MOB ...",
+//    "EPIRB ...", "... TEST" in test) every static interval (4 minutes by default); no static data.
 //  - Latency: the position is the transponder's last GNSS fix (whole UTC seconds), taken a random
 //    latency (uniform in [latencyMinS, latencyMaxS]) before the transmission; the message's time stamp
 //    is that fix's UTC second. The receiver hears it at the transmission time.
@@ -29,7 +33,7 @@
 
 namespace reckoner::sensors {
 
-enum class AisStationClass : std::uint8_t { A, B };
+enum class AisStationClass : std::uint8_t { A, B, Sart };
 
 struct AisTransmitterSpec {
   AisStationClass cls = AisStationClass::A;
@@ -47,6 +51,8 @@ struct AisTransmitterSpec {
   double latencyMinS = 0.2, latencyMaxS = 1.5;
   double lossProbability = 0.05;  ///< of any message, [0, 1)
   double staticIntervalS = 360.0;
+  /// A search and rescue device in test mode (navigational status 15, "... TEST").
+  bool test = false;
   /// The spec with the class's defaults: class B a cheaper receiver (6 m, 0.1 m/s), no heading, up to
   /// 3 s of latency.
   static AisTransmitterSpec defaults(AisStationClass cls);
@@ -102,6 +108,7 @@ class AisTransmitter {
   Rng rng_;
   std::deque<AisHullState> history_;  ///< recent hull states (bounded: the latency window)
   TimeUs nextReportUs_ = 0, nextStaticUs_ = 0;
+  int burstSent_ = 0;  ///< reports of the device's current burst sent
   TimeUs errorUs_ = -1;
   double errX_ = 0.0, errY_ = 0.0, errVx_ = 0.0, errVy_ = 0.0;
 };

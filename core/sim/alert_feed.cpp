@@ -51,6 +51,7 @@ void AlertFeed::feed(const SimFrame& f, alerts::AlertManager& m, TimeUs clockOff
   feedOwnShip(f, m);
   feedDiscrepancy(f, m);
   feedVoyage(f, m);
+  distress_.report(m, f.timeUs + offsetUs_, f.aisTargets ? *f.aisTargets : std::vector<track::AisTarget>{});
   m.tick(f.timeUs + offsetUs_);
 }
 

@@ -23,9 +23,12 @@
 //   DR FILTER RESET     while the DRKF's divergence guard has it marked diverged, and in the frame of
 //                       its restart at a GNSS fix (then waiting for acknowledgement)
 //   TRACK FILTER RESET  per track, in the frame its filter was restarted by its divergence guard
+//   AIS SART/MOB/EPIRB  per search and rescue device heard active and not lost (the frame's AIS targets;
+//                       the other AIS conditions are the radar tracks', docs/alerts.md)
 #include <optional>
 #include <set>
 
+#include "alerts/ais_alert.h"
 #include "alerts/alert_manager.h"
 #include "alerts/cpa_alert.h"
 #include "sim/simulation_engine.h"
@@ -93,6 +96,7 @@ class AlertFeed {
   std::string contourText_, dangerText_, groundedText_;
   std::set<int> routeEvents_;  ///< WAYPOINT APPROACH sources (and ARRIVAL as -1) raised last frame
   std::set<int> resetTracks_;  ///< TRACK FILTER RESET sources raised last frame
+  alerts::AisDistressFeed distress_;
 };
 
 }  // namespace reckoner::sim

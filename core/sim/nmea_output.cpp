@@ -96,6 +96,7 @@ char categoryLetter(alerts::AlertKind k) {
     case alerts::AlertKind::LostTarget:
     case alerts::AlertKind::LostAisTarget:
     case alerts::AlertKind::TrackFilterReset:
+    case alerts::AlertKind::AisDistress:
       return 'A';
     default:
       return 'B';

@@ -77,6 +77,40 @@ bool carriesPosition(int type) {
 
 }  // namespace
 
+AisDevice aisDeviceOf(std::uint32_t mmsi) {
+  switch (mmsi / 1000000) {
+    case 970:
+      return AisDevice::Sart;
+    case 972:
+      return AisDevice::Mob;
+    case 974:
+      return AisDevice::Epirb;
+    default:
+      return AisDevice::None;
+  }
+}
+
+const char* aisDeviceName(AisDevice d) {
+  switch (d) {
+    case AisDevice::Sart:
+      return "AIS-SART";
+    case AisDevice::Mob:
+      return "AIS-MOB";
+    case AisDevice::Epirb:
+      return "EPIRB-AIS";
+    case AisDevice::None:
+      break;
+  }
+  return "";
+}
+
+std::optional<bool> deviceTestText(std::string_view text) {
+  // ACTIVE first: a text that says both is taken as a distress rather than missed as a test.
+  if (text.find("ACTIVE") != std::string_view::npos) return false;
+  if (text.find("TEST") != std::string_view::npos) return true;
+  return std::nullopt;
+}
+
 const char* aisClassName(AisClass c) {
   switch (c) {
     case AisClass::A:
@@ -126,6 +160,7 @@ void validate(const AisTableLimits& l) {
 }
 
 double reportingIntervalS(const AisTarget& t, double turningRotDegMin) {
+  if (t.device != AisDevice::None) return 60.0;  // eight reports once a minute (IEC 61097-14)
   // Long-range broadcasts (type 27) come every 3 minutes whatever the speed (ITU-R M.1371-5 Annex 4).
   if (t.longRange && t.cls != AisClass::BaseStation && t.cls != AisClass::AidToNavigation) return 180.0;
   const double sog = t.sogKn.value_or(0.0);
@@ -193,6 +228,14 @@ void AisTargetTable::merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) c
     t.rotFast = m.rotFast;
     t.navStatus = m.navStatus;
     t.positionNotFix = m.positionNotFix;
+    // A device's navigational status says its mode: 14 active, 15 test (IEC 61097-14).
+    if (t.device != AisDevice::None && m.navStatus && (*m.navStatus == 14 || *m.navStatus == 15))
+      t.deviceTest = *m.navStatus == 15;
+  }
+  if (m.type == 14) {
+    t.safetyText = m.text;
+    if (t.device != AisDevice::None)
+      if (const auto test = deviceTestText(m.text)) t.deviceTest = *test;
   }
   // Static and voyage data: merged, a field not available keeps what was known.
   AisStatic& s = t.info;
@@ -220,6 +263,12 @@ void AisTargetTable::merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) c
   }
   keep(s.aidType, m.aidType);
   keep(s.virtualAid, m.virtualAid);
+}
+
+void AisTargetTable::activateDistress(AisTarget& t) {
+  // A distress is always shown activated, past the activated limit too (IEC 62388: the SART symbol is
+  // never filtered); the activation is automatic, and stays when the device goes to test.
+  if (t.distress() && !t.activated) t.activated = t.autoActivated = true;
 }
 
 double AisTargetTable::distanceFromOwnM(const AisTarget& t) const {
@@ -266,13 +315,16 @@ void AisTargetTable::feed(const io::AisMessage& m, TimeUs rxUs, bool ownShip) {
   auto it = targets_.find(m.mmsi);
   if (it != targets_.end()) {
     merge(it->second, m, rxUs);
+    activateDistress(it->second);
     return;
   }
   AisTarget t;
   t.mmsi = m.mmsi;
+  t.device = aisDeviceOf(m.mmsi);
   merge(t, m, rxUs);
+  activateDistress(t);
   const std::size_t sleeping = targets_.size() - activatedCount();
-  if (sleeping >= limits_.maxSleeping && !makeRoomForSleeping(t)) return;
+  if (!t.activated && sleeping >= limits_.maxSleeping && !makeRoomForSleeping(t)) return;
   targets_.emplace(t.mmsi, std::move(t));
 }
 
@@ -338,7 +390,9 @@ void AisTargetTable::update(TimeUs now, const geo::LocalFrame& frame, const AisO
     AisTarget& t = entry.second;
     applyOwnShip(t, now, frame, own);
     const bool was = t.dangerous;
-    t.dangerous = !t.lost && t.cpaValid && withinDangerLimits(t.cpa, limits_.cpaLimitM, limits_.tcpaLimitS);
+    // A device is never dangerous: its alert is the distress itself (alerts::AlertKind::AisDistress).
+    t.dangerous = t.device == AisDevice::None && !t.lost && t.cpaValid &&
+                  withinDangerLimits(t.cpa, limits_.cpaLimitM, limits_.tcpaLimitS);
     if (t.dangerous && !t.activated && limits_.autoActivateDangerous) {
       if (activated < limits_.maxActivated) {
         t.activated = t.autoActivated = true;
@@ -367,6 +421,7 @@ bool AisTargetTable::activate(std::uint32_t mmsi, bool on) {
   if (it == targets_.end()) return false;
   AisTarget& t = it->second;
   if (!on) {
+    if (t.distress()) return false;  // a distress stays activated
     t.activated = t.autoActivated = false;
     return true;
   }

@@ -12,7 +12,9 @@
 // ITU-R M.1371-5 Annex 1 Table 1; see reportingIntervalS) and removed later. Capacity is bounded: at
 // most maxActivated activated and maxSleeping sleeping targets; at the sleeping limit the sleeping
 // target furthest from own ship is dropped (counted); an activation past the activated limit is refused
-// (counted). Plain C++, no Qt; per-message calls never throw.
+// (counted). Search and rescue devices (AIS-SART, MOB, EPIRB-AIS; aisDeviceOf) are activated whenever
+// they are not in test, whatever the limits, and never dangerous (their alert is AisDistress, not CPA).
+// Plain C++, no Qt; per-message calls never throw.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -30,6 +32,16 @@ namespace reckoner::track {
 
 enum class AisClass : std::uint8_t { Unknown, A, B, BaseStation, AidToNavigation };
 const char* aisClassName(AisClass c);
+
+/// Search and rescue devices by their MMSI (ITU-R M.585-9 Annex 2): 970xxyyyy an AIS-SART, 972xxyyyy an
+/// AIS man overboard device, 974xxyyyy an EPIRB-AIS.
+enum class AisDevice : std::uint8_t { None, Sart, Mob, Epirb };
+AisDevice aisDeviceOf(std::uint32_t mmsi);
+/// "AIS-SART", "AIS-MOB", "EPIRB-AIS"; "" for None.
+const char* aisDeviceName(AisDevice d);
+/// Whether a device's type 14 text says it is in test ("SART TEST", "MOB TEST", "EPIRB TEST": IEC
+/// 61097-14), or active ("... ACTIVE"; a text with both is active); empty when the text says neither.
+std::optional<bool> deviceTestText(std::string_view text);
 
 /// The static and voyage data of a station, merged from every static message heard.
 struct AisStatic {
@@ -60,6 +72,14 @@ struct AisTarget {
   /// fix (io::AisMessage::positionNotFix); empty for a fix.
   std::optional<int> positionNotFix;
   AisStatic info;
+  /// The latest type 14 (safety-related broadcast) text; empty when none was heard.
+  std::string safetyText;
+  AisDevice device = AisDevice::None;
+  /// A device in test: its latest position report has navigational status 15 (14 is active), or its
+  /// latest type 14 says TEST. A device is taken as active unless it says it is in test.
+  bool deviceTest = false;
+  /// A device that is not in test: a distress (an alarm, the SART symbol).
+  [[nodiscard]] bool distress() const { return device != AisDevice::None && !deviceTest; }
   TimeUs firstReportUs = 0;
   TimeUs lastReportUs = 0;    ///< any message
   TimeUs lastPositionUs = 0;  ///< the latest message with a position
@@ -124,7 +144,8 @@ struct AisTableCounts {
 };
 
 /// ITU-R M.1371-5 Annex 1 Table 1 (and Table 2 for class B), the nominal interval between position
-/// reports, seconds: class A at anchor or moored and not faster than 3 kn 180 s; 0-14 kn 10 s (3.33 s
+/// reports, seconds: a search and rescue device 60 (a burst of eight reports a minute, IEC 61097-14);
+/// class A at anchor or moored and not faster than 3 kn 180 s; 0-14 kn 10 s (3.33 s
 /// turning); 14-23 kn 6 s (2 s turning); above 23 kn 2 s; class B above 2 kn 30 s, else 180 s; base
 /// station 10 s; aid to navigation 180 s; a station heard only by static data 360 s. Unknown SOG is
 /// taken as slow (the longest interval of its class that is not the anchored one).
@@ -167,6 +188,7 @@ class AisTargetTable {
  private:
   void merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) const;
   bool makeRoomForSleeping(const AisTarget& incoming);
+  static void activateDistress(AisTarget& t);
   void applyOwnShip(AisTarget& t, TimeUs now, const geo::LocalFrame& frame, const AisOwnShip& own) const;
   /// Rough distance from the latest own-ship position (equirectangular), for the capacity rule;
   /// infinity without a position.

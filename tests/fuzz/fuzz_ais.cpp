@@ -23,8 +23,11 @@ void checkMessage(const reckoner::io::AisMessage& m) {
   if (m.headingDeg) check(*m.headingDeg >= 0 && *m.headingDeg < 360);
   if (m.rotDegMin) check(std::isfinite(*m.rotDegMin) && std::abs(*m.rotDegMin) <= 720.1);
   if (m.navStatus) check(*m.navStatus >= 0 && *m.navStatus <= 15);
-  for (const auto* s : {&m.name, &m.callsign, &m.destination, &m.vendor})
+  for (const auto* s : {&m.name, &m.callsign, &m.destination, &m.vendor, &m.text})
     for (const char c : *s) check(c >= 32 && c < 127);
+  check(m.text.size() <= 161);
+  if (m.second) check(*m.second >= 0 && *m.second <= 59);
+  if (m.positionNotFix) check(*m.positionNotFix >= 61 && *m.positionNotFix <= 63);
 }
 }  // namespace
 

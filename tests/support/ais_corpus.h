@@ -132,6 +132,13 @@ inline PayloadBuilder longRange(long long lon, long long lat, int sog, int cog) 
   return p.put(sog, 6).put(cog, 9).put(0, 1).put(0, 1);
 }
 
+/// Type 14 safety-related broadcast: the text, as many characters as it has (no padding).
+inline PayloadBuilder safetyBroadcast(long long mmsi, const std::string& text) {
+  PayloadBuilder p;
+  p.put(14, 6).put(0, 2).put(mmsi, 30).put(0, 2);
+  return p.text(text, static_cast<int>(text.size()));
+}
+
 /// A payload in fragments of at most maxChars armour characters (sequence id seq), as a long type 5 is
 /// sent: the fill bits on the last fragment only.
 inline std::vector<std::string> fragments(const PayloadBuilder& p, int seq, std::size_t maxChars = 60,
@@ -146,8 +153,9 @@ inline std::vector<std::string> fragments(const PayloadBuilder& p, int seq, std:
   return out;
 }
 
-/// Every decoded type (1, 2, 3, 4, 5, 18, 19, 21, 24 A and B, 27) with ordinary, edge and "not
-/// available" values, one sentence per line (type 5 in two fragments).
+/// Every decoded type (1, 2, 3, 4, 5, 14, 18, 19, 21, 24 A and B, 27) with ordinary, edge and "not
+/// available" values, one sentence per line (type 5 in two fragments); an AIS-SART's position reports
+/// (MMSI 970xxyyyy, status 14 active and 15 test) with time stamps 60-63, and its type 14 texts.
 inline std::vector<std::string> corpus() {
   std::vector<std::string> c;
   const auto add = [&c](const PayloadBuilder& p) { c.push_back(sentence(p)); };
@@ -166,7 +174,15 @@ inline std::vector<std::string> corpus() {
   add(staticReport(0));
   add(staticReport(1));
   add(longRange(-73230, 24540, 12, 275));
-  add(longRange(108600, 54600, 63, 511));  // not available
+  add(longRange(108600, 54600, 63, 511));                                          // not available
+  add(classA(1, 970012345, 14, -128, 0, -73440000, 28380000, 3600, 511, 61));      // SART active, manual
+  add(classA(1, 970012345, 14, -128, 3, -73440010, 28380010, 1234, 511, 62));      // dead reckoning
+  add(classA(1, 972001002, 15, -128, 1023, 0x6791AC0, 0x3412140, 3600, 511, 63));  // MOB test, inoperative
+  add(classA(1, 974001003, 14, -128, 1, -73440020, 28380020, 900, 511, 60));       // EPIRB, no second
+  add(safetyBroadcast(970012345, "SART ACTIVE"));
+  add(safetyBroadcast(972001002, "MOB TEST"));
+  add(safetyBroadcast(2442000, std::string(161, 'W')));  // the longest text
+  add(safetyBroadcast(2442001, ""));                     // no text
   return c;
 }
 

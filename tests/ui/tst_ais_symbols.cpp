@@ -3,6 +3,7 @@
 // with painted pixels asserted: red only where a target is dangerous, the vector only on activated
 // targets, the scaled hull only when the ship is large on screen, nothing of a dangerous target in the
 // flash's off phase.
+#include <QBrush>
 #include <QImage>
 #include <QPainter>
 #include <QTest>
@@ -129,6 +130,63 @@ class TestAisSymbols : public QObject {
     QCOMPARE(inkIn(off, off.rect()).red, 0);
   }
 
+  /// GIVEN an AIS-SART in distress (its alarm unacknowledged), the same acknowledged, and a MOB in test
+  /// WHEN painted THEN each is a circle with a cross, not a triangle: the distresses bold red, the test
+  /// one thin in the AIS colour; in the flash's off phase only the acknowledged distress and the test
+  /// one are drawn. Saved as a PNG for a look when RECKONER_SART_PNG names a file.
+  void searchAndRescueDevicesAreACircleWithACross() {
+    AisSymbol active = symbol(-100, 0, 0, 0);
+    active.headingGridRad.reset();
+    active.cogGridRad.reset();
+    active.activated = active.device = active.distress = active.unacknowledged = true;
+    AisSymbol acknowledged = active;
+    acknowledged.xM = 0;
+    acknowledged.unacknowledged = false;
+    AisSymbol test = active;
+    test.xM = 100;
+    test.distress = test.unacknowledged = false;
+    const QImage on = render({active, acknowledged, test}, geometry());
+    if (qEnvironmentVariableIsSet("RECKONER_SART_PNG")) {
+      const QString path = qEnvironmentVariable("RECKONER_SART_PNG");
+      on.scaled(4 * kSize, 4 * kSize, Qt::IgnoreAspectRatio, Qt::FastTransformation).save(path);
+    }
+    // The ring 0.7 x 14 = 9.8 px out: ink to the right of the centre, where a triangle (4.2 px) has none;
+    // the cross: ink at the centre and on the diagonal at 5 px.
+    auto ring = [](const QImage& img, const AisSymbol& s) {
+      const QPointF c = geometry().toWidget(s.xM, s.yM);
+      return inkIn(img, QRect(static_cast<int>(c.x()) + 8, static_cast<int>(c.y()) - 3, 4, 6));
+    };
+    auto cross = [](const QImage& img, const AisSymbol& s) {
+      const QPointF c = geometry().toWidget(s.xM, s.yM);
+      const Ink centre = inkIn(img, QRect(static_cast<int>(c.x()) - 1, static_cast<int>(c.y()) - 1, 3, 3));
+      const Ink diagonal = inkIn(img, QRect(static_cast<int>(c.x()) + 4, static_cast<int>(c.y()) + 4, 3, 3));
+      return Ink{centre.dark + diagonal.dark, centre.red + diagonal.red};
+    };
+    for (const AisSymbol* s : {&active, &acknowledged}) {
+      QVERIFY(ring(on, *s).red > 0);
+      QVERIFY(cross(on, *s).red > 0);
+      QCOMPARE(ring(on, *s).dark + cross(on, *s).dark, 0);
+    }
+    QVERIFY(ring(on, test).dark > 0 && cross(on, test).dark > 0);
+    QCOMPARE(ring(on, test).red + cross(on, test).red, 0);
+    // The ring is dashed: along the circle, some of its points are not inked
+    const QPointF c = geometry().toWidget(active.xM, active.yM);
+    int inked = 0;
+    for (int i = 0; i < 72; ++i) {
+      const double a = i * 5.0 * kPi / 180.0;
+      const QColor px = on.pixelColor(static_cast<int>(std::lround(c.x() + 9.8 * std::cos(a))),
+                                      static_cast<int>(std::lround(c.y() + 9.8 * std::sin(a))));
+      if (px.red() > 180 && px.green() < 90) ++inked;
+    }
+    QVERIFY2(inked > 20 && inked < 68, qPrintable(QString::number(inked)));
+    AisPaintStyle st;
+    st.flashOn = false;
+    const QImage off = render({active, acknowledged, test}, geometry(), st);
+    QCOMPARE(ring(off, active).red + cross(off, active).red, 0);
+    QVERIFY(ring(off, acknowledged).red > 0);
+    QVERIFY(ring(off, test).dark > 0);
+  }
+
   void largeShipsAreDrawnToScale() {
     // GIVEN a 200 m ship heading north, antenna 150 m from the bow
     AisSymbol s = symbol(0, 0, 0, 0);
@@ -194,6 +252,43 @@ class TestAisSymbols : public QObject {
     RK_COMPARE_NEAR(sym->yM, 1112.0, 5.0);
     RK_COMPARE_NEAR(radToDeg(*sym->headingGridRad), 181.0, 0.01);
     QVERIFY(sym->dangerous && sym->activated);
+  }
+
+  void searchAndRescueDeviceRowsAndPickReport() {
+    const geo::LocalFrame f(50.0, -3.0);
+    track::AisTargetTable table;
+    io::AisMessage m;
+    m.type = 1;
+    m.mmsi = 970012345;
+    m.latDeg = 50.005;
+    m.lonDeg = -3.0;
+    m.sogKn = 0.4;
+    m.cogDeg = 90.0;
+    m.navStatus = 14;
+    m.positionNotFix = 61;
+    table.feed(m, 0);
+    io::AisMessage t;
+    t.type = 14;
+    t.mmsi = 970012345;
+    t.text = "SART ACTIVE";
+    table.feed(t, 1);
+    table.update(1, f, {f.origin(), 0.0, 0.0});
+    AisTableModel model;
+    model.setTargets(table.targets());
+    QCOMPARE(model.data(model.index(0, AisTableModel::Class), Qt::DisplayRole).toString(),
+             QString("AIS-SART"));
+    QVERIFY(model.data(model.index(0, AisTableModel::Status), Qt::DisplayRole)
+                .toString()
+                .startsWith("AIS-SART ACTIVE"));
+    QCOMPARE(model.data(model.index(0, AisTableModel::Mmsi), Qt::ForegroundRole).value<QBrush>().color(),
+             QColor(200, 0, 0));
+    const QString report = aisPickReport(*table.find(970012345));
+    QVERIFY2(report.startsWith("AIS-SART 970012345  ACTIVE: DISTRESS") &&
+                 report.contains("Safety message: SART ACTIVE") &&
+                 report.contains("Position NOT A FIX: manual input (time stamp 61)"),
+             qPrintable(report));
+    const auto sym = aisSymbolOf(*table.find(970012345), f, 1);
+    QVERIFY(sym && sym->device && sym->distress && sym->activated && !sym->dangerous);
   }
 };
 

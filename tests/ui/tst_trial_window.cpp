@@ -7,6 +7,7 @@
 #include <QAction>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/angles.h"
@@ -78,6 +79,38 @@ class TestTrialWindow : public QObject {
     for (const auto& t : live.frame.tracks) associated += t.aisMmsi != 0;
     QVERIFY2(associated >= 25, qPrintable(QString::number(associated)));
     saveWindowShot(w, QStringLiteral("ais_fusion_window"));
+  }
+
+  /// GIVEN the SART scenario run two minutes THEN the window's AIS picture has the active AIS-SART as a
+  /// distress (activated) and the MOB in test, and its alert list the SART's alarm, unacknowledged; an
+  /// acknowledgement keeps it (a distress waits for acknowledgement and stays while it holds).
+  void anActiveAisSartIsShownWithItsAlarm() {
+    MainWindow w(options("sart"));
+    showAndWait(w);
+    runUntil(w, 120.0);
+    const LiveFrame& live = w.history().latest();
+    QVERIFY(live.aisTargets);
+    const auto find = [&](std::uint32_t mmsi) -> const track::AisTarget* {
+      for (const auto& t : *live.aisTargets)
+        if (t.mmsi == mmsi) return &t;
+      return nullptr;
+    };
+    QVERIFY(find(970012345) && find(970012345)->distress() && find(970012345)->activated);
+    QVERIFY(find(972001002) && find(972001002)->deviceTest);
+    const auto alarm = std::find_if(live.alerts.begin(), live.alerts.end(), [](const alerts::Alert& a) {
+      return a.id.kind == alerts::AlertKind::AisDistress;
+    });
+    QVERIFY(alarm != live.alerts.end());
+    QCOMPARE(alarm->id.source, 970012345);
+    QCOMPARE(alarm->state, alerts::AlertState::Unacknowledged);
+    // WHEN acknowledged THEN it stays, and the symbol is steady (drawn in every phase: the screenshot
+    // always shows it)
+    const alerts::AlertId id = alarm->id;
+    w.controller()->acknowledgeAlert(id);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        w.history().alert(id) && w.history().alert(id)->state == alerts::AlertState::Acknowledged,
+        kTimeoutMs);
+    saveWindowShot(w, QStringLiteral("sart_window"));
   }
 };
 

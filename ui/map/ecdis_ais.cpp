@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -28,8 +29,13 @@ QPointF along(QPointF c, double a, double forward, double right) {
   return {c.x() + forward * s + right * k, c.y() - forward * k + right * s};
 }
 
+/// Drawn with the bold red pen: a dangerous target, a distress, while not lost.
+bool alarmed(const AisSymbol& s) {
+  return (s.dangerous || s.distress) && !s.lost;
+}
+
 int paintOrder(const AisSymbol& s) {
-  return s.dangerous ? 3 : s.selected ? 2 : s.activated ? 1 : 0;
+  return alarmed(s) ? 3 : s.selected ? 2 : s.activated ? 1 : 0;
 }
 
 /// The shapes of the symbols of one layer and pen, drawn together: one drawLines call per pen instead
@@ -38,7 +44,19 @@ int paintOrder(const AisSymbol& s) {
 struct Batch {
   std::vector<QPolygonF> polygons;
   std::vector<QLineF> lines, dashed;
+  /// Search and rescue devices: circles and the crosses in them (dashed in the alarm pen's batch).
+  std::vector<QRectF> rings;
+  std::vector<QLineF> ringCrosses;
 };
+
+/// The device symbol: a circle 1.4 h across (5 mm on a 96 dpi screen; IEC 62288 asks 5 mm) with a
+/// cross inside, not turned with the heading.
+void collectDevice(Batch& b, QPointF c, double h) {
+  const double r = 0.7 * h, d = r * std::sqrt(0.5);
+  b.rings.emplace_back(c.x() - r, c.y() - r, 2.0 * r, 2.0 * r);
+  b.ringCrosses.emplace_back(QPointF(c.x() - d, c.y() - d), QPointF(c.x() + d, c.y() + d));
+  b.ringCrosses.emplace_back(QPointF(c.x() - d, c.y() + d), QPointF(c.x() + d, c.y() - d));
+}
 
 void collect(Batch& b, const AisSymbol& s, const AisPaintGeometry& g, const AisPaintStyle& st) {
   const QPointF c = g.toWidget(s.xM, s.yM);
@@ -49,7 +67,8 @@ void collect(Batch& b, const AisSymbol& s, const AisPaintGeometry& g, const AisP
   // The hull to scale when it is larger on screen than the triangle (the position is the reference
   // point: A to the bow, B to the stern, C to port, D to starboard).
   QPointF bow = along(c, a, h / 2.0, 0.0);
-  const bool scaled = oriented && s.toBowM && s.toSternM && s.toPortM && s.toStarboardM &&
+  if (s.device) collectDevice(b, c, h);
+  const bool scaled = !s.device && oriented && s.toBowM && s.toSternM && s.toPortM && s.toStarboardM &&
                       (*s.toBowM + *s.toSternM) * g.pixelsPerMetre > h;
   if (scaled) {
     const double ppm = g.pixelsPerMetre;
@@ -58,18 +77,19 @@ void collect(Batch& b, const AisSymbol& s, const AisPaintGeometry& g, const AisP
     bow = along(c, a, A, (D - C) / 2.0);
     b.polygons.push_back(QPolygonF(
         {along(c, a, -B, -C), along(c, a, shoulder, -C), bow, along(c, a, shoulder, D), along(c, a, -B, D)}));
-  } else {
+  } else if (!s.device) {
     b.polygons.push_back(QPolygonF({bow, along(c, a, -h / 2.0, -0.3 * h), along(c, a, -h / 2.0, 0.3 * h)}));
   }
 
-  if (s.lost) {                 // crossed out, no vector
-    const double r = 0.75 * h;  // a screen-aligned X over the symbol, whatever its heading
+  if (s.lost) {  // crossed out, no vector
+    // A screen-aligned X over the symbol, whatever its heading (past the device's circle).
+    const double r = (s.device ? 1.1 : 0.75) * h;
     b.lines.emplace_back(QPointF(c.x() - r, c.y() - r), QPointF(c.x() + r, c.y() + r));
     b.lines.emplace_back(QPointF(c.x() - r, c.y() + r), QPointF(c.x() + r, c.y() - r));
     return;
   }
   if (s.activated) {
-    if (s.headingGridRad) {
+    if (s.headingGridRad && !s.device) {
       const double lineLen = 2.0 * h;
       const double ha = *s.headingGridRad + g.gridNorthScreenRad;
       const QPointF end = along(bow, ha, lineLen, 0.0);
@@ -92,13 +112,21 @@ void collect(Batch& b, const AisSymbol& s, const AisPaintGeometry& g, const AisP
   }
 }
 
-void draw(QPainter& p, const Batch& b, const QColor& colour, double width) {
+void draw(QPainter& p, const Batch& b, const QColor& colour, double width, bool dashedRings) {
   QPen pen(colour, width);
   pen.setJoinStyle(Qt::MiterJoin);
   p.setPen(pen);
   p.setBrush(Qt::NoBrush);
   for (const QPolygonF& poly : b.polygons) p.drawPolygon(poly);
   if (!b.lines.empty()) p.drawLines(b.lines.data(), static_cast<int>(b.lines.size()));
+  if (!b.rings.empty()) {
+    QPen ring = pen;
+    if (dashedRings) ring.setDashPattern({2.0, 1.5});  // in pen widths: 6 px dashes at 3 px
+    p.setPen(ring);
+    for (const QRectF& r : b.rings) p.drawEllipse(r);
+    p.drawLines(b.ringCrosses.data(), static_cast<int>(b.ringCrosses.size()));
+    p.setPen(pen);
+  }
   if (!b.dashed.empty()) {
     pen.setStyle(Qt::DashLine);
     p.setPen(pen);
@@ -143,6 +171,8 @@ std::optional<AisSymbol> aisSymbolOf(const track::AisTarget& t, const geo::Local
   s.selected = t.selected;
   s.dangerous = t.dangerous;
   s.lost = t.lost;
+  s.device = t.device != track::AisDevice::None;
+  s.distress = t.distress();
   return s;
 }
 
@@ -154,19 +184,27 @@ void paintAisTargets(QPainter& p, const std::vector<AisSymbol>& symbols, const A
   // pen and those of the dangerous (bold red) pen.
   std::array<std::array<Batch, 2>, 4> layers;
   for (const AisSymbol& s : symbols) {
-    if (s.dangerous && !s.lost && !style.flashOn) continue;
-    collect(layers[static_cast<std::size_t>(paintOrder(s))][s.dangerous && !s.lost ? 1 : 0], s, g, style);
+    // A dangerous target flashes; a distress until its alarm is acknowledged (then it is steady).
+    const bool flashes = !s.lost && (s.dangerous || (s.distress && s.unacknowledged));
+    if (flashes && !style.flashOn) continue;
+    collect(layers[static_cast<std::size_t>(paintOrder(s))][alarmed(s) ? 1 : 0], s, g, style);
   }
   for (const auto& layer : layers) {
-    draw(p, layer[0], style.colour, 1.0 * style.scale);
-    draw(p, layer[1], style.dangerous, 3.0 * style.scale);
+    draw(p, layer[0], style.colour, 1.0 * style.scale, false);
+    draw(p, layer[1], style.dangerous, 3.0 * style.scale, true);
   }
   p.restore();
 }
 
 QString aisPickReport(const track::AisTarget& t) {
   QStringList l;
-  l << QStringLiteral("AIS %1  class %2").arg(t.mmsi).arg(QString::fromLatin1(track::aisClassName(t.cls)));
+  if (t.device != track::AisDevice::None)
+    l << QStringLiteral("%1 %2  %3")
+             .arg(QString::fromLatin1(track::aisDeviceName(t.device)))
+             .arg(t.mmsi)
+             .arg(t.deviceTest ? QStringLiteral("TEST") : QStringLiteral("ACTIVE: DISTRESS"));
+  else
+    l << QStringLiteral("AIS %1  class %2").arg(t.mmsi).arg(QString::fromLatin1(track::aisClassName(t.cls)));
   const auto& s = t.info;
   if (!s.name.empty()) l << QStringLiteral("Name %1").arg(QString::fromStdString(s.name));
   if (!s.callsign.empty()) l << QStringLiteral("Call sign %1").arg(QString::fromStdString(s.callsign));
@@ -185,6 +223,8 @@ QString aisPickReport(const track::AisTarget& t) {
              .arg(part(s.etaMonth), part(s.etaDay), part(s.etaHour), part(s.etaMinute));
   }
   if (t.navStatus) l << QStringLiteral("Navigational status %1").arg(*t.navStatus);
+  if (!t.safetyText.empty())
+    l << QStringLiteral("Safety message: %1").arg(QString::fromStdString(t.safetyText));
   if (t.positionNotFix)
     l << QStringLiteral("Position NOT A FIX: %1 (time stamp %2)")
              .arg(*t.positionNotFix == 61   ? QStringLiteral("manual input")
@@ -229,11 +269,17 @@ void EcdisView::paintAis(QPainter& p) {
   style.vectorMinutes = overlay_.vectorMinutes;
   style.flashOn = (QDateTime::currentMSecsSinceEpoch() / 500) % 2 == 0;
   // A station associated with a radar track is one target: drawn activated (with its vector) in place
-  // of the radar symbol, or left out when the radar symbol stands for it (unless its track is selected).
+  // of the radar symbol, or left out when the radar symbol stands for it (unless its track is selected,
+  // or it is a search and rescue device).
   std::unordered_map<std::uint32_t, int> trackOf;
   for (const auto& t : live.frame.tracks)
     if (t.aisMmsi != 0) trackOf[t.aisMmsi] = t.trackId;
-  if (trackOf.empty()) {
+  // The distresses whose alarm is not acknowledged yet flash (silenced is not acknowledged).
+  std::set<std::uint32_t> unacknowledged;
+  for (const alerts::Alert& a : live.alerts)
+    if (a.id.kind == alerts::AlertKind::AisDistress && a.state != alerts::AlertState::Acknowledged)
+      unacknowledged.insert(static_cast<std::uint32_t>(a.id.source));
+  if (trackOf.empty() && unacknowledged.empty()) {
     paintAisTargets(p, aisSymbols_, g, style);
     return;
   }
@@ -243,10 +289,14 @@ void EcdisView::paintAis(QPainter& p) {
     const auto it = trackOf.find(s.mmsi);
     if (it == trackOf.end()) {
       shown.push_back(s);
-    } else if (!overlay_.associatedAsRadar || selected_ == it->second) {
+    } else if (!overlay_.associatedAsRadar || selected_ == it->second || s.device) {
+      // (a search and rescue device's symbol is never left out for its radar track's)
       shown.push_back(s);
       shown.back().activated = true;
+    } else {
+      continue;
     }
+    shown.back().unacknowledged = unacknowledged.contains(s.mmsi);
   }
   paintAisTargets(p, shown, g, style);
 }

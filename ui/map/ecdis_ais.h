@@ -6,8 +6,9 @@
 // COG/SOG vector (dashed, the display's vector time long) and the turn indicator (a flag at the end of
 // the heading line towards the turn); a selected target inside four corner brackets; a dangerous one
 // bold red (and flashing, which the caller drives with AisPaintStyle::flashOn); a lost one crossed out,
-// without vector. The GUI converts the table's rows (track::AisTarget) into symbols; it computes
-// nothing the core computes.
+// without vector; an AIS-SART, MOB or EPIRB-AIS as a circle with a cross (IEC 62288; SN.1/Circ.243/Add.1),
+// bold red and dashed when active, flashing until its alarm is acknowledged, thin in the AIS colour in test.
+// The GUI converts the table's rows (track::AisTarget) into symbols; it computes nothing the core computes.
 #include <QColor>
 #include <QPainter>
 #include <QPointF>
@@ -31,6 +32,9 @@ struct AisSymbol {
   int turn = 0;  ///< +1 turning right, -1 left, 0 not turning (or not known)
   std::optional<double> toBowM, toSternM, toPortM, toStarboardM;
   bool activated = false, selected = false, dangerous = false, lost = false;
+  /// A search and rescue device (AIS-SART, MOB, EPIRB-AIS): a circle with a cross (IEC 62288), drawn
+  /// bold, red and dashed when it is a distress (not in test), flashing while its alarm is unacknowledged.
+  bool device = false, distress = false, unacknowledged = false;
 };
 
 /// The symbol of a table row at `now` in `frame`; empty when the target has no position.
@@ -41,8 +45,9 @@ struct AisPaintStyle {
   QColor colour = QColor(20, 20, 20);
   QColor dangerous = QColor(220, 0, 0);
   double vectorMinutes = 6.0;
-  double scale = 1.0;   ///< device pixels per logical symbol unit (the triangle is 14 units activated)
-  bool flashOn = true;  ///< false: dangerous targets are not drawn (the off phase of the flash)
+  double scale = 1.0;  ///< device pixels per logical symbol unit (the triangle is 14 units activated)
+  /// false: dangerous targets and unacknowledged distresses are not drawn (the off phase of the flash)
+  bool flashOn = true;
 };
 
 /// Where grid metres go on screen: the widget point of a grid point, and the screen angle of grid

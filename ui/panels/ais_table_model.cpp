@@ -43,6 +43,9 @@ int AisTableModel::rowOf(std::uint32_t mmsi) const {
 
 QString AisTableModel::statusText(const track::AisTarget& t) {
   QStringList s;
+  if (t.device != track::AisDevice::None)
+    s << QStringLiteral("%1 %2").arg(QString::fromLatin1(track::aisDeviceName(t.device)),
+                                     t.deviceTest ? QStringLiteral("test") : QStringLiteral("ACTIVE"));
   if (t.lost)
     s << QStringLiteral("lost");
   else if (t.dangerous)
@@ -84,7 +87,8 @@ QVariant AisTableModel::data(const QModelIndex& index, int role) const {
         return data(index, Qt::DisplayRole);
     }
   }
-  if (role == Qt::ForegroundRole && t.dangerous && !t.lost) return QBrush(QColor(200, 0, 0));
+  if (role == Qt::ForegroundRole && (t.dangerous || t.distress()) && !t.lost)
+    return QBrush(QColor(200, 0, 0));
   if (role == Qt::TextAlignmentRole && c != Name && c != Status && c != Class)
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
   if (role != Qt::DisplayRole) return {};
@@ -94,7 +98,8 @@ QVariant AisTableModel::data(const QModelIndex& index, int role) const {
     case Name:
       return QString::fromStdString(t.info.name);
     case Class:
-      return QString::fromLatin1(track::aisClassName(t.cls));
+      return t.device != track::AisDevice::None ? QString::fromLatin1(track::aisDeviceName(t.device))
+                                                : QString::fromLatin1(track::aisClassName(t.cls));
     case Range:
       return t.rangeValid ? formatDistance(t.rangeM, units_) : QString();
     case Bearing:

@@ -35,7 +35,8 @@ constexpr AlertKind kAllKinds[] = {AlertKind::CpaTcpa,
                                    AlertKind::WaypointApproach,
                                    AlertKind::Arrival,
                                    AlertKind::DrFilterReset,
-                                   AlertKind::TrackFilterReset};
+                                   AlertKind::TrackFilterReset,
+                                   AlertKind::AisDistress};
 
 track::Cpa cpaAt(double cpaM, double tcpaS) {
   track::Cpa c;

@@ -4,6 +4,7 @@
 // radius is above it; settings a scenario implies; impossible settings are named.
 #include <QTest>
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -123,6 +124,33 @@ class TestAlertFeed : public QObject {
     // AND acknowledged alarms were never removed while they held: every Cleared follows a Rectify of
     // the condition, i.e. no alert of a kind was raised twice without its condition ending in between
     QVERIFY(count(r, AlertKind::LostTarget, E::Raised) > 0);
+  }
+
+  /// GIVEN the built-in SART scenario (an active AIS-SART ahead, a MOB in test, a ferry with class A) WHEN
+  /// run with nobody acknowledging THEN the distress alarm is raised once, for the SART alone, within its
+  /// first burst, and still shown at the end; the MOB in test and the ferry raise none.
+  void anActiveAisSartRaisesTheDistressAlarmAndTheTestOneNone() {
+    const Scenario s = builtin("sart");
+    alerts::AlertManager m;
+    const Run r = runWithAlerts(s, alertFeedSettingsFor(s), m);
+    using E = alerts::AlertLogEntry::Event;
+    QCOMPARE(count(r, AlertKind::AisDistress, E::Raised), 1);
+    const auto raised = std::find_if(r.log.begin(), r.log.end(), [](const alerts::AlertLogEntry& x) {
+      return x.id.kind == AlertKind::AisDistress;
+    });
+    QCOMPARE(raised->id.source, 970012345);
+    QCOMPARE(raised->priority, alerts::Priority::Alarm);
+    // (raised by its first report: its "SART ACTIVE" text may come before its position, and then the
+    // alarm has no range yet)
+    QVERIFY2(raised->text.starts_with("AIS-SART 970012345 ACTIVE"), raised->text.c_str());
+    QVERIFY(toSeconds(raised->timeUs) <= 62.0);  // the first burst starts within the first minute
+    const alerts::Alert* a = m.find({AlertKind::AisDistress, 970012345});
+    QVERIFY(a);
+    QCOMPARE(a->state, alerts::AlertState::Unacknowledged);
+    QVERIFY2(a->text.starts_with("AIS-SART 970012345 ACTIVE ") &&
+                 a->text.find(" NM bearing ") != std::string::npos,
+             a->text.c_str());
+    QVERIFY(!m.find({AlertKind::AisDistress, 972001002}));
   }
 
   void theDeadReckoningLimitHoldsWhileTheRadiusIsAbove() {

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "common/angles.h"
 #include "common/units.h"
@@ -24,6 +25,7 @@
 #include "support/compare_near.h"
 #include "support/drkf_fixtures.h"
 #include "tracking/ais_fusion.h"
+#include "tracking/ais_targets.h"
 
 using namespace reckoner;
 
@@ -99,6 +101,46 @@ class TstAisFusion : public QObject {
     QCOMPARE(a.front().message.type, 1);
     QCOMPARE(b.front().message.type, 18);
     QVERIFY(!b.front().message.headingDeg);
+  }
+
+  /// GIVEN an AIS-SART and a MOB in test WHEN transmitting for 10 minutes THEN each sends bursts of 8
+  /// type 1 reports one second apart once a minute (status 14 active, 15 test; no heading, no ROT) and
+  /// its type 14 text every 4 minutes; the table takes the first as a distress, the second as a test.
+  void searchAndRescueDevicesSendBurstsAndTheirText() {
+    auto sart = exact(sensors::AisStationClass::Sart);
+    sart.mmsi = 970012345;
+    auto mob = sart;
+    mob.mmsi = 972001002;
+    mob.test = true;
+    QVERIFY(sart.check().empty() && mob.check().empty());
+    for (const auto& spec : {sart, mob}) {
+      const auto all = transmit(spec, 0.1, 135, 0, 600);
+      const auto reports = positions(all);
+      QVERIFY2(reports.size() >= 72 && reports.size() <= 80, qPrintable(QString::number(reports.size())));
+      for (std::size_t i = 0; i < reports.size(); ++i) {
+        const io::AisMessage& m = reports[i].message;
+        QCOMPARE(m.type, 1);
+        QCOMPARE(*m.navStatus, spec.test ? 15 : 14);
+        QVERIFY(!m.headingDeg && !m.rotDegMin);
+        if (i == 0) continue;
+        const double gap = toSeconds(reports[i].rxUs - reports[i - 1].rxUs);
+        RK_COMPARE_NEAR(gap, i % 8 == 0 ? 53.0 : 1.0, 1e-9);
+      }
+      std::vector<std::string> texts;
+      for (const auto& r : all)
+        if (r.message.type == 14) texts.push_back(r.message.text);
+      QCOMPARE(texts.size(), std::size_t{3});
+      QCOMPARE(texts.front(), std::string(spec.test ? "MOB TEST" : "SART ACTIVE"));
+      track::AisTargetTable table;
+      for (const auto& r : all) table.feed(r.message, r.rxUs);
+      QCOMPARE(table.find(spec.mmsi)->distress(), !spec.test);
+    }
+    // A device needs a device's MMSI, and only a device has a test mode
+    sart.mmsi = 235000001;
+    QVERIFY(sart.check().starts_with("mmsi: "));
+    auto a = exact(sensors::AisStationClass::A);
+    a.test = true;
+    QVERIFY(a.check().starts_with("test: "));
   }
 
   void latencyAndUtcSecond() {
@@ -209,6 +251,14 @@ class TstAisFusion : public QObject {
       if (t.ais) ++(t.ais->cls == sensors::AisStationClass::A ? a : b);
     QCOMPARE(a, 20);
     QCOMPARE(b, 10);
+    // The SART scenario's devices are read and written back with their mode
+    const sim::Scenario sart = test::builtinScenario("sart");
+    const sim::Scenario sartBack = files::parseScenario(files::writeScenario(sart), "written");
+    QCOMPARE(sartBack.targets.size(), std::size_t{3});
+    QCOMPARE(sartBack.targets[0].ais->cls, sensors::AisStationClass::Sart);
+    QVERIFY(!sartBack.targets[0].ais->test);
+    QVERIFY(sartBack.targets[1].ais->test);
+    QCOMPARE(sartBack.targets[1].ais->mmsi, 972001002u);
     sim::Scenario edited = s;
     edited.tracker.aisAssociation.positionLimitM = 250.0;
     const sim::Scenario back = files::parseScenario(files::writeScenario(edited), "written");
@@ -235,6 +285,12 @@ class TstAisFusion : public QObject {
                              << "targets[0].ais.latency_s";
     QTest::newRow("unknown") << R"({"class": "B", "mmsi": 5, "speed": 3})"
                              << "targets[0].ais.speed";
+    QTest::newRow("sart mmsi") << R"({"class": "SART", "mmsi": 235000001})"
+                               << "targets[0].ais.mmsi";
+    QTest::newRow("test of a ship") << R"({"class": "A", "mmsi": 5, "test": true})"
+                                    << "targets[0].ais.test";
+    QTest::newRow("test not a boolean") << R"({"class": "SART", "mmsi": 970000001, "test": 1})"
+                                        << "targets[0].ais.test";
   }
   void badFieldsNamed() {
     QFETCH(QString, ais);

@@ -450,6 +450,90 @@ class TestAisTargets : public QObject {
     QVERIFY(!m.find({alerts::AlertKind::AisCpaTcpa, 211000001}));
   }
 
+  /// GIVEN a table full to both limits (one activated, one sleeping target) WHEN an AIS-SART (MMSI
+  /// 970xxyyyy, status 14) reports 1 NM north of own ship, drifting onto it THEN it is added past the
+  /// limits, activated, never dangerous, lost after 5 of its 60 s intervals, and raises the distress
+  /// alarm (no CPA alarm), held until acknowledged after it is lost; a MOB in test (status 15, "MOB TEST")
+  /// raises nothing until its "MOB ACTIVE".
+  void searchAndRescueDevicesRaiseTheirAlarm() {
+    QCOMPARE(aisDeviceOf(970000000), AisDevice::Sart);
+    QCOMPARE(aisDeviceOf(972123456), AisDevice::Mob);
+    QCOMPARE(aisDeviceOf(974999999), AisDevice::Epirb);
+    QCOMPARE(aisDeviceOf(969999999), AisDevice::None);
+    QCOMPARE(aisDeviceOf(971000001), AisDevice::None);
+    QCOMPARE(aisDeviceOf(97000000), AisDevice::None);  // 8 digits: a group call, not a device
+    QCOMPARE(deviceTestText("SART TEST"), std::optional<bool>(true));
+    QCOMPARE(deviceTestText("MOB ACTIVE"), std::optional<bool>(false));
+    QCOMPARE(deviceTestText("RCVD YR TEST MSG"), std::optional<bool>(true));
+    QCOMPARE(deviceTestText("SART ACTIVE NOT A TEST"), std::optional<bool>(false));
+    QVERIFY(!deviceTestText("EP228 IX48"));
+    const geo::LocalFrame f(kLat0, kLon0);
+    AisTableLimits limits;
+    limits.maxActivated = 1;
+    limits.maxSleeping = 1;
+    AisTargetTable table(limits);
+    table.feed(report(211000001, 1, at(f, 3000, 0), 10.0, 270.0), sec(0));  // dangerous: activated
+    table.feed(report(211000002, 1, at(f, 9000, 9000), 10.0, 0.0), sec(0));
+    const AisOwnShip own{f.origin(), 0.0, 0.0};
+    table.update(sec(0), f, own);
+    QVERIFY(table.find(211000001)->activated);
+    io::AisMessage sart = report(970012345, 1, at(f, 0, 1852.0), 0.5, 180.0);
+    sart.navStatus = 14;
+    table.feed(sart, sec(1));
+    const AisTarget* t = table.find(970012345);
+    QVERIFY(t);
+    QCOMPARE(t->device, AisDevice::Sart);
+    QVERIFY(t->distress() && t->activated && t->autoActivated);
+    QCOMPARE(table.counts().activated, std::size_t{2});  // past the limit of 1
+    QCOMPARE(reportingIntervalS(*t), 60.0);
+    QCOMPARE(table.lostAfterS(*t), 300.0);
+    QVERIFY(!table.activate(970012345, false));  // a distress stays activated
+    table.update(sec(1), f, own);
+    t = table.find(970012345);
+    QVERIFY(t->cpaValid && t->cpa.cpaM < 10.0 && t->cpa.tcpaS > 0.0);  // it drifts onto own ship ...
+    QVERIFY(!t->dangerous);                                            // ... and is no CPA target
+    alerts::AlertManager m;
+    alerts::AisAlertFeed feed;
+    feed.report(m, sec(1), table);
+    const alerts::Alert* a = m.find({alerts::AlertKind::AisDistress, 970012345});
+    QVERIFY(a);
+    QCOMPARE(a->priority, alerts::Priority::Alarm);
+    QVERIFY2(a->text == "AIS-SART 970012345 ACTIVE 1.00 NM bearing 000", a->text.c_str());
+    QVERIFY(!m.find({alerts::AlertKind::AisCpaTcpa, 970012345}));
+    QVERIFY(m.find({alerts::AlertKind::AisCpaTcpa, 211000001}));
+    // WHEN a MOB reports in test THEN it is shown (sleeping room made) with no alarm
+    io::AisMessage mob = report(972001002, 1, at(f, -500, 0), 0.0, std::nullopt);
+    mob.navStatus = 15;
+    table.feed(mob, sec(2));
+    io::AisMessage text;
+    text.type = 14;
+    text.mmsi = 972001002;
+    text.text = "MOB TEST";
+    table.feed(text, sec(3));
+    QVERIFY(table.find(972001002));
+    QVERIFY(table.find(972001002)->deviceTest && !table.find(972001002)->distress());
+    QCOMPARE(table.find(972001002)->safetyText, std::string("MOB TEST"));
+    table.update(sec(3), f, own);
+    feed.report(m, sec(3), table);
+    QVERIFY(!m.find({alerts::AlertKind::AisDistress, 972001002}));
+    // WHEN it says MOB ACTIVE THEN it is a distress, activated, with its alarm
+    text.text = "MOB ACTIVE";
+    table.feed(text, sec(4));
+    table.update(sec(4), f, own);
+    feed.report(m, sec(4), table);
+    QVERIFY(table.find(972001002)->distress() && table.find(972001002)->activated);
+    QVERIFY(m.find({alerts::AlertKind::AisDistress, 972001002}));
+    // WHEN the SART falls silent 5 intervals THEN it is lost: its alarm is rectified, held until acknowledged
+    table.feed(mob, sec(299));  // the MOB, status 15 again: back in test, its alarm ends
+    table.update(sec(302), f, own);
+    feed.report(m, sec(302), table);
+    QVERIFY(table.find(970012345)->lost);
+    QCOMPARE(m.find({alerts::AlertKind::AisDistress, 970012345})->state, alerts::AlertState::Rectified);
+    QVERIFY(m.find({alerts::AlertKind::LostAisTarget, 970012345}));
+    QVERIFY(!m.find({alerts::AlertKind::AisDistress, 972001002}) ||
+            m.find({alerts::AlertKind::AisDistress, 972001002})->state == alerts::AlertState::Rectified);
+  }
+
   void realRecordingCountsEveryStation() {
     const QString path = QStringLiteral(RECKONER_SHARED_DIR "/data/ais/gpsd-sample.aivdm");
     QFile file(path);
@@ -487,7 +571,7 @@ class TestAisTargets : public QObject {
     p.closeWriteChannel();
     QVERIFY(p.waitForFinished(120000));
     std::set<std::uint32_t> mmsis;
-    const std::set<int> taken{1, 2, 3, 4, 5, 18, 19, 21, 24, 27};
+    const std::set<int> taken{1, 2, 3, 4, 5, 14, 18, 19, 21, 24, 27};
     for (const QByteArray& l : p.readAllStandardOutput().split('\n')) {
       const QJsonObject o = QJsonDocument::fromJson(l).object();
       if (o.isEmpty() || !taken.contains(o.value("type").toInt())) continue;

@@ -52,13 +52,18 @@ void AisDistressFeed::report(AlertManager& m, TimeUs now, const std::vector<trac
 
 AisAlertFeed::AisAlertFeed(CpaAlertLimits limits) : cpa_(limits) {}
 
+void AisAlertFeed::setLimits(CpaAlertLimits limits) {
+  cpa_ = CpaAlertCondition(limits);  // the hysteresis starts again; the alerts held are ended or kept
+}
+
 void AisAlertFeed::report(AlertManager& m, TimeUs now, const track::AisTargetTable& table) {
   std::set<int> cpaNow, lostNow;
   const std::vector<track::AisTarget> targets = table.targets();
   distress_.report(m, now, targets);
   for (const track::AisTarget& t : targets) {
     const int id = static_cast<int>(t.mmsi);  // an MMSI has 9 digits: it fits
-    if (t.cpaValid && !t.lost) {
+    // A device's alert is its distress, never a CPA alarm (docs/ais.md, "Search and rescue devices").
+    if (t.cpaValid && !t.lost && t.device == track::AisDevice::None) {
       if (cpa_.update(id, now, t.cpa)) {
         cpaNow.insert(id);
         m.report(now, {AlertKind::AisCpaTcpa, id}, true, cpaText(t));

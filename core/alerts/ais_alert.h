@@ -37,6 +37,9 @@ class AisAlertFeed {
   explicit AisAlertFeed(CpaAlertLimits limits = {});
   /// Reports the table's conditions at now (times must not decrease).
   void report(AlertManager& m, TimeUs now, const track::AisTargetTable& table);
+  /// New CPA limits from the next report(), keeping what is held (so that the next report ends the
+  /// alerts that no longer hold: a new feed would not know them).
+  void setLimits(CpaAlertLimits limits);
 
  private:
   CpaAlertCondition cpa_;

@@ -110,7 +110,7 @@ void LiveWatch::setCpaLimits(double cpaM, double tcpaS) {
   validate(s);  // throws, changing nothing
   feed_.setSettings(a);
   table_.setDangerLimits(cpaM, tcpaS);
-  aisFeed_ = alerts::AisAlertFeed(aisCpaLimits(s));
+  aisFeed_.setLimits(aisCpaLimits(s));
   settings_ = s;
   updateAis(aisUtc_.value_or(0), true);
 }

@@ -149,6 +149,7 @@ void validate(const AisTableLimits& l) {
   };
   if (l.maxActivated < 1) throw std::invalid_argument("AIS limits: maxActivated must be at least 1");
   if (l.maxSleeping < 1) throw std::invalid_argument("AIS limits: maxSleeping must be at least 1");
+  if (l.maxDevices < 1) throw std::invalid_argument("AIS limits: maxDevices must be at least 1");
   if (!(l.nearCapacityFraction > 0.0 && l.nearCapacityFraction <= 1.0))
     throw std::invalid_argument("AIS limits: nearCapacityFraction must lie in (0, 1]");
   positive(l.lostFactor, "lostFactor");
@@ -230,12 +231,12 @@ void AisTargetTable::merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) c
     t.positionNotFix = m.positionNotFix;
     // A device's navigational status says its mode: 14 active, 15 test (IEC 61097-14).
     if (t.device != AisDevice::None && m.navStatus && (*m.navStatus == 14 || *m.navStatus == 15))
-      t.deviceTest = *m.navStatus == 15;
+      deviceMode(t, *m.navStatus == 15, rxUs);
   }
   if (m.type == 14) {
     t.safetyText = m.text;
     if (t.device != AisDevice::None)
-      if (const auto test = deviceTestText(m.text)) t.deviceTest = *test;
+      if (const auto test = deviceTestText(m.text)) deviceMode(t, *test, rxUs);
   }
   // Static and voyage data: merged, a field not available keeps what was known.
   AisStatic& s = t.info;
@@ -263,6 +264,29 @@ void AisTargetTable::merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) c
   }
   keep(s.aidType, m.aidType);
   keep(s.virtualAid, m.virtualAid);
+}
+
+void AisTargetTable::deviceMode(AisTarget& t, bool test, TimeUs rxUs) {
+  if (!test) {
+    t.deviceTest = false;
+    t.deviceActiveUs = rxUs;
+  } else if (t.deviceActiveUs < 0 || toSeconds(rxUs - t.deviceActiveUs) > kDeviceActiveHoldS) {
+    t.deviceTest = true;
+  }
+}
+
+bool AisTargetTable::makeRoomForDevice() {
+  auto victim = targets_.end();
+  for (auto it = targets_.begin(); it != targets_.end(); ++it) {
+    const AisTarget& t = it->second;
+    if (t.device == AisDevice::None || (t.distress() && !t.lost)) continue;
+    if (victim == targets_.end() || t.lastReportUs < victim->second.lastReportUs) victim = it;
+  }
+  ++counters_.droppedAtCapacity;
+  if (victim == targets_.end()) return false;
+  if (victim->first == selected_) selected_ = 0;
+  targets_.erase(victim);
+  return true;
 }
 
 void AisTargetTable::activateDistress(AisTarget& t) {
@@ -321,6 +345,11 @@ void AisTargetTable::feed(const io::AisMessage& m, TimeUs rxUs, bool ownShip) {
   AisTarget t;
   t.mmsi = m.mmsi;
   t.device = aisDeviceOf(m.mmsi);
+  if (t.device != AisDevice::None) {
+    const auto devices = static_cast<std::size_t>(std::count_if(
+        targets_.begin(), targets_.end(), [](const auto& e) { return e.second.device != AisDevice::None; }));
+    if (devices >= limits_.maxDevices && !makeRoomForDevice()) return;
+  }
   merge(t, m, rxUs);
   activateDistress(t);
   const std::size_t sleeping = targets_.size() - activatedCount();
@@ -338,7 +367,9 @@ void AisTargetTable::update(TimeUs now) {
       t.dangerous = false;
       ++counters_.lostEvents;
     }
-    if (t.lost && toSeconds(now - t.lostSinceUs) > limits_.removeAfterLostS) gone.push_back(mmsi);
+    // A lost distress stays, crossed out at its last position: where the person in the water was heard.
+    if (t.lost && !t.distress() && toSeconds(now - t.lostSinceUs) > limits_.removeAfterLostS)
+      gone.push_back(mmsi);
   }
   for (const std::uint32_t mmsi : gone) {
     if (mmsi == selected_) selected_ = 0;

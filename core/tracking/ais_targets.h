@@ -13,7 +13,9 @@
 // most maxActivated activated and maxSleeping sleeping targets; at the sleeping limit the sleeping
 // target furthest from own ship is dropped (counted); an activation past the activated limit is refused
 // (counted). Search and rescue devices (AIS-SART, MOB, EPIRB-AIS; aisDeviceOf) are activated whenever
-// they are not in test, whatever the limits, and never dangerous (their alert is AisDistress, not CPA).
+// they are not in test, past the activated and sleeping limits, never dangerous (their alert is
+// AisDistress, not CPA), and a lost one is kept (its last position); at most maxDevices of them are
+// held (a new one past that takes the place of a device in test or lost, else is not added: counted).
 // Plain C++, no Qt; per-message calls never throw.
 #include <cstddef>
 #include <cstdint>
@@ -75,9 +77,11 @@ struct AisTarget {
   /// The latest type 14 (safety-related broadcast) text; empty when none was heard.
   std::string safetyText;
   AisDevice device = AisDevice::None;
-  /// A device in test: its latest position report has navigational status 15 (14 is active), or its
-  /// latest type 14 says TEST. A device is taken as active unless it says it is in test.
+  /// A device in test: a position report with navigational status 15 (14 is active) or a type 14 that
+  /// says TEST, and no sign of being active (status 14, "ACTIVE") in the last kDeviceActiveHoldS. A
+  /// device is taken as active unless it says it is in test.
   bool deviceTest = false;
+  TimeUs deviceActiveUs = -1;  ///< the latest sign of being active (< 0: none)
   /// A device that is not in test: a distress (an alarm, the SART symbol).
   [[nodiscard]] bool distress() const { return device != AisDevice::None && !deviceTest; }
   TimeUs firstReportUs = 0;
@@ -109,6 +113,9 @@ struct AisTarget {
 struct AisTableLimits {
   std::size_t maxActivated = 200;  ///< IEC 62388: at least 200 activated ...
   std::size_t maxSleeping = 2000;  ///< ... and 2000 sleeping targets
+  /// Search and rescue devices held at most (they pass the two limits above; this bounds a feed of
+  /// made-up 97x MMSIs).
+  std::size_t maxDevices = 100;
   double nearCapacityFraction = 0.95;
   double lostFactor = 5.0;          ///< lost after lostFactor reporting intervals without a report
   double minLostS = 20.0;           ///< and never sooner than this
@@ -120,6 +127,10 @@ struct AisTableLimits {
   /// at least this, or ROT is "fast".
   double turningRotDegMin = 5.0;
 };
+/// A device's sign of being in test is taken only this long (s) after its latest sign of being active:
+/// a unit whose position reports and texts disagree is not switched in and out of distress each burst.
+inline constexpr double kDeviceActiveHoldS = 300.0;
+
 /// Throws std::invalid_argument naming the field for a limit that is not finite and positive (the
 /// sizes at least 1, the fraction in (0, 1]).
 void validate(const AisTableLimits& l);
@@ -137,7 +148,8 @@ struct AisTableCounts {
   std::uint64_t messages = 0;           ///< messages fed for targets
   std::uint64_t ownShipMessages = 0;    ///< !AIVDO reports
   std::uint64_t invalidMmsi = 0;        ///< MMSI 0: skipped
-  std::uint64_t droppedAtCapacity = 0;  ///< sleeping targets dropped (or not added) at maxSleeping
+  std::uint64_t droppedAtCapacity = 0;  ///< sleeping targets (devices) dropped or not added at maxSleeping
+                                        ///< (maxDevices)
   std::uint64_t activationRefused = 0;  ///< activations refused at maxActivated
   std::uint64_t lostEvents = 0;         ///< targets that became lost
   std::uint64_t removed = 0;            ///< lost targets removed
@@ -189,6 +201,11 @@ class AisTargetTable {
   void merge(AisTarget& t, const io::AisMessage& m, TimeUs rxUs) const;
   bool makeRoomForSleeping(const AisTarget& incoming);
   static void activateDistress(AisTarget& t);
+  /// Room for a new device at maxDevices: drops the device in test or lost heard longest ago; false
+  /// when every device held is a live distress.
+  bool makeRoomForDevice();
+  /// A device's mode from a sign of being active (false) or in test (true) at rxUs.
+  static void deviceMode(AisTarget& t, bool test, TimeUs rxUs);
   void applyOwnShip(AisTarget& t, TimeUs now, const geo::LocalFrame& frame, const AisOwnShip& own) const;
   /// Rough distance from the latest own-ship position (equirectangular), for the capacity rule;
   /// infinity without a position.

@@ -121,7 +121,7 @@ void draw(QPainter& p, const Batch& b, const QColor& colour, double width, bool 
   if (!b.lines.empty()) p.drawLines(b.lines.data(), static_cast<int>(b.lines.size()));
   if (!b.rings.empty()) {
     QPen ring = pen;
-    if (dashedRings) ring.setDashPattern({2.0, 1.5});  // in pen widths: 6 px dashes at 3 px
+    if (dashedRings) ring.setDashPattern({2.0, 1.5});  // in pen widths: at 3 px, 6 px dashes, 4.5 px gaps
     p.setPen(ring);
     for (const QRectF& r : b.rings) p.drawEllipse(r);
     p.drawLines(b.ringCrosses.data(), static_cast<int>(b.ringCrosses.size()));
@@ -279,13 +279,15 @@ void EcdisView::paintAis(QPainter& p) {
   for (const alerts::Alert& a : live.alerts)
     if (a.id.kind == alerts::AlertKind::AisDistress && a.state != alerts::AlertState::Acknowledged)
       unacknowledged.insert(static_cast<std::uint32_t>(a.id.source));
-  if (trackOf.empty() && unacknowledged.empty()) {
+  if (trackOf.empty() && unacknowledged.empty() && overlay_.showAis) {
     paintAisTargets(p, aisSymbols_, g, style);
     return;
   }
   std::vector<AisSymbol> shown;
   shown.reserve(aisSymbols_.size());
   for (const AisSymbol& s : aisSymbols_) {
+    // The AIS layer switched off hides every target but a distress (IEC 62388: never filtered out).
+    if (!overlay_.showAis && !s.distress) continue;
     const auto it = trackOf.find(s.mmsi);
     if (it == trackOf.end()) {
       shown.push_back(s);

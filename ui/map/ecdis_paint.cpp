@@ -125,7 +125,7 @@ void EcdisView::paintOverlay(QPainter& p, const charts::Viewport& view) {
     if (overlay_.showRadarEchoes) paintRadarEchoes(p);
     if (overlay_.showPlots) paintPlots(p);
     paintTargets(p);
-    if (overlay_.showAis) paintAis(p);
+    paintAis(p);  // with the AIS layer off, the search and rescue devices in distress alone
     paintTrial(p);
     paintOwnShip(p);
   }

@@ -453,8 +453,8 @@ class TestAisTargets : public QObject {
   /// GIVEN a table full to both limits (one activated, one sleeping target) WHEN an AIS-SART (MMSI
   /// 970xxyyyy, status 14) reports 1 NM north of own ship, drifting onto it THEN it is added past the
   /// limits, activated, never dangerous, lost after 5 of its 60 s intervals, and raises the distress
-  /// alarm (no CPA alarm), held until acknowledged after it is lost; a MOB in test (status 15, "MOB TEST")
-  /// raises nothing until its "MOB ACTIVE".
+  /// alarm (no CPA alarm, though own ship runs onto it), held until acknowledged after it is lost, and it
+  /// stays in the table; a MOB in test (status 15, "MOB TEST") raises nothing until its "MOB ACTIVE".
   void searchAndRescueDevicesRaiseTheirAlarm() {
     QCOMPARE(aisDeviceOf(970000000), AisDevice::Sart);
     QCOMPARE(aisDeviceOf(972123456), AisDevice::Mob);
@@ -472,9 +472,9 @@ class TestAisTargets : public QObject {
     limits.maxActivated = 1;
     limits.maxSleeping = 1;
     AisTargetTable table(limits);
-    table.feed(report(211000001, 1, at(f, 3000, 0), 10.0, 270.0), sec(0));  // dangerous: activated
+    table.feed(report(211000001, 1, at(f, 3000, 3000), 10.0, 270.0), sec(0));  // dangerous: activated
     table.feed(report(211000002, 1, at(f, 9000, 9000), 10.0, 0.0), sec(0));
-    const AisOwnShip own{f.origin(), 0.0, 0.0};
+    const AisOwnShip own{f.origin(), 0.0, 5.0};  // north at 9.7 kn: onto the SART in 6 minutes
     table.update(sec(0), f, own);
     QVERIFY(table.find(211000001)->activated);
     io::AisMessage sart = report(970012345, 1, at(f, 0, 1852.0), 0.5, 180.0);
@@ -490,8 +490,9 @@ class TestAisTargets : public QObject {
     QVERIFY(!table.activate(970012345, false));  // a distress stays activated
     table.update(sec(1), f, own);
     t = table.find(970012345);
-    QVERIFY(t->cpaValid && t->cpa.cpaM < 10.0 && t->cpa.tcpaS > 0.0);  // it drifts onto own ship ...
-    QVERIFY(!t->dangerous);                                            // ... and is no CPA target
+    // Own ship runs onto it within the CPA limits (CPA 0, TCPA 352 s) ...
+    QVERIFY(t->cpaValid && t->cpa.cpaM < 10.0 && t->cpa.tcpaS > 300.0 && t->cpa.tcpaS < 400.0);
+    QVERIFY(!t->dangerous);  // ... and it is no CPA target
     alerts::AlertManager m;
     alerts::AisAlertFeed feed;
     feed.report(m, sec(1), table);
@@ -499,7 +500,7 @@ class TestAisTargets : public QObject {
     QVERIFY(a);
     QCOMPARE(a->priority, alerts::Priority::Alarm);
     QVERIFY2(a->text == "AIS-SART 970012345 ACTIVE 1.00 NM bearing 000", a->text.c_str());
-    QVERIFY(!m.find({alerts::AlertKind::AisCpaTcpa, 970012345}));
+    QVERIFY(!m.find({alerts::AlertKind::AisCpaTcpa, 970012345}));  // its alert is the distress alone
     QVERIFY(m.find({alerts::AlertKind::AisCpaTcpa, 211000001}));
     // WHEN a MOB reports in test THEN it is shown (sleeping room made) with no alarm
     io::AisMessage mob = report(972001002, 1, at(f, -500, 0), 0.0, std::nullopt);
@@ -524,14 +525,93 @@ class TestAisTargets : public QObject {
     QVERIFY(table.find(972001002)->distress() && table.find(972001002)->activated);
     QVERIFY(m.find({alerts::AlertKind::AisDistress, 972001002}));
     // WHEN the SART falls silent 5 intervals THEN it is lost: its alarm is rectified, held until acknowledged
-    table.feed(mob, sec(299));  // the MOB, status 15 again: back in test, its alarm ends
+    table.feed(mob, sec(299));  // the MOB's status 15 again, 295 s after its ACTIVE: still a distress
+    QVERIFY(table.find(972001002)->distress());
     table.update(sec(302), f, own);
     feed.report(m, sec(302), table);
     QVERIFY(table.find(970012345)->lost);
     QCOMPARE(m.find({alerts::AlertKind::AisDistress, 970012345})->state, alerts::AlertState::Rectified);
+    // AND it stays in the table at its last position long after the removal time of other targets
+    table.update(sec(3600), f, own);
+    QVERIFY(table.find(970012345) && table.find(970012345)->lost);
+    QVERIFY(!table.find(211000001));
     QVERIFY(m.find({alerts::AlertKind::LostAisTarget, 970012345}));
-    QVERIFY(!m.find({alerts::AlertKind::AisDistress, 972001002}) ||
-            m.find({alerts::AlertKind::AisDistress, 972001002})->state == alerts::AlertState::Rectified);
+    QCOMPARE(m.find({alerts::AlertKind::AisDistress, 972001002})->state, alerts::AlertState::Unacknowledged);
+  }
+
+  /// GIVEN a device whose position reports say status 15 (test) while its type 14 says ACTIVE WHEN they
+  /// alternate THEN it stays a distress: a test sign counts only 5 minutes after the latest active one.
+  void aDeviceSayingBothStaysActiveUntilItHasSaidTestForFiveMinutes() {
+    const geo::LocalFrame f(kLat0, kLon0);
+    AisTargetTable table;
+    io::AisMessage pos = report(974000001, 1, at(f, 0, 1000), 0.2, 90.0);
+    pos.navStatus = 15;
+    io::AisMessage text;
+    text.type = 14;
+    text.mmsi = 974000001;
+    text.text = "EPIRB ACTIVE";
+    table.feed(pos, sec(0));
+    QVERIFY(table.find(974000001)->deviceTest);  // test until it says otherwise
+    table.feed(text, sec(1));
+    for (int k = 0; k < 5; ++k) {
+      table.feed(pos, sec(60.0 * k + 2));
+      QVERIFY2(table.find(974000001)->distress(), qPrintable(QString::number(k)));
+    }
+    table.feed(pos, sec(302));  // 301 s after the last ACTIVE
+    QVERIFY(table.find(974000001)->deviceTest);
+  }
+
+  /// GIVEN a feed of made-up device MMSIs past maxDevices THEN the table holds maxDevices of them: a
+  /// device in test or lost gives its place, live distresses never do, the rest are counted and dropped.
+  void devicesAreBoundedByTheirOwnLimit() {
+    const geo::LocalFrame f(kLat0, kLon0);
+    AisTableLimits limits;
+    limits.maxDevices = 3;
+    AisTargetTable table(limits);
+    io::AisMessage test = report(970000001, 1, at(f, 0, 1000), 0.0, std::nullopt);
+    test.navStatus = 15;
+    table.feed(test, sec(0));
+    for (std::uint32_t k = 2; k <= 3; ++k) {
+      io::AisMessage d = report(970000000 + k, 1, at(f, 0, 1000.0 * k), 0.0, std::nullopt);
+      d.navStatus = 14;
+      table.feed(d, sec(k));
+    }
+    io::AisMessage fourth = report(970000004, 1, at(f, 0, 4000), 0.0, std::nullopt);
+    fourth.navStatus = 14;
+    table.feed(fourth, sec(5));  // takes the test device's place
+    QVERIFY(!table.find(970000001) && table.find(970000004));
+    fourth.mmsi = 970000005;
+    table.feed(fourth, sec(6));  // every device a live distress: not added
+    QVERIFY(!table.find(970000005));
+    QCOMPARE(table.size(), std::size_t{3});
+    QCOMPARE(table.counts().droppedAtCapacity, std::uint64_t{2});
+    table.feed(report(211000001, 1, at(f, 0, 500), 5.0, 0.0), sec(7));  // ships are not held back
+    QVERIFY(table.find(211000001));
+    limits.maxDevices = 0;
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, AisTargetTable{limits});
+  }
+
+  /// GIVEN an AIS CPA/TCPA alarm WHEN the limits are changed so that it no longer holds THEN the feed
+  /// ends it (a feed made anew, as the live watch did, forgot it: the alarm stayed for ever).
+  void newCpaLimitsEndTheAlarmsTheyNoLongerRaise() {
+    const geo::LocalFrame f(kLat0, kLon0);
+    AisTargetTable table;
+    alerts::AlertManager m;
+    alerts::AisAlertFeed feed;
+    const AisOwnShip own{f.origin(), 0.0, 0.0};
+    table.feed(report(211000001, 1, at(f, 0, 3000.0), 10.0, 180.0), sec(0));  // head on, TCPA 5.8 min
+    table.update(sec(0), f, own);
+    feed.report(m, sec(0), table);
+    QVERIFY(m.find({alerts::AlertKind::AisCpaTcpa, 211000001}));
+    alerts::CpaAlertLimits tight;
+    tight.tcpaS = 60.0;
+    feed.setLimits(tight);
+    for (int s = 1; s <= 60; ++s) {
+      table.feed(report(211000001, 1, at(f, 0, 3000.0 - 5.144 * s), 10.0, 180.0), sec(s));
+      table.update(sec(s), f, own);
+      feed.report(m, sec(s), table);
+    }
+    QVERIFY(!m.find({alerts::AlertKind::AisCpaTcpa, 211000001}));
   }
 
   void realRecordingCountsEveryStation() {
